@@ -1,0 +1,108 @@
+#version 450 core
+// Pass 3 (paper §3, §3.2, §3.3, §4): full screen. Reads the G-buffer and the light's
+// distance map and produces the render mode's picture.
+#include "gbuffer.glsl"
+#include "paper_shading.glsl"
+
+in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+
+layout(binding = 0) uniform sampler2D u_albedo;
+layout(binding = 1) uniform sampler2D u_normal;
+layout(binding = 2) uniform sampler2D u_depth;
+layout(binding = 3) uniform sampler2D u_light_distance;
+
+uniform mat4 u_inv_view_proj;
+uniform vec3 u_camera_pos;
+uniform vec2 u_camera_near_far;
+uniform mat4 u_light_view_proj;
+uniform vec3 u_light_pos;
+uniform vec3 u_light_dir;
+uniform int u_light_directional;
+uniform vec2 u_light_near_far;   // range of distances the light's map can hold
+uniform vec3 u_light_radiance;   // colour x intensity
+uniform vec3 u_background;
+
+uniform vec3 u_sigma_t;          // extinction per scene unit, per channel
+uniform float u_k_sss;
+uniform float u_k_schlick;
+uniform float u_metalness;
+uniform int u_reflectance_first;
+uniform int u_schlick_hn;
+uniform float u_shininess;
+uniform float u_oren_nayar_sigma;
+uniform int u_mode;
+
+// Keep in step with marble::RenderMode.
+const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
+          MODE_REFLECTANCE = 5, MODE_ALBEDO = 6, MODE_LIGHT_DEPTH = 7, MODE_THICKNESS = 8,
+          MODE_DEPTH = 9, MODE_POSITION = 10, MODE_NORMAL = 11;
+
+float light_distance_of(vec3 p) {
+  return u_light_directional == 1 ? dot(p, u_light_dir) : distance(p, u_light_pos);
+}
+
+// Distance the light travelled inside the object before leaving at p (GPU Gems 1, 16.3):
+// the light's map holds where it entered; p is where it leaves.
+float thickness_at(vec3 p) {
+  vec4 clip = u_light_view_proj * vec4(p, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
+  float entered = texture(u_light_distance, ndc.xy * 0.5 + 0.5).r;
+  return max(light_distance_of(p) - entered, 0.0);
+}
+
+void main() {
+  if (u_mode == MODE_LIGHT_DEPTH) {
+    // The light's distance map itself, near = black, far (nothing hit) = white.
+    float d = texture(u_light_distance, v_uv).r;
+    float t = clamp((d - u_light_near_far.x) / (u_light_near_far.y - u_light_near_far.x), 0.0, 1.0);
+    o_color = vec4(vec3(t), 1.0);
+    return;
+  }
+  float depth = texture(u_depth, v_uv).r;
+  if (depth >= 1.0) {
+    o_color = vec4(u_background, 1.0);
+    return;
+  }
+  vec4 world = u_inv_view_proj * vec4(vec3(v_uv, depth) * 2.0 - 1.0, 1.0);
+  vec3 P = world.xyz / world.w;
+  vec3 N = decode_normal(texture(u_normal, v_uv).xy);
+  vec3 albedo = texture(u_albedo, v_uv).rgb;
+  vec3 V = normalize(u_camera_pos - P);
+  vec3 L = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - P);
+
+  vec3 c;
+  if (u_mode == MODE_PAPER || u_mode == MODE_MARBLE) {
+    vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;
+    if (u_reflectance_first == 0) {
+      // Paper §4: subsurface first, its result is the Schlick input colour.
+      vec3 d = albedo * sss;
+      c = mix(d, paper_schlick(d, u_metalness, N, V, L, u_schlick_hn), u_k_schlick);
+    } else {
+      c = mix(albedo, paper_schlick(albedo, u_metalness, N, V, L, u_schlick_hn), u_k_schlick) * sss;
+    }
+  } else if (u_mode == MODE_PHONG) {
+    c = phong(albedo, N, V, L, u_light_radiance, u_shininess);
+  } else if (u_mode == MODE_OREN_NAYAR) {
+    c = oren_nayar(albedo, N, V, L, u_light_radiance, u_oren_nayar_sigma);
+  } else if (u_mode == MODE_SUBSURFACE) {
+    c = albedo * paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss);
+  } else if (u_mode == MODE_REFLECTANCE) {
+    c = paper_schlick(albedo, u_metalness, N, V, L, u_schlick_hn);
+  } else if (u_mode == MODE_ALBEDO) {
+    c = albedo;
+  } else if (u_mode == MODE_THICKNESS) {
+    // 0 = black; 2*sqrt(3) scene units (the longest chord of the normalized mesh's
+    // bounding sphere, kThicknessViewRange) = white.
+    c = vec3(thickness_at(P) / 3.4641016);
+  } else if (u_mode == MODE_DEPTH) {
+    float dist = distance(P, u_camera_pos);
+    c = vec3(clamp((dist - u_camera_near_far.x) / (u_camera_near_far.y - u_camera_near_far.x), 0.0, 1.0));
+  } else if (u_mode == MODE_POSITION) {
+    c = clamp(P * 0.5 + 0.5, 0.0, 1.0);
+  } else {
+    c = N * 0.5 + 0.5;
+  }
+  o_color = vec4(c, 1.0);
+}

@@ -1,0 +1,49 @@
+// The marble pattern for the geometry pass (paper §3.1). Include this (no #version here);
+// it declares its uniforms (set by marble::applyPatternUniforms, src/marble/noise/pattern_uniforms.h)
+// and provides:
+//   vec3  marble_albedo(vec3 objectPos, vec3 objectNormal)         linear RGB albedo
+//   float marble_pattern_value(vec3 objectPos, vec3 objectNormal)  sine pattern in [0,1], before colour
+// objectPos: the normalized mesh's object-space position (mesh in [-1,1]^3);
+// objectNormal: object-space normal (used by the triplanar mapping only).
+// The functions themselves live in pattern_core.glsl, which the C++ reference compiles too.
+#include "pattern_core.glsl"
+
+uniform uint u_pat_seed;
+uniform float u_pat_resolution;
+uniform int u_pat_basis;
+uniform int u_pat_mapping;
+uniform vec3 u_pat_period;
+uniform float u_pat_turb_power;
+uniform float u_pat_turb_size;
+uniform float u_pat_scale;
+uniform float u_pat_vein_sharpness;
+uniform float u_pat_vein2_amount;
+uniform vec3 u_pat_base_color;
+uniform vec3 u_pat_vein_color;
+uniform vec3 u_pat_vein2_color;
+
+PatParams marble_params() {
+  PatParams P;
+  P.seed = u_pat_seed;
+  P.resolution = u_pat_resolution;
+  P.basis = u_pat_basis;
+  P.mapping = u_pat_mapping;
+  P.period = u_pat_period;
+  P.turbPower = u_pat_turb_power;
+  P.turbSize = u_pat_turb_size;
+  P.scale = u_pat_scale;
+  P.sharpness = u_pat_vein_sharpness;
+  P.vein2Amount = u_pat_vein2_amount;
+  P.baseColor = u_pat_base_color;
+  P.veinColor = u_pat_vein_color;
+  P.vein2Color = u_pat_vein2_color;
+  return P;
+}
+
+float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
+  return pat_value_at(marble_params(), objectPos, objectNormal);
+}
+
+vec3 marble_albedo(vec3 objectPos, vec3 objectNormal) {
+  return pat_albedo(marble_params(), objectPos, objectNormal);
+}

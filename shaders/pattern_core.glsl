@@ -1,0 +1,281 @@
+// The marble pattern (paper §3.1): ONE SOURCE for the GPU and the C++ reference.
+//
+// This file is compiled twice:
+//   * as GLSL 4.50, included into marble_pattern.glsl (which adds the u_pat_ uniforms);
+//   * as C++20, #included by src/marble/noise/marble_pattern.cpp inside a namespace that says
+//     `using namespace glm; using uint = uint32_t;` (GLM mirrors GLSL's vocabulary).
+// So it is written in the subset both languages accept: float/vec2/vec3/uint/int, a plain
+// struct (built by each side, never constructed here), floor/fract/abs/sin/pow/min/max,
+// `f`-suffixed float literals (GLSL 4.50 accepts them; in C++ they keep all arithmetic in
+// float, so both sides compute in single precision), `u`-suffixed uint literals, no swizzles
+// (GLM is built with GLM_FORCE_XYZW_ONLY), no in/out/inout qualifiers, no arrays, no
+// preprocessor lines. No uniforms here: every function takes its parameters explicitly.
+//
+// Stages and conventions (Lode Vandevenne's texture tutorial, as the paper uses it):
+//   white noise   : a value in [0,1) per lattice cell; here an integer hash of the cell, so the
+//                   same bits come out on CPU and GPU (no rand(), no texture upload).
+//   smooth noise  : the lattice interpolated linearly (Lode: bilinear, no fade curve), or
+//                   Perlin's improved gradient noise (2002) mapped to [0,1].
+//   turbulence    : sum over size = turbSize, size /= 2 while size >= 1 of
+//                   smooth(q / size) * size, divided by 2 * turbSize  -> [0,1)
+//                   (Lode's 128 * sum / turbSize is this times 256).
+//   sine pattern  : |sin(pi * (x*xPeriod/W + y*yPeriod/H + turbPower * turbulence))|
+//                   (the paper's turbPower * turbulence / 256 with turbulence in [0,256)).
+// Coordinates q are in texels of the W x W texture (W = resolution). The lattice of the
+// octave of size s has period W/s cells, so every octave, hence the turbulence, wraps with
+// period W texels: the texture tiles seamlessly (exact when s divides W, e.g. powers of two).
+// Lode interpolates a cell between lattice points i-1 and i; we use i and i+1 (the same
+// pattern shifted by one texel).
+
+const float PAT_PI = 3.14159265358979f;
+
+const int PAT_BASIS_VALUE = 0;
+const int PAT_BASIS_PERLIN = 1;
+const int PAT_MAP_PLANAR = 0;
+const int PAT_MAP_TRIPLANAR = 1;
+const int PAT_MAP_SOLID = 2;
+
+struct PatParams {
+  uint seed;          // white-noise lattice seed
+  float resolution;   // W = H in texels
+  int basis;          // PAT_BASIS_*
+  int mapping;        // PAT_MAP_*
+  vec3 period;        // x_period, y_period, z_period
+  float turbPower;    // 0: plain sine
+  float turbSize;     // first octave size in texels
+  float scale;        // object units per half texture width
+  float sharpness;    // vein sharpness (1 = the paper)
+  float vein2Amount;  // 0 = two-colour ramp (the paper)
+  vec3 baseColor;
+  vec3 veinColor;
+  vec3 vein2Color;
+};
+
+// ---- white noise ------------------------------------------------------------------------
+
+// Chris Wellons' "lowbias32" integer hash (public domain): 32-bit multiply/xor/shift only.
+uint pat_hash(uint x) {
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// Top 24 bits -> [0,1), exactly representable in float.
+float pat_unit(uint h) { return float(h >> 8u) * (1.0f / 16777216.0f); }
+
+// i mod period for integer-valued floats, exact (the correction steps absorb a division
+// that rounds the quotient across an integer).
+float pat_wrap(float i, float period) {
+  float w = i - period * floor(i / period);
+  if (w >= period) w -= period;
+  if (w < 0.0f) w += period;
+  return w;
+}
+
+// Lattice period (cells) of the octave of size `size` texels in a texture of `res` texels.
+float pat_octave_period(float res, float size) { return max(1.0f, floor(res / size + 0.5f)); }
+
+float pat_lerp(float a, float b, float t) { return a + (b - a) * t; }
+
+// Hash of the (y, z) part of a lattice point; the x part is added last so a row of points
+// (fixed y, z) can reuse it.
+uint pat_hash_yz(float y, float z, uint seedHash) { return pat_hash(uint(y) + pat_hash(uint(z) + seedHash)); }
+uint pat_hash_y(float y, uint seedHash) { return pat_hash(uint(y) + seedHash); }
+uint pat_hash_x(float x, uint hyz) { return pat_hash(uint(x) + hyz); }
+
+// White noise at integer lattice point (wrapped with `period`), 2D and 3D.
+float pat_white2(vec2 cell, float period, uint seedHash) {
+  return pat_unit(pat_hash_x(pat_wrap(cell.x, period), pat_hash_y(pat_wrap(cell.y, period), seedHash)));
+}
+float pat_white3(vec3 cell, float period, uint seedHash) {
+  return pat_unit(pat_hash_x(pat_wrap(cell.x, period),
+                             pat_hash_yz(pat_wrap(cell.y, period), pat_wrap(cell.z, period), seedHash)));
+}
+
+// ---- smooth noise: value (the paper's) ---------------------------------------------------
+
+// Value noise at lattice column x (already wrapped), interpolated over y (and z) first:
+// h0/h1 are the row hashes at y0/y1 (2D), or h00,h10,h01,h11 at (y0,z0),(y1,z0),(y0,z1),(y1,z1).
+float pat_value2_column(float x, uint h0, uint h1, float fy) {
+  return pat_lerp(pat_unit(pat_hash_x(x, h0)), pat_unit(pat_hash_x(x, h1)), fy);
+}
+float pat_value3_column(float x, uint h00, uint h10, uint h01, uint h11, float fy, float fz) {
+  float a = pat_lerp(pat_unit(pat_hash_x(x, h00)), pat_unit(pat_hash_x(x, h10)), fy);
+  float b = pat_lerp(pat_unit(pat_hash_x(x, h01)), pat_unit(pat_hash_x(x, h11)), fy);
+  return pat_lerp(a, b, fz);
+}
+
+// p in lattice units; result in [0,1].
+float pat_value2(vec2 p, float period, uint seedHash) {
+  vec2 i = floor(p);
+  vec2 f = p - i;
+  uint h0 = pat_hash_y(pat_wrap(i.y, period), seedHash);
+  uint h1 = pat_hash_y(pat_wrap(i.y + 1.0f, period), seedHash);
+  return pat_lerp(pat_value2_column(pat_wrap(i.x, period), h0, h1, f.y),
+                  pat_value2_column(pat_wrap(i.x + 1.0f, period), h0, h1, f.y), f.x);
+}
+float pat_value3(vec3 p, float period, uint seedHash) {
+  vec3 i = floor(p);
+  vec3 f = p - i;
+  float y0 = pat_wrap(i.y, period);
+  float y1 = pat_wrap(i.y + 1.0f, period);
+  float z0 = pat_wrap(i.z, period);
+  float z1 = pat_wrap(i.z + 1.0f, period);
+  uint h00 = pat_hash_yz(y0, z0, seedHash);
+  uint h10 = pat_hash_yz(y1, z0, seedHash);
+  uint h01 = pat_hash_yz(y0, z1, seedHash);
+  uint h11 = pat_hash_yz(y1, z1, seedHash);
+  return pat_lerp(pat_value3_column(pat_wrap(i.x, period), h00, h10, h01, h11, f.y, f.z),
+                  pat_value3_column(pat_wrap(i.x + 1.0f, period), h00, h10, h01, h11, f.y, f.z), f.x);
+}
+
+// ---- smooth noise: Perlin's improved noise (Perlin 2002) ----------------------------------
+// Same algorithm (quintic fade, the 12 edge gradients of a cube picked by 4 hash bits), with the
+// integer hash in place of the permutation table so the lattice wraps with any period.
+
+float pat_fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+
+float pat_grad(uint h, float x, float y, float z) {
+  uint k = (h >> 4u) & 15u;
+  float u = k < 8u ? x : y;
+  float v = k < 4u ? y : ((k == 12u || k == 14u) ? x : z);
+  return ((k & 1u) == 0u ? u : -u) + ((k & 2u) == 0u ? v : -v);
+}
+
+// In [-1,1]; the 2D version is the z = 0 slice of the 3D one.
+float pat_perlin2_signed(vec2 p, float period, uint seedHash) {
+  vec2 i = floor(p);
+  vec2 f = p - i;
+  float x0 = pat_wrap(i.x, period);
+  float x1 = pat_wrap(i.x + 1.0f, period);
+  uint h0 = pat_hash_y(pat_wrap(i.y, period), seedHash);
+  uint h1 = pat_hash_y(pat_wrap(i.y + 1.0f, period), seedHash);
+  float u = pat_fade(f.x);
+  float v = pat_fade(f.y);
+  float a = pat_lerp(pat_grad(pat_hash_x(x0, h0), f.x, f.y, 0.0f), pat_grad(pat_hash_x(x1, h0), f.x - 1.0f, f.y, 0.0f), u);
+  float b = pat_lerp(pat_grad(pat_hash_x(x0, h1), f.x, f.y - 1.0f, 0.0f),
+                     pat_grad(pat_hash_x(x1, h1), f.x - 1.0f, f.y - 1.0f, 0.0f), u);
+  return pat_lerp(a, b, v);
+}
+float pat_perlin3_signed(vec3 p, float period, uint seedHash) {
+  vec3 i = floor(p);
+  vec3 f = p - i;
+  float x0 = pat_wrap(i.x, period);
+  float x1 = pat_wrap(i.x + 1.0f, period);
+  float y0 = pat_wrap(i.y, period);
+  float y1 = pat_wrap(i.y + 1.0f, period);
+  float z0 = pat_wrap(i.z, period);
+  float z1 = pat_wrap(i.z + 1.0f, period);
+  uint h00 = pat_hash_yz(y0, z0, seedHash);
+  uint h10 = pat_hash_yz(y1, z0, seedHash);
+  uint h01 = pat_hash_yz(y0, z1, seedHash);
+  uint h11 = pat_hash_yz(y1, z1, seedHash);
+  float u = pat_fade(f.x);
+  float v = pat_fade(f.y);
+  float w = pat_fade(f.z);
+  float gx = f.x - 1.0f;
+  float gy = f.y - 1.0f;
+  float gz = f.z - 1.0f;
+  float a0 = pat_lerp(pat_grad(pat_hash_x(x0, h00), f.x, f.y, f.z), pat_grad(pat_hash_x(x1, h00), gx, f.y, f.z), u);
+  float a1 = pat_lerp(pat_grad(pat_hash_x(x0, h10), f.x, gy, f.z), pat_grad(pat_hash_x(x1, h10), gx, gy, f.z), u);
+  float b0 = pat_lerp(pat_grad(pat_hash_x(x0, h01), f.x, f.y, gz), pat_grad(pat_hash_x(x1, h01), gx, f.y, gz), u);
+  float b1 = pat_lerp(pat_grad(pat_hash_x(x0, h11), f.x, gy, gz), pat_grad(pat_hash_x(x1, h11), gx, gy, gz), u);
+  return pat_lerp(pat_lerp(a0, a1, v), pat_lerp(b0, b1, v), w);
+}
+
+// Smooth noise in [0,1] for either basis.
+float pat_smooth2(vec2 p, float period, uint seedHash, int basis) {
+  if (basis == PAT_BASIS_PERLIN) return min(max(0.5f + 0.5f * pat_perlin2_signed(p, period, seedHash), 0.0f), 1.0f);
+  return pat_value2(p, period, seedHash);
+}
+float pat_smooth3(vec3 p, float period, uint seedHash, int basis) {
+  if (basis == PAT_BASIS_PERLIN) return min(max(0.5f + 0.5f * pat_perlin3_signed(p, period, seedHash), 0.0f), 1.0f);
+  return pat_value3(p, period, seedHash);
+}
+
+// ---- turbulence and the sine pattern -------------------------------------------------------
+
+// q in texels; result in [0,1).
+float pat_turbulence2(PatParams P, vec2 q) {
+  uint sh = pat_hash(P.seed);
+  float sum = 0.0f;
+  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f)
+    sum += pat_smooth2(q / size, pat_octave_period(P.resolution, size), sh, P.basis) * size;
+  return sum / (2.0f * P.turbSize);
+}
+float pat_turbulence3(PatParams P, vec3 q) {
+  uint sh = pat_hash(P.seed);
+  float sum = 0.0f;
+  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f)
+    sum += pat_smooth3(q / size, pat_octave_period(P.resolution, size), sh, P.basis) * size;
+  return sum / (2.0f * P.turbSize);
+}
+
+// ramp: x*xPeriod/W + y*yPeriod/H (+ z*zPeriod/W); turbulence in [0,1). Result in [0,1].
+float pat_sine(float ramp, float turbulence, float turbPower) {
+  return abs(sin(PAT_PI * (ramp + turbPower * turbulence)));
+}
+
+// The paper's 2D texture at texel q (s along x, t along y).
+float pat_pattern2(PatParams P, vec2 q) {
+  float ramp = (q.x * P.period.x + q.y * P.period.y) / P.resolution;
+  return pat_sine(ramp, pat_turbulence2(P, q), P.turbPower);
+}
+// Solid marble at texel-space point q.
+float pat_pattern3(PatParams P, vec3 q) {
+  float ramp = (q.x * P.period.x + q.y * P.period.y + q.z * P.period.z) / P.resolution;
+  return pat_sine(ramp, pat_turbulence3(P, q), P.turbPower);
+}
+
+// ---- mappings ----------------------------------------------------------------------------
+
+// Object units -> texels: pattern_scale object units per half texture width.
+vec3 pat_texel_pos(PatParams P, vec3 objectPos) { return objectPos * (0.5f * P.resolution / P.scale); }
+
+// GL_MIRRORED_REPEAT on texel coordinates: identity on [0,W], W - (s - W) on [W,2W], -s on
+// [-W,0], period 2W. Continuous; result in [0,W].
+float pat_mirror(float s, float W) {
+  float m = s - 2.0f * W * floor(s / (2.0f * W));
+  return W - abs(m - W);
+}
+
+// Value before colouring, in [0,1].
+float pat_value_at(PatParams P, vec3 objectPos, vec3 objectNormal) {
+  vec3 q = pat_texel_pos(P, objectPos);
+  if (P.mapping == PAT_MAP_SOLID) return pat_pattern3(P, q);
+  if (P.mapping == PAT_MAP_PLANAR) {
+    // The paper: s, t from object x, z; constant along y (stretch), mirrored beyond the bounds.
+    return pat_pattern2(P, vec2(pat_mirror(q.x, P.resolution), pat_mirror(q.z, P.resolution)));
+  }
+  // Triplanar: three planar projections (no mirroring; the texture tiles) blended by the
+  // normal's components to the 4th power.
+  vec3 w = abs(objectNormal);
+  w = w * w;
+  w = w * w;
+  w = w / max(w.x + w.y + w.z, 1e-20f);
+  float v = 0.0f;
+  if (w.x > 0.0f) v += w.x * pat_pattern2(P, vec2(q.z, q.y));
+  if (w.y > 0.0f) v += w.y * pat_pattern2(P, vec2(q.x, q.z));
+  if (w.z > 0.0f) v += w.z * pat_pattern2(P, vec2(q.x, q.y));
+  return v;
+}
+
+// ---- colour ramp ----------------------------------------------------------------------------
+
+// v = 0 is the heart of a vein, v = 1 the stone between veins. Sharpness s applies v^(1/s):
+// s > 1 thins the veins, s < 1 widens them. The ramp is vein -> base (the paper), blended
+// with vein -> vein2 -> base (vein2 at the middle) by vein2Amount.
+vec3 pat_color(PatParams P, float v) {
+  float t = pow(min(max(v, 0.0f), 1.0f), 1.0f / P.sharpness);
+  vec3 two = P.veinColor + (P.baseColor - P.veinColor) * t;
+  vec3 three = t < 0.5f ? P.veinColor + (P.vein2Color - P.veinColor) * (2.0f * t)
+                        : P.vein2Color + (P.baseColor - P.vein2Color) * (2.0f * t - 1.0f);
+  return two + (three - two) * P.vein2Amount;
+}
+
+vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {
+  return pat_color(P, pat_value_at(P, objectPos, objectNormal));
+}

@@ -1,0 +1,50 @@
+#include "cmd_render.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "marble/core/error.h"
+#include "marble/core/image.h"
+#include "marble/gl/headless_context.h"
+#include "marble/render/offscreen_target.h"
+#include "marble/render/renderer.h"
+
+namespace marble {
+
+int runRenderCommand(const RenderOptions& o) {
+  return reportErrors("render", [&] {
+    if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
+    const Scene scene = buildScene(o.scene);
+    const Mesh mesh = loadSceneMesh(scene);
+    HeadlessContext context;
+    Renderer renderer;
+    renderer.setMesh(mesh);
+    OffscreenTarget target(scene.render.width, scene.render.height);
+    if (o.timings) {
+      // A first frame pays llvmpipe's lazy shader compilation and its first timer query is
+      // unreliable; time a second, full frame instead.
+      renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
+      renderer.passTimes(true);
+      renderer.invalidate();
+    }
+    renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
+    const ImageRGBA8 image = target.read();
+    if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "0x%04x", err);
+      throw EnvironmentError(std::string("OpenGL error ") + hex + " while rendering");
+    }
+    writePng(o.output, image);
+    if (o.timings) {
+      const PassTimes t = renderer.passTimes(true);
+      std::printf("pass          GPU ms\nlight-depth   %8.2f\ngeometry      %8.2f\nlighting      %8.2f\n",
+                  t.lightDepthMs, t.geometryMs, t.lightingMs);
+      if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
+    }
+    std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "
+              << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles)\n";
+    return 0;
+  });
+}
+
+}  // namespace marble

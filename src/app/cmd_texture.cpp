@@ -1,0 +1,109 @@
+#include "cmd_texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <thread>
+
+#include "marble/core/error.h"
+#include "marble/core/image.h"
+#include "marble/noise/marble_pattern.h"
+#include "marble/scene/material_io.h"
+
+namespace marble {
+namespace {
+
+constexpr int kMinSize = 8;
+constexpr int kMaxSize = 8192;
+
+uint8_t toByte(float v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+// Linear -> sRGB transfer (IEC 61966-2-1), for the coloured image only: the grey stages are
+// data, written as the paper does (value * 255).
+float linearToSrgb(float c) {
+  c = std::clamp(c, 0.0f, 1.0f);
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+ImageRGBA8 blank(int size) {
+  ImageRGBA8 img;
+  img.width = img.height = size;
+  img.pixels.assign(static_cast<size_t>(size) * size * 4, 255);
+  return img;
+}
+
+void putGrey(ImageRGBA8& img, int x, int y, float v) {
+  uint8_t* p = &img.pixels[(static_cast<size_t>(y) * img.width + x) * 4];
+  p[0] = p[1] = p[2] = toByte(v);
+}
+
+}  // namespace
+
+int runTextureCommand(const TextureOptions& options) {
+  try {
+    if (options.out_dir.empty()) throw InputError("-o", "", "an output folder is required");
+    if (options.size < kMinSize || options.size > kMaxSize)
+      throw InputError("--size", "", "expected a whole number in [" + std::to_string(kMinSize) + ", " +
+                                         std::to_string(kMaxSize) + "], got " + std::to_string(options.size));
+    Material m = loadPreset(options.preset);
+    for (const auto& kv : options.sets) {
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0) throw InputError("--set", kv, "expected key=value");
+      setMaterialKey(m, kv.substr(0, eq), kv.substr(eq + 1));
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(options.out_dir, ec);
+    if (ec || !std::filesystem::is_directory(options.out_dir))
+      throw InputError(options.out_dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
+
+    const int n = options.size;
+    const float W = static_cast<float>(m.resolution);
+    const float texelsPerPixel = W / static_cast<float>(n);
+    ImageRGBA8 white = blank(n), smooth = blank(n), turb = blank(n), sine = blank(n), marble = blank(n);
+
+    // Pixel (x, y) shows texel (x, y) * W / size: the whole W x W texture, row 0 at the top.
+    // Smooth noise is shown at the first octave's zoom (turb_size texels per lattice cell).
+    auto work = [&](int firstRow, int stride) {
+      std::vector<float> xs(static_cast<size_t>(n)), t(static_cast<size_t>(n)), v(static_cast<size_t>(n));
+      for (int x = 0; x < n; ++x) xs[static_cast<size_t>(x)] = static_cast<float>(x) * texelsPerPixel;
+      for (int y = firstRow; y < n; y += stride) {
+        const float qy = static_cast<float>(y) * texelsPerPixel;
+        patternRow2(m, xs.data(), qy, n, t.data(), v.data());
+        for (int x = 0; x < n; ++x) {
+          const glm::vec2 q(xs[static_cast<size_t>(x)], qy);
+          putGrey(white, x, y, whiteNoise(m, q));
+          putGrey(smooth, x, y, smoothNoise(m, q / m.turb_size));
+          putGrey(turb, x, y, t[static_cast<size_t>(x)]);
+          putGrey(sine, x, y, v[static_cast<size_t>(x)]);
+          const glm::vec3 c = patternColor(m, v[static_cast<size_t>(x)]);
+          uint8_t* p = &marble.pixels[(static_cast<size_t>(y) * n + x) * 4];
+          p[0] = toByte(linearToSrgb(c.x));
+          p[1] = toByte(linearToSrgb(c.y));
+          p[2] = toByte(linearToSrgb(c.z));
+        }
+      }
+    };
+    const int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(work, i, threads);
+    work(0, threads);
+    for (auto& th : pool) th.join();
+
+    const std::pair<const char*, const ImageRGBA8*> outputs[] = {{"white_noise.png", &white},
+                                                                 {"smooth_noise.png", &smooth},
+                                                                 {"turbulence.png", &turb},
+                                                                 {"sine.png", &sine},
+                                                                 {"marble.png", &marble}};
+    for (const auto& [name, img] : outputs) {
+      const auto path = options.out_dir / name;
+      writePng(path, *img);
+      std::cout << path.string() << "\n";
+    }
+    return 0;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace marble

@@ -1,0 +1,56 @@
+// marble: a real-time marble renderer. One binary, several commands (see `marble --help`).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "cmd_presets.h"
+#include "cmd_render.h"
+#include "cmd_texture.h"
+#include "viewer/cmd_view.h"
+
+int main(int argc, char** argv) {
+  using namespace marble;
+  CLI::App app{"marble - real-time marble rendering: procedural veins, subsurface light, Fresnel reflectance.\n"
+               "Without an input, every command uses the built-in default scene."};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Help for every command");
+
+  RenderOptions render;
+  auto* renderCmd = app.add_subcommand("render", "Render a scene or mesh headless (no display needed) to a PNG");
+  addSceneOptions(*renderCmd, render.scene, true);
+  renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically)")->required();
+  renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
+
+  ViewOptions view;
+  auto* viewCmd = app.add_subcommand("view", "Open the interactive viewer (needs a display)");
+  addSceneOptions(*viewCmd, view.scene, true);
+  viewCmd->add_option("--frames", view.frames, "Draw this many frames, then exit (0 = run until closed)")->check(CLI::NonNegativeNumber);
+  viewCmd->add_option("--screenshot", view.screenshot, "After the last frame, save the whole window (panel included) as PNG");
+  viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from the source tree's shaders/");
+
+  TextureOptions texture;
+  auto* textureCmd = app.add_subcommand("texture", "Write the marble pattern's stages as PNGs (the paper's Figures 3 and 4)");
+  textureCmd->add_option("-o,--output", texture.out_dir, "Output folder")->required();
+  textureCmd->add_option("--size", texture.size, "Image size in pixels (square)")->check(CLI::Range(8, 8192));
+  textureCmd->add_option("--preset", texture.preset, "Material preset");
+  textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
+
+  app.add_subcommand("presets", "List the built-in material presets");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;  // bad usage: exit code 2, like bad input
+  }
+
+  if (renderCmd->parsed()) return runRenderCommand(render);
+  if (viewCmd->parsed()) return runViewCommand(view);
+  if (textureCmd->parsed()) return runTextureCommand(texture);
+  if (app.got_subcommand("presets")) return runPresetsCommand();
+  return 2;
+}

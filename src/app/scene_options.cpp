@@ -1,0 +1,75 @@
+#include "scene_options.h"
+
+#include <iostream>
+
+#include "marble/core/error.h"
+#include "marble/gl/program.h"
+#include "marble/scene/material_io.h"
+
+namespace marble {
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
+  cmd.add_option("input", o.input, "Scene (.json) or mesh (.obj .ply .stl .gltf .glb); default: the built-in scene");
+  if (withSize) {
+    cmd.add_option("--width", o.width, "Image width in pixels (default: the scene's, 800)")->check(CLI::Range(1, kMaxRenderSize));
+    cmd.add_option("--height", o.height, "Image height in pixels (default: the scene's, 800)")->check(CLI::Range(1, kMaxRenderSize));
+  }
+  std::string modes;
+  for (const auto& m : renderModeNames()) modes += (modes.empty() ? "" : ", ") + m;
+  cmd.add_option("--mode", o.mode, "Render mode: " + modes);
+  cmd.add_option("--preset", o.preset, "Material preset by name (see `marble presets`) or a preset .json file");
+  cmd.add_option("--set", o.sets, "Override one material parameter, key=value (repeatable; keys as in preset files)");
+  cmd.add_option("--up", o.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
+}
+
+Scene buildScene(const SceneOptions& o) {
+  std::vector<std::string> warnings;
+  Scene scene = sceneForInput(o.input, warnings);
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  if (o.width > 0) scene.render.width = o.width;
+  if (o.height > 0) scene.render.height = o.height;
+  if (!o.mode.empty()) {
+    try {
+      scene.render.mode = parseRenderMode(o.mode);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--mode", "", e.what());
+    }
+  }
+  if (!o.up.empty()) {
+    try {
+      scene.up = parseUpAxis(o.up);
+    } catch (const std::invalid_argument&) {
+      throw InputError("--up", "", "expected one of y, z, x, -y, -z, -x, got \"" + o.up + "\"");
+    }
+  }
+  if (!o.preset.empty()) scene.material = loadPreset(o.preset);
+  for (const auto& kv : o.sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--set", kv, "expected key=value");
+    setMaterialKey(scene.material, kv.substr(0, eq), kv.substr(eq + 1));
+  }
+  return scene;
+}
+
+int reportErrors(const char* command, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    return 2;
+  } catch (const EnvironmentError& e) {
+    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    return 1;
+  } catch (const gl::ShaderError& e) {
+    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "marble " << command << ": out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace marble

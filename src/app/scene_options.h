@@ -1,0 +1,31 @@
+#pragma once
+// Options shared by the commands that render a scene (render, view, bench): the input, and
+// what the command line overrides in it.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "marble/scene/scene.h"
+
+namespace marble {
+
+struct SceneOptions {
+  std::string input;               // SCENE.json, a mesh file, or empty for the default scene
+  int width = 0, height = 0;       // 0 = the scene's
+  std::string mode;                // render mode name, empty = the scene's
+  std::string preset;              // material preset, empty = the scene's
+  std::vector<std::string> sets;   // key=value material overrides
+  std::string up;                  // up axis of the mesh file
+};
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);
+
+// Loads the scene and applies the overrides; warnings go to stderr. Throws InputError.
+Scene buildScene(const SceneOptions& o);
+
+// Runs `body`, turning errors into one line on stderr and an exit code:
+// InputError -> 2, EnvironmentError -> 1, anything else -> 1.
+int reportErrors(const char* command, const std::function<int()>& body);
+
+}  // namespace marble

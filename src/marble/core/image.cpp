@@ -1,0 +1,87 @@
+#include "marble/core/image.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
+
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+#include "marble/core/atomic_file.h"
+#include "marble/core/error.h"
+
+namespace marble {
+
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+  std::string bytes;
+  auto sink = [](void* ctx, void* data, int size) {
+    static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(sink, &bytes, image.width, image.height, 4, image.pixels.data(), image.width * 4))
+    throw InputError(path.string(), "", "PNG encoding failed");
+  writeFileAtomically(path, bytes);
+}
+
+ImageRGBA8 readPng(const std::filesystem::path& path) {
+  int w = 0, h = 0, n = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+  if (!data) throw InputError(path.string(), "", std::string("cannot read image: ") + stbi_failure_reason());
+  ImageRGBA8 img{w, h, std::vector<uint8_t>(data, data + static_cast<size_t>(w) * h * 4)};
+  stbi_image_free(data);
+  return img;
+}
+
+void flipRows(ImageRGBA8& image) {
+  const size_t row = static_cast<size_t>(image.width) * 4;
+  for (int y = 0; y < image.height / 2; ++y)
+    std::swap_ranges(image.pixels.begin() + y * row, image.pixels.begin() + (y + 1) * row,
+                     image.pixels.begin() + (image.height - 1 - y) * row);
+}
+
+void writeExr(const std::filesystem::path& path, const ImageRGBF& image) {
+  // OpenEXR writes to a named file: write a temporary beside the target, then rename.
+  const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-exr");
+  try {
+    Imf::Array2D<Imf::Rgba> px(image.height, image.width);
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const float* p = &image.pixels[(static_cast<size_t>(y) * image.width + x) * 3];
+        px[y][x] = Imf::Rgba(p[0], p[1], p[2], 1.0f);
+      }
+    Imf::RgbaOutputFile file(tmp.c_str(), image.width, image.height, Imf::WRITE_RGBA);
+    file.setFrameBuffer(&px[0][0], 1, static_cast<size_t>(image.width));
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    ::unlink(tmp.c_str());
+    throw InputError(path.string(), "", std::string("cannot write EXR: ") + e.what());
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw InputError(path.string(), "", "cannot rename EXR into place");
+  }
+}
+
+ImageRGBF readExr(const std::filesystem::path& path) {
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    const auto dw = file.dataWindow();
+    const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    Imf::Array2D<Imf::Rgba> px(h, w);
+    file.setFrameBuffer(&px[0][0] - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * w, 1, static_cast<size_t>(w));
+    file.readPixels(dw.min.y, dw.max.y);
+    ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        float* p = &img.pixels[(static_cast<size_t>(y) * w + x) * 3];
+        p[0] = px[y][x].r; p[1] = px[y][x].g; p[2] = px[y][x].b;
+      }
+    return img;
+  } catch (const std::exception& e) {
+    throw InputError(path.string(), "", std::string("cannot read EXR: ") + e.what());
+  }
+}
+
+}  // namespace marble

@@ -1,0 +1,109 @@
+#pragma once
+// RAII owners of OpenGL objects: movable, never copyable; the destructor deletes the object.
+// A default-constructed handle owns nothing (0) and needs no context (Magnum's NoCreate idea).
+// Every handle created or deleted updates a live-object counter, so tests can check that
+// nothing leaks over a long session.
+#include <epoxy/gl.h>
+
+#include <utility>
+
+namespace marble::gl {
+
+// Count of live GL objects created through these handles (soak tests).
+long& liveObjectCount();
+
+template <typename Traits>
+class Handle {
+public:
+  Handle() = default;
+  static Handle create() {
+    Handle h;
+    h.id_ = Traits::create();
+    if (h.id_) ++liveObjectCount();
+    return h;
+  }
+  explicit Handle(GLuint adopt) : id_(adopt) {
+    if (id_) ++liveObjectCount();
+  }
+  ~Handle() { reset(); }
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_) {
+      Traits::destroy(id_);
+      --liveObjectCount();
+      id_ = 0;
+    }
+  }
+
+private:
+  GLuint id_ = 0;
+};
+
+struct BufferTraits {
+  static GLuint create() { GLuint id = 0; glCreateBuffers(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteBuffers(1, &id); }
+};
+struct VertexArrayTraits {
+  static GLuint create() { GLuint id = 0; glCreateVertexArrays(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
+};
+struct FramebufferTraits {
+  static GLuint create() { GLuint id = 0; glCreateFramebuffers(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); }
+};
+struct QueryTraits {
+  static GLuint create() { GLuint id = 0; glCreateQueries(GL_TIME_ELAPSED, 1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteQueries(1, &id); }
+};
+struct ProgramTraits {
+  static GLuint create() { return glCreateProgram(); }
+  static void destroy(GLuint id) { glDeleteProgram(id); }
+};
+
+using Buffer = Handle<BufferTraits>;
+using VertexArray = Handle<VertexArrayTraits>;
+using Framebuffer = Handle<FramebufferTraits>;
+using TimerQuery = Handle<QueryTraits>;
+using ProgramId = Handle<ProgramTraits>;
+
+// Textures need their target at creation.
+class Texture {
+public:
+  Texture() = default;
+  static Texture create(GLenum target) {
+    Texture t;
+    glCreateTextures(target, 1, &t.id_);
+    if (t.id_) ++liveObjectCount();
+    return t;
+  }
+  ~Texture() { reset(); }
+  Texture(Texture&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Texture& operator=(Texture&& o) noexcept {
+    if (this != &o) { reset(); id_ = std::exchange(o.id_, 0); }
+    return *this;
+  }
+  Texture(const Texture&) = delete;
+  Texture& operator=(const Texture&) = delete;
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_) { glDeleteTextures(1, &id_); --liveObjectCount(); id_ = 0; }
+  }
+
+private:
+  GLuint id_ = 0;
+};
+
+}  // namespace marble::gl

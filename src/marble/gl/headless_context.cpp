@@ -1,0 +1,117 @@
+#include "marble/gl/headless_context.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "marble/core/error.h"
+
+#ifndef EGL_PLATFORM_SURFACELESS_MESA
+#define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
+#endif
+#ifndef EGL_PLATFORM_DEVICE_EXT
+#define EGL_PLATFORM_DEVICE_EXT 0x313F
+#endif
+
+namespace marble {
+namespace {
+
+bool hasExtension(const char* list, const char* name) {
+  if (!list) return false;
+  const size_t n = std::strlen(name);
+  for (const char* p = list; (p = std::strstr(p, name)); p += n)
+    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  return false;
+}
+
+// Candidate displays in order of preference: Mesa's surfaceless platform (no X, no GPU
+// needed), then each EGL device (how NVIDIA's driver renders headless), then the default.
+std::vector<EGLDisplay> candidateDisplays() {
+  std::vector<EGLDisplay> out;
+  const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (hasExtension(clientExts, "EGL_EXT_platform_base")) {
+    if (hasExtension(clientExts, "EGL_MESA_platform_surfaceless")) {
+      EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      if (d != EGL_NO_DISPLAY) out.push_back(d);
+    }
+    if (hasExtension(clientExts, "EGL_EXT_platform_device") && hasExtension(clientExts, "EGL_EXT_device_enumeration")) {
+      EGLDeviceEXT devices[8];
+      EGLint count = 0;
+      if (eglQueryDevicesEXT(8, devices, &count))
+        for (EGLint i = 0; i < count; ++i) {
+          EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+          if (d != EGL_NO_DISPLAY) out.push_back(d);
+        }
+    }
+  }
+  EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+  if (d != EGL_NO_DISPLAY) out.push_back(d);
+  return out;
+}
+
+}  // namespace
+
+HeadlessContext::HeadlessContext() {
+  std::string lastProblem = "no EGL display available (is libegl-mesa0 installed?)";
+  for (EGLDisplay display : candidateDisplays()) {
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display, &major, &minor)) {
+      lastProblem = "eglInitialize failed";
+      continue;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+      lastProblem = "EGL has no desktop OpenGL API";
+      eglTerminate(display);
+      continue;
+    }
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint numConfigs = 0;
+    // With EGL_KHR_no_config_context / surfaceless, a config is optional; try one first.
+    eglChooseConfig(display, configAttribs, &config, 1, &numConfigs);
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_NONE};
+    EGLContext ctx = eglCreateContext(display, numConfigs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttribs);
+    if (ctx == EGL_NO_CONTEXT) {
+      lastProblem = "the driver offers no OpenGL 4.5 core context";
+      eglTerminate(display);
+      continue;
+    }
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+      lastProblem = "cannot make a surfaceless context current (EGL_KHR_surfaceless_context missing)";
+      eglDestroyContext(display, ctx);
+      eglTerminate(display);
+      continue;
+    }
+    display_ = display;
+    context_ = ctx;
+    if (epoxy_gl_version() < 45) {
+      const int v = epoxy_gl_version();
+      this->~HeadlessContext();
+      display_ = context_ = nullptr;
+      throw EnvironmentError("headless OpenGL: got version " + std::to_string(v / 10) + "." + std::to_string(v % 10) +
+                             ", marble needs 4.5 core");
+    }
+    return;
+  }
+  throw EnvironmentError("headless OpenGL: " + lastProblem);
+}
+
+HeadlessContext::~HeadlessContext() {
+  if (!display_) return;
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  if (context_) eglDestroyContext(display_, context_);
+  eglTerminate(display_);
+  display_ = context_ = nullptr;
+}
+
+std::string HeadlessContext::renderer() const {
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return r ? r : "unknown";
+}
+
+}  // namespace marble

@@ -1,0 +1,86 @@
+#include "marble/gl/program.h"
+
+#include <regex>
+#include <sstream>
+
+namespace marble::gl {
+namespace {
+
+// Driver logs say "0:12(5): error ..." (Mesa) or "0(12) : error ..." (NVIDIA), where the
+// first number is the #line file index set by ShaderLibrary; map it back to the file name.
+std::string mapLog(const std::string& log, const std::vector<std::string>& files) {
+  static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\))");
+  static const std::regex nv(R"(^(\d+)\((\d+)\))");
+  std::istringstream in(log);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, mesa) || std::regex_search(line, m, nv)) {
+      const size_t idx = std::stoul(m[1]);
+      const std::string file = idx < files.size() ? files[idx] : "shader" + m[1].str();
+      line = file + ":" + m[2].str() + ":" + line.substr(static_cast<size_t>(m[0].length()));
+    }
+    if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
+  }
+  return out;
+}
+
+}  // namespace
+
+Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSource>& stages,
+                 const std::vector<std::string>& defines)
+    : program_(ProgramId::create()) {
+  std::vector<GLuint> shaders;
+  auto cleanup = [&] {
+    for (GLuint s : shaders) glDeleteShader(s);
+  };
+  for (const auto& st : stages) {
+    std::string text;
+    try {
+      text = library.assemble(st.file, defines);
+    } catch (const std::exception& e) {
+      cleanup();
+      throw ShaderError(e.what());
+    }
+    const auto files = library.lastFiles();
+    GLuint s = glCreateShader(st.stage);
+    shaders.push_back(s);
+    const char* src = text.c_str();
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      GLint len = 0;
+      glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+      std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
+      glGetShaderInfoLog(s, len, nullptr, log.data());
+      cleanup();
+      throw ShaderError("shader compile failed: " + mapLog(log.c_str(), files));
+    }
+    glAttachShader(program_.id(), s);
+  }
+  glLinkProgram(program_.id());
+  cleanup();
+  GLint ok = 0;
+  glGetProgramiv(program_.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetProgramiv(program_.id(), GL_INFO_LOG_LENGTH, &len);
+    std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
+    glGetProgramInfoLog(program_.id(), len, nullptr, log.data());
+    std::string names;
+    for (const auto& st : stages) names += (names.empty() ? "" : " + ") + st.file;
+    throw ShaderError("shader link failed (" + names + "): " + std::string(log.c_str()));
+  }
+}
+
+GLint Program::location(const char* name) const {
+  auto it = locations_.find(name);
+  if (it != locations_.end()) return it->second;
+  const GLint loc = glGetUniformLocation(program_.id(), name);
+  locations_.emplace(name, loc);
+  return loc;
+}
+
+}  // namespace marble::gl

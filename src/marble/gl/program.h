@@ -1,0 +1,53 @@
+#pragma once
+// A linked GLSL program built from files of the ShaderLibrary. Uniform locations are
+// looked up once and cached (no string lookups in the frame loop after the first).
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "marble/gl/handles.h"
+#include "marble/gl/shader_library.h"
+
+namespace marble::gl {
+
+struct ShaderStageSource {
+  GLenum stage;      // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
+  std::string file;  // name in shaders/
+};
+
+class Program {
+public:
+  Program() = default;
+  // Compiles and links; throws ShaderError whose message names the shader file and line.
+  Program(const ShaderLibrary& library, const std::vector<ShaderStageSource>& stages,
+          const std::vector<std::string>& defines = {});
+
+  GLuint id() const { return program_.id(); }
+  GLint location(const char* name) const;
+
+  void set(const char* name, float v) const { glProgramUniform1f(id(), location(name), v); }
+  void set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
+  void set(const char* name, const glm::vec2& v) const { glProgramUniform2f(id(), location(name), v.x, v.y); }
+  void set(const char* name, const glm::vec3& v) const { glProgramUniform3f(id(), location(name), v.x, v.y, v.z); }
+  void set(const char* name, const glm::mat4& m) const {
+    glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, &m[0][0]);
+  }
+  void set(const char* name, const glm::mat3& m) const {
+    glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, &m[0][0]);
+  }
+
+private:
+  ProgramId program_;
+  mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+class ShaderError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace marble::gl

@@ -1,0 +1,241 @@
+// loadMesh (dispatch and the steps every loaded mesh goes through), up axis, normals, normalization.
+#include "marble/mesh/mesh.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <system_error>
+
+#include "marble/core/error.h"
+#include "marble/mesh/mesh_internal.h"
+
+namespace marble {
+
+namespace mesh_detail {
+
+std::string withThousands(uint64_t n) {
+  std::string digits = std::to_string(n);
+  std::string out;
+  out.reserve(digits.size() + digits.size() / 3);
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string readWholeFile(const std::filesystem::path& path, const std::string& label) {
+  std::error_code ec;
+  auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(label, "", "file not found");
+  if (std::filesystem::is_directory(status)) throw InputError(label, "", "is a directory, not a mesh file");
+  struct Closer {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+  if (!file) throw InputError(label, "", std::string("cannot open: ") + std::strerror(errno));
+  if (std::fseek(file.get(), 0, SEEK_END) != 0) throw InputError(label, "", "cannot seek (not a regular file?)");
+  long size = std::ftell(file.get());
+  if (size < 0) throw InputError(label, "", "cannot determine the file size (not a regular file?)");
+  if (size == 0) throw InputError(label, "", "file is empty");
+  if (static_cast<uint64_t>(size) > kMaxFileBytes)
+    throw InputError(label, "", "file is " + withThousands(static_cast<uint64_t>(size)) + " bytes; the limit is " +
+                                    withThousands(kMaxFileBytes));
+  std::rewind(file.get());
+  std::string data(static_cast<size_t>(size), '\0');
+  size_t got = std::fread(data.data(), 1, data.size(), file.get());
+  if (got != data.size()) throw InputError(label, "", "read error after " + std::to_string(got) + " bytes");
+  return data;
+}
+
+void rejectBinary(const std::string& file, std::string_view data, std::string_view format) {
+  const void* nul = std::memchr(data.data(), '\0', data.size());
+  if (nul) {
+    size_t at = static_cast<size_t>(static_cast<const char*>(nul) - data.data());
+    throw InputError(file, byteAt(at), "binary data (NUL byte) in what should be a text " + std::string(format) + " file");
+  }
+}
+
+}  // namespace mesh_detail
+
+using namespace mesh_detail;
+
+UpAxis parseUpAxis(std::string_view text) {
+  std::string t;
+  for (char c : text) {
+    if (c == ' ' || c == '\t') continue;
+    t += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  }
+  if (!t.empty() && t[0] == '+') t.erase(0, 1);
+  if (t == "y") return UpAxis::Y;
+  if (t == "z") return UpAxis::Z;
+  if (t == "x") return UpAxis::X;
+  if (t == "-y") return UpAxis::NegY;
+  if (t == "-z") return UpAxis::NegZ;
+  if (t == "-x") return UpAxis::NegX;
+  throw std::invalid_argument("unknown up axis '" + std::string(text) + "' (expected y, z, x, -y, -z or -x)");
+}
+
+std::string_view upAxisName(UpAxis axis) {
+  switch (axis) {
+    case UpAxis::Y: return "y";
+    case UpAxis::Z: return "z";
+    case UpAxis::X: return "x";
+    case UpAxis::NegY: return "-y";
+    case UpAxis::NegZ: return "-z";
+    case UpAxis::NegX: return "-x";
+  }
+  return "y";
+}
+
+namespace {
+
+// Proper rotations (det +1) that take the named file axis to +Y.
+glm::vec3 rotateUp(glm::vec3 v, UpAxis up) {
+  switch (up) {
+    case UpAxis::Y: return v;
+    case UpAxis::Z: return {v.x, v.z, -v.y};     // -90 deg about X
+    case UpAxis::NegZ: return {v.x, -v.z, v.y};  // +90 deg about X
+    case UpAxis::X: return {-v.y, v.x, v.z};     // +90 deg about Z
+    case UpAxis::NegX: return {v.y, -v.x, v.z};  // -90 deg about Z
+    case UpAxis::NegY: return {v.x, -v.y, -v.z}; // 180 deg about X
+  }
+  return v;
+}
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Final checks on what a loader returned; fixes up optional attributes.
+void validateLoaded(Mesh& mesh, const std::string& file) {
+  if (mesh.indices.empty())
+    throw InputError(file, "", "no triangles: the file has " + withThousands(mesh.positions.size()) +
+                                   " vertices but no faces");
+  if (mesh.indices.size() % 3 != 0) throw InputError(file, "", "internal: index count is not a multiple of 3");
+  const uint32_t n = static_cast<uint32_t>(mesh.positions.size());
+  for (uint32_t i : mesh.indices)
+    if (i >= n) throw InputError(file, "", "vertex index " + std::to_string(i) + " out of range");
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    if (!finite(mesh.positions[i]))
+      throw InputError(file, "vertex " + std::to_string(i), "coordinate is NaN or infinite");
+  if (!mesh.texcoords.empty() && mesh.texcoords.size() != mesh.positions.size()) mesh.texcoords.clear();
+  if (mesh.normals.size() != mesh.positions.size()) {
+    mesh.normals.clear();
+  } else {
+    // File normals are made unit length; if any is unusable, all are recomputed (mixing file and
+    // computed normals would look patchy).
+    for (glm::vec3& v : mesh.normals) {
+      float len = glm::length(v);
+      if (!std::isfinite(len) || len < 1e-20f) {
+        mesh.normals.clear();
+        break;
+      }
+      v /= len;
+    }
+  }
+}
+
+}  // namespace
+
+void applyUpAxis(Mesh& mesh, UpAxis up) {
+  if (up == UpAxis::Y) return;
+  for (glm::vec3& p : mesh.positions) p = rotateUp(p, up);
+  for (glm::vec3& n : mesh.normals) n = rotateUp(n, up);
+}
+
+void computeSmoothNormals(Mesh& mesh) {
+  std::vector<glm::vec3> acc(mesh.positions.size(), glm::vec3(0.0f));
+  const size_t n = mesh.positions.size();
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    if (a >= n || b >= n || c >= n) continue;
+    // |cross| is twice the triangle's area: area weighting comes for free; a degenerate
+    // triangle's cross product is zero and so adds nothing.
+    glm::vec3 w = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    if (!finite(w)) continue;
+    acc[a] += w;
+    acc[b] += w;
+    acc[c] += w;
+  }
+  for (glm::vec3& v : acc) {
+    float len = glm::length(v);
+    if (std::isfinite(len) && len > 0.0f) {
+      v /= len;
+      if (!finite(v)) v = glm::vec3(0.0f, 1.0f, 0.0f);
+    } else {
+      v = glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+  }
+  mesh.normals = std::move(acc);
+}
+
+void normalizeMesh(Mesh& mesh) { normalizeMesh(mesh, "mesh"); }
+
+void normalizeMesh(Mesh& mesh, const std::string& source) {
+  if (mesh.positions.empty()) throw InputError(source, "bounds", "mesh has no vertices");
+  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  if (!finite(lo) || !finite(hi)) throw InputError(source, "bounds", "coordinates are NaN or infinite");
+  // Extents in double: hi - lo can overflow float for coordinates near FLT_MAX.
+  glm::dvec3 centre = (glm::dvec3(lo) + glm::dvec3(hi)) * 0.5;
+  glm::dvec3 extent = glm::dvec3(hi) - glm::dvec3(lo);
+  double largest = std::max({extent.x, extent.y, extent.z});
+  double scale = 2.0 / largest;
+  if (!(largest > 0.0) || !std::isfinite(scale) || scale > 1e30)
+    throw InputError(source, "bounds", "all vertices are at the same point (zero extent); cannot normalize");
+  for (glm::vec3& p : mesh.positions) p = glm::vec3((glm::dvec3(p) - centre) * scale);
+}
+
+double signedVolume(const Mesh& mesh) {
+  double v = 0.0;
+  const size_t n = mesh.positions.size();
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    if (a >= n || b >= n || c >= n) continue;
+    glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]), pc(mesh.positions[c]);
+    v += glm::dot(pa, glm::cross(pb, pc));
+  }
+  return v / 6.0;
+}
+
+Mesh loadMesh(const std::filesystem::path& path, UpAxis up) {
+  const std::string file = path.string();
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  // The file must exist before its extension matters (a typo'd path is the commoner mistake).
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(file, "", "file not found");
+  if (std::filesystem::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a mesh file");
+  if (ext != ".obj" && ext != ".ply" && ext != ".stl" && ext != ".gltf" && ext != ".glb")
+    throw InputError(file, "", "unknown mesh format '" + (ext.empty() ? std::string("(no extension)") : ext) +
+                                   "' (expected .obj, .ply, .stl, .gltf or .glb)");
+  std::string data = readWholeFile(path, file);
+  Mesh mesh;
+  if (ext == ".obj") {
+    mesh = loadObj(file, data);
+  } else if (ext == ".ply") {
+    mesh = loadPly(file, data);
+  } else if (ext == ".stl") {
+    mesh = loadStl(file, data);
+  } else if (ext == ".gltf") {
+    mesh = loadGltf(file, data, path.parent_path());
+  } else {
+    mesh = loadGlb(file, data, path.parent_path());
+  }
+  { std::string().swap(data); }  // free the file bytes before the heavier steps
+  validateLoaded(mesh, file);
+  applyUpAxis(mesh, up);
+  // Normalizing first and computing normals second gives the same normals as the other order
+  // (normalization is a uniform scale and a shift) but keeps cross products in float range.
+  normalizeMesh(mesh, file);
+  if (mesh.normals.empty()) computeSmoothNormals(mesh);
+  return mesh;
+}
+
+}  // namespace marble

@@ -1,0 +1,114 @@
+#pragma once
+// Shared pieces of the mesh loaders (not part of the public API; see mesh.h).
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "marble/core/error.h"
+#include "marble/mesh/mesh.h"
+
+namespace marble::mesh_detail {
+
+// Hard caps, checked before anything of that size is allocated.
+inline constexpr uint64_t kMaxVertices = 50'000'000;
+inline constexpr uint64_t kMaxTriangles = 50'000'000;
+inline constexpr uint64_t kMaxFileBytes = 4ull << 30;  // 4 GiB
+
+// "50,000,000"
+std::string withThousands(uint64_t n);
+
+// Reads a whole file; throws InputError(label, "", ...) for missing, directory, unreadable, empty
+// or oversized files.
+std::string readWholeFile(const std::filesystem::path& path, const std::string& label);
+
+// Each loader returns the mesh as stored in the file: positions, indices, and normals/texcoords
+// only when the file supplies one per position (otherwise empty). Every index is in range and
+// every position finite; errors are InputError naming `file` and the place.
+Mesh loadObj(const std::string& file, std::string_view data);
+Mesh loadPly(const std::string& file, std::string_view data);
+Mesh loadStl(const std::string& file, std::string_view data);
+Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir);
+Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir);
+
+// Throws InputError(file, "byte N", ...) if a text format holds a NUL byte (binary garbage).
+void rejectBinary(const std::string& file, std::string_view data, std::string_view format);
+
+inline std::string lineAt(size_t line) { return "line " + std::to_string(line); }
+inline std::string byteAt(size_t byte) { return "byte " + std::to_string(byte); }
+
+// A forgiving float parser: optional leading '+', then std::from_chars (general format; accepts
+// "nan"/"inf", which callers reject with a located message).
+inline const char* parseFloat(const char* p, const char* end, float& out) {
+  if (p < end && *p == '+') ++p;
+  auto [ptr, ec] = std::from_chars(p, end, out);
+  if (ec == std::errc{}) return ptr;
+  if (ec != std::errc::result_out_of_range) return nullptr;
+  // Out of float range: from_chars leaves `out` untouched, so decide by hand.
+  double d = 0;
+  if (std::from_chars(p, end, d).ec == std::errc{}) {
+    out = static_cast<float>(d);  // inf when too large, 0 or denormal when tiny
+    return ptr;
+  }
+  std::string_view text(p, static_cast<size_t>(ptr - p));
+  bool tiny = text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos;
+  out = tiny ? 0.0f : (text.front() == '-' ? -HUGE_VALF : HUGE_VALF);
+  return ptr;
+}
+
+inline bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+inline bool equalsIgnoreCase(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    char x = a[i], y = b[i];
+    if (x >= 'A' && x <= 'Z') x = static_cast<char>(x - 'A' + 'a');
+    if (y >= 'A' && y <= 'Z') y = static_cast<char>(y - 'A' + 'a');
+    if (x != y) return false;
+  }
+  return true;
+}
+
+// Whitespace-separated tokens with line numbers (PLY and STL ASCII bodies).
+struct TextCursor {
+  const char* p;
+  const char* end;
+  size_t line = 1;
+
+  // Skips whitespace including newlines; returns false at end of data.
+  bool skipWhitespace() {
+    while (p < end) {
+      char c = *p;
+      if (c == '\n') {
+        ++line;
+      } else if (!isSpace(c)) {
+        return true;
+      }
+      ++p;
+    }
+    return false;
+  }
+  // Next token, or empty at end of data.
+  std::string_view token() {
+    if (!skipWhitespace()) return {};
+    const char* s = p;
+    while (p < end && !isSpace(*p) && *p != '\n') ++p;
+    return {s, static_cast<size_t>(p - s)};
+  }
+  // Rest of the current line (without the newline); moves past it.
+  std::string_view restOfLine() {
+    const char* s = p;
+    const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p)));
+    const char* e = nl ? nl : end;
+    p = nl ? nl + 1 : end;
+    if (nl) ++line;
+    while (e > s && isSpace(e[-1])) --e;
+    return {s, static_cast<size_t>(e - s)};
+  }
+};
+
+}  // namespace marble::mesh_detail

@@ -1,0 +1,265 @@
+// Wavefront OBJ: v, vt, vn and f (v, v/vt, v//vn, v/vt/vn; negative = relative), polygons as fans.
+// Everything else (o, g, s, usemtl, mtllib, l, p, vp, comments) is ignored.
+//
+// Speed: the whole file is in memory; one pass with a hand-written scanner, std::from_chars for
+// numbers. When no face uses texture coordinates or normals, OBJ vertex i is render vertex i
+// (no hashing). Otherwise each distinct (v, vt, vn) triple becomes one render vertex through an
+// open-addressing hash table.
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "marble/mesh/mesh_internal.h"
+
+namespace marble::mesh_detail {
+namespace {
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
+
+struct Corner {
+  uint32_t v, vt, vn;
+};
+
+inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// Largest positive index seen for one attribute, checked against the final count at the end so
+// that (rare, but legal in practice) forward references work.
+struct PendingMax {
+  uint64_t index = 0;
+  size_t line = 0;
+};
+
+class ObjParser {
+public:
+  ObjParser(const std::string& file, std::string_view data)
+      : file_(file), p_(data.data()), end_(data.data() + data.size()) {}
+
+  Mesh parse() {
+    if (end_ - p_ >= 3 && std::memcmp(p_, "\xEF\xBB\xBF", 3) == 0) p_ += 3;  // UTF-8 byte order mark
+    while (p_ < end_) {
+      while (p_ < end_ && (*p_ == ' ' || *p_ == '\t')) ++p_;
+      if (p_ >= end_) break;
+      const char c = *p_;
+      const char d = p_ + 1 < end_ ? p_[1] : '\n';
+      if (c == 'v') {
+        if (isBlank(d)) {
+          p_ += 1;
+          parsePosition();
+        } else if (d == 't' && p_ + 2 < end_ && isBlank(p_[2])) {
+          p_ += 2;
+          parseTexcoord();
+        } else if (d == 'n' && p_ + 2 < end_ && isBlank(p_[2])) {
+          p_ += 2;
+          parseNormal();
+        }
+      } else if (c == 'f' && isBlank(d)) {
+        p_ += 1;
+        parseFace();
+      } else if (c != '\n' && c != '\r' && c != '#' &&
+                 (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)) {
+        fail("unexpected binary data (not a text OBJ file?)");
+      }
+      skipLine();
+    }
+    return build();
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& problem) const { throw InputError(file_, lineAt(line_), problem); }
+  [[noreturn]] void failAt(size_t line, const std::string& problem) const {
+    throw InputError(file_, lineAt(line), problem);
+  }
+
+  void skipLine() {
+    const void* nl = std::memchr(p_, '\n', static_cast<size_t>(end_ - p_));
+    if (nl) {
+      p_ = static_cast<const char*>(nl) + 1;
+      ++line_;
+    } else {
+      p_ = end_;
+    }
+  }
+
+  std::string tokenHere() const {
+    const char* e = p_;
+    while (e < end_ && !isBlank(*e) && *e != '\n' && e - p_ < 24) ++e;
+    return std::string(p_, e);
+  }
+
+  float number(const char* statement, int needed) {
+    while (p_ < end_ && (*p_ == ' ' || *p_ == '\t')) ++p_;
+    if (p_ >= end_ || *p_ == '\n' || *p_ == '\r' || *p_ == '#')
+      fail(std::string("'") + statement + "' needs " + std::to_string(needed) + (needed == 1 ? " number" : " numbers"));
+    float value = 0.0f;
+    const char* after = parseFloat(p_, end_, value);
+    if (!after || (after < end_ && !isBlank(*after) && *after != '\n' && *after != '#'))
+      fail(std::string("'") + statement + "': expected a number, found '" + tokenHere() + "'");
+    if (!std::isfinite(value)) fail(std::string("'") + statement + "': number is NaN or infinite ('" + tokenHere() + "')");
+    p_ = after;
+    return value;
+  }
+
+  void parsePosition() {
+    if (positions_.size() >= kMaxVertices)
+      fail("more than " + withThousands(kMaxVertices) + " vertices (the limit)");
+    float x = number("v", 3), y = number("v", 3), z = number("v", 3);
+    positions_.emplace_back(x, y, z);
+  }
+  void parseTexcoord() {
+    if (texcoords_.size() >= kMaxVertices)
+      fail("more than " + withThousands(kMaxVertices) + " texture coordinates (the limit)");
+    float u = number("vt", 1);
+    float v = 0.0f;
+    while (p_ < end_ && (*p_ == ' ' || *p_ == '\t')) ++p_;
+    if (p_ < end_ && *p_ != '\n' && *p_ != '\r' && *p_ != '#') v = number("vt", 1);
+    texcoords_.emplace_back(u, v);
+  }
+  void parseNormal() {
+    if (normals_.size() >= kMaxVertices)
+      fail("more than " + withThousands(kMaxVertices) + " normals (the limit)");
+    float x = number("vn", 3), y = number("vn", 3), z = number("vn", 3);
+    normals_.emplace_back(x, y, z);
+  }
+
+  // One index of a face corner; returns it 0-based.
+  uint32_t index(size_t count, PendingMax& pending, const char* what) {
+    bool negative = false;
+    if (p_ < end_ && (*p_ == '-' || *p_ == '+')) {
+      negative = *p_ == '-';
+      ++p_;
+    }
+    if (p_ >= end_ || !isDigit(*p_)) fail("bad face vertex '" + tokenHere() + "'");
+    uint64_t value = 0;
+    while (p_ < end_ && isDigit(*p_)) {
+      value = value * 10 + static_cast<uint64_t>(*p_ - '0');
+      if (value > 0xFFFFFFFEull) fail(std::string(what) + " index is too large");
+      ++p_;
+    }
+    if (value == 0) fail(std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+    if (negative) {
+      if (value > count)
+        fail(std::string("relative ") + what + " index -" + std::to_string(value) + " is out of range (only " +
+             std::to_string(count) + " " + what + "s defined so far)");
+      return static_cast<uint32_t>(count - value);
+    }
+    if (value > pending.index) {
+      pending.index = value;
+      pending.line = line_;
+    }
+    return static_cast<uint32_t>(value - 1);
+  }
+
+  void parseFace() {
+    polygon_.clear();
+    for (;;) {
+      while (p_ < end_ && isBlank(*p_)) ++p_;
+      if (p_ >= end_ || *p_ == '\n' || *p_ == '#') break;
+      Corner c{index(positions_.size(), maxV_, "vertex"), kNone, kNone};
+      if (p_ < end_ && *p_ == '/') {
+        ++p_;
+        if (p_ < end_ && *p_ != '/') c.vt = index(texcoords_.size(), maxVt_, "texture coordinate");
+        if (p_ < end_ && *p_ == '/') {
+          ++p_;
+          c.vn = index(normals_.size(), maxVn_, "normal");
+        }
+      }
+      if (p_ < end_ && !isBlank(*p_) && *p_ != '\n' && *p_ != '#') fail("bad face vertex near '" + tokenHere() + "'");
+      polygon_.push_back(c);
+    }
+    if (polygon_.size() < 3)
+      fail("face has " + std::to_string(polygon_.size()) + " vertices; a face needs at least 3");
+    const uint64_t triangles = corners_.size() / 3 + polygon_.size() - 2;
+    if (triangles > kMaxTriangles) fail("more than " + withThousands(kMaxTriangles) + " triangles (the limit)");
+    for (const Corner& c : polygon_) {
+      allVt_ = allVt_ && c.vt != kNone;
+      allVn_ = allVn_ && c.vn != kNone;
+      anyVt_ = anyVt_ || c.vt != kNone;
+      anyVn_ = anyVn_ || c.vn != kNone;
+    }
+    for (size_t i = 1; i + 1 < polygon_.size(); ++i) {
+      corners_.push_back(polygon_[0]);
+      corners_.push_back(polygon_[i]);
+      corners_.push_back(polygon_[i + 1]);
+    }
+  }
+
+  void checkPending(const PendingMax& pending, size_t count, const char* what) const {
+    if (pending.index > count)
+      failAt(pending.line, std::string(what) + " index " + std::to_string(pending.index) + " is out of range (the file has " +
+                               withThousands(count) + " " + what + "s)");
+  }
+
+  Mesh build() {
+    checkPending(maxV_, positions_.size(), "vertex");
+    const bool useVt = anyVt_ && allVt_;
+    const bool useVn = anyVn_ && allVn_;
+    if (useVt) checkPending(maxVt_, texcoords_.size(), "texture coordinate");
+    if (useVn) checkPending(maxVn_, normals_.size(), "normal");
+
+    Mesh mesh;
+    if (!useVt && !useVn) {
+      // Fast path: OBJ vertex i is render vertex i.
+      mesh.indices.resize(corners_.size());
+      for (size_t i = 0; i < corners_.size(); ++i) mesh.indices[i] = corners_[i].v;
+      mesh.positions = std::move(positions_);
+      return mesh;
+    }
+
+    // Split vertices by (v, vt, vn): open addressing, linear probing, load factor <= 1/2.
+    size_t capacity = 16;
+    while (capacity < corners_.size() * 2) capacity *= 2;
+    std::vector<Corner> keys(capacity, Corner{kNone, kNone, kNone});
+    std::vector<uint32_t> values(capacity);
+    const size_t mask = capacity - 1;
+    mesh.indices.reserve(corners_.size());
+    for (const Corner& raw : corners_) {
+      const Corner c{raw.v, useVt ? raw.vt : kNone, useVn ? raw.vn : kNone};
+      uint64_t h = (static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull) ^
+                   (static_cast<uint64_t>(c.vt) * 0xC2B2AE3D27D4EB4Full) ^ (static_cast<uint64_t>(c.vn) * 0x165667B19E3779F9ull);
+      h ^= h >> 29;
+      size_t slot = static_cast<size_t>(h) & mask;
+      for (;;) {
+        Corner& k = keys[slot];
+        if (k.v == kNone) {
+          k = c;
+          values[slot] = static_cast<uint32_t>(mesh.positions.size());
+          mesh.indices.push_back(values[slot]);
+          mesh.positions.push_back(positions_[c.v]);
+          if (useVt) mesh.texcoords.push_back(texcoords_[c.vt]);
+          if (useVn) mesh.normals.push_back(normals_[c.vn]);
+          break;
+        }
+        if (k.v == c.v && k.vt == c.vt && k.vn == c.vn) {
+          mesh.indices.push_back(values[slot]);
+          break;
+        }
+        slot = (slot + 1) & mask;
+      }
+    }
+    if (mesh.positions.size() > kMaxVertices)
+      throw InputError(file_, "", "more than " + withThousands(kMaxVertices) + " distinct vertices (the limit)");
+    return mesh;
+  }
+
+  const std::string& file_;
+  const char* p_;
+  const char* end_;
+  size_t line_ = 1;
+  std::vector<glm::vec3> positions_;
+  std::vector<glm::vec2> texcoords_;
+  std::vector<glm::vec3> normals_;
+  std::vector<Corner> corners_;  // three per triangle
+  std::vector<Corner> polygon_;
+  PendingMax maxV_, maxVt_, maxVn_;
+  bool anyVt_ = false, anyVn_ = false, allVt_ = true, allVn_ = true;
+};
+
+}  // namespace
+
+Mesh loadObj(const std::string& file, std::string_view data) {
+  rejectBinary(file, data, "OBJ");
+  return ObjParser(file, data).parse();
+}
+
+}  // namespace marble::mesh_detail

@@ -1,0 +1,207 @@
+#include "marble/noise/marble_pattern.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+// ONE SOURCE OF TRUTH. shaders/pattern_core.glsl is the body of the pattern; the GPU compiles
+// it (through marble_pattern.glsl) and so does this file, right here, by #including the raw
+// file inside a namespace that makes GLSL's vocabulary C++: GLM's vec2/vec3 and functions,
+// `uint` as uint32_t, and float-only overloads of the scalar functions (so no call slips into
+// double precision, and so floor is an exact, inlined one instead of a libm call). The .glsl is
+// written in the subset both languages share (see its header). CMake also embeds the same
+// file into the binary for the shader library, so there is no copy to drift.
+namespace marble::patglsl {
+using namespace glm;
+using uint = uint32_t;
+
+// Exact floor for |x| < 2^31 (texel coordinates are far smaller); identical to floorf there.
+inline float floor(float x) {
+  const float t = static_cast<float>(static_cast<int32_t>(x));
+  return t > x ? t - 1.0f : t;
+}
+inline float sin(float x) { return std::sin(x); }
+inline float abs(float x) { return std::fabs(x); }
+inline float pow(float x, float y) { return std::pow(x, y); }
+inline float min(float a, float b) { return a < b ? a : b; }
+inline float max(float a, float b) { return a > b ? a : b; }
+inline vec2 floor(vec2 v) { return vec2(floor(v.x), floor(v.y)); }
+inline vec3 floor(vec3 v) { return vec3(floor(v.x), floor(v.y), floor(v.z)); }
+inline vec3 abs(vec3 v) { return vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)); }
+
+#include "../../../shaders/pattern_core.glsl"
+}  // namespace marble::patglsl
+
+namespace marble {
+namespace {
+
+using patglsl::PatParams;
+
+PatParams toParams(const Material& m) {
+  PatParams P;
+  P.seed = m.seed;
+  P.resolution = static_cast<float>(m.resolution);
+  P.basis = m.basis == NoiseBasis::Perlin ? patglsl::PAT_BASIS_PERLIN : patglsl::PAT_BASIS_VALUE;
+  P.mapping = m.mapping == PatternMapping::Planar      ? patglsl::PAT_MAP_PLANAR
+              : m.mapping == PatternMapping::Triplanar ? patglsl::PAT_MAP_TRIPLANAR
+                                                       : patglsl::PAT_MAP_SOLID;
+  P.period = glm::vec3(m.x_period, m.y_period, m.z_period);
+  P.turbPower = m.turb_power;
+  P.turbSize = m.turb_size;
+  P.scale = m.pattern_scale;
+  P.sharpness = m.vein_sharpness;
+  P.vein2Amount = m.vein2_amount;
+  P.baseColor = m.base_color;
+  P.veinColor = m.vein_color;
+  P.vein2Color = m.vein2_color;
+  return P;
+}
+
+}  // namespace
+
+float whiteNoise(const Material& m, glm::vec2 q) {
+  return patglsl::pat_white2(patglsl::floor(q), static_cast<float>(m.resolution), patglsl::pat_hash(m.seed));
+}
+float whiteNoise3(const Material& m, glm::vec3 q) {
+  return patglsl::pat_white3(patglsl::floor(q), static_cast<float>(m.resolution), patglsl::pat_hash(m.seed));
+}
+float smoothNoise(const Material& m, glm::vec2 p) {
+  const PatParams P = toParams(m);
+  return patglsl::pat_smooth2(p, P.resolution, patglsl::pat_hash(P.seed), P.basis);
+}
+float smoothNoise3(const Material& m, glm::vec3 p) {
+  const PatParams P = toParams(m);
+  return patglsl::pat_smooth3(p, P.resolution, patglsl::pat_hash(P.seed), P.basis);
+}
+float turbulence(const Material& m, glm::vec2 q) { return patglsl::pat_turbulence2(toParams(m), q); }
+float turbulence3(const Material& m, glm::vec3 q) { return patglsl::pat_turbulence3(toParams(m), q); }
+float sinePattern(const Material& m, glm::vec2 q) { return patglsl::pat_pattern2(toParams(m), q); }
+float sinePattern3(const Material& m, glm::vec3 q) { return patglsl::pat_pattern3(toParams(m), q); }
+
+float perlinNoise2(glm::vec2 p, float period, uint32_t seed) {
+  return patglsl::pat_perlin2_signed(p, period, patglsl::pat_hash(seed));
+}
+float perlinNoise3(glm::vec3 p, float period, uint32_t seed) {
+  return patglsl::pat_perlin3_signed(p, period, patglsl::pat_hash(seed));
+}
+
+glm::vec3 texelPosition(const Material& m, glm::vec3 objectPos) { return patglsl::pat_texel_pos(toParams(m), objectPos); }
+float mirrorTexel(float s, float W) { return patglsl::pat_mirror(s, W); }
+float marblePatternValue(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal) {
+  return patglsl::pat_value_at(toParams(m), objectPos, objectNormal);
+}
+glm::vec3 patternColor(const Material& m, float v) { return patglsl::pat_color(toParams(m), v); }
+glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal) {
+  return patglsl::pat_albedo(toParams(m), objectPos, objectNormal);
+}
+
+// ---- batched rows ----
+// Each octave of value noise is, along a row, a piecewise-linear function of x whose knots are
+// the lattice columns (pat_value2_column / pat_value3_column: the y/z interpolation done
+// first). We compute each column once and walk the row; every float operation is the one the
+// per-point reference performs, in the same order, so the results are bit-identical (tested).
+namespace {
+
+template <typename ColumnFn>
+void accumulateOctave(const float* xs, int count, float size, float period, float* acc, ColumnFn column) {
+  using patglsl::pat_lerp;
+  using patglsl::pat_wrap;
+  float cell = 0.0f, c0 = 0.0f, c1 = 0.0f;
+  bool have = false;
+  for (int i = 0; i < count; ++i) {
+    const float px = xs[i] / size;
+    const float ix = patglsl::floor(px);
+    const float fx = px - ix;
+    if (!have || ix != cell) {
+      if (have && ix == cell + 1.0f) {
+        c0 = c1;
+      } else {
+        c0 = column(pat_wrap(ix, period));
+      }
+      c1 = column(pat_wrap(ix + 1.0f, period));
+      cell = ix;
+      have = true;
+    }
+    acc[i] += pat_lerp(c0, c1, fx) * size;
+  }
+}
+
+void finishRow(const PatParams& P, const float* xs, float yz, int count, float* sum, float* turbOut,
+               float* valueOut) {
+  for (int i = 0; i < count; ++i) {
+    const float t = sum[i] / (2.0f * P.turbSize);
+    if (turbOut) turbOut[i] = t;
+    if (valueOut) {
+      // The same expression as pat_pattern2/3: (x*px + y*py [+ z*pz]) / W, left to right.
+      const float ramp = (xs[i] * P.period.x + yz) / P.resolution;
+      valueOut[i] = patglsl::pat_sine(ramp, t, P.turbPower);
+    }
+  }
+}
+
+}  // namespace
+
+void patternRow2(const Material& m, const float* xs, float y, int count, float* turbOut, float* valueOut) {
+  const PatParams P = toParams(m);
+  if (P.basis != patglsl::PAT_BASIS_VALUE) {
+    for (int i = 0; i < count; ++i) {
+      const glm::vec2 q(xs[i], y);
+      const float t = patglsl::pat_turbulence2(P, q);
+      if (turbOut) turbOut[i] = t;
+      if (valueOut) valueOut[i] = patglsl::pat_sine((q.x * P.period.x + q.y * P.period.y) / P.resolution, t, P.turbPower);
+    }
+    return;
+  }
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  std::vector<float> sum(static_cast<size_t>(count), 0.0f);
+  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f) {
+    const float period = patglsl::pat_octave_period(P.resolution, size);
+    const float py = y / size;
+    const float iy = patglsl::floor(py);
+    const float fy = py - iy;
+    const uint32_t h0 = patglsl::pat_hash_y(patglsl::pat_wrap(iy, period), sh);
+    const uint32_t h1 = patglsl::pat_hash_y(patglsl::pat_wrap(iy + 1.0f, period), sh);
+    accumulateOctave(xs, count, size, period, sum.data(),
+                     [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); });
+  }
+  finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
+}
+
+void patternRow3(const Material& m, const float* xs, float y, float z, int count, float* turbOut, float* valueOut) {
+  const PatParams P = toParams(m);
+  if (P.basis != patglsl::PAT_BASIS_VALUE) {
+    for (int i = 0; i < count; ++i) {
+      const glm::vec3 q(xs[i], y, z);
+      const float t = patglsl::pat_turbulence3(P, q);
+      if (turbOut) turbOut[i] = t;
+      if (valueOut)
+        valueOut[i] = patglsl::pat_sine((q.x * P.period.x + q.y * P.period.y + q.z * P.period.z) / P.resolution, t,
+                                        P.turbPower);
+    }
+    return;
+  }
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  std::vector<float> sum(static_cast<size_t>(count), 0.0f);
+  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f) {
+    const float period = patglsl::pat_octave_period(P.resolution, size);
+    const float py = y / size, pz = z / size;
+    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+    const float fy = py - iy, fz = pz - iz;
+    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_wrap(iy + 1.0f, period);
+    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_wrap(iz + 1.0f, period);
+    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
+    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
+    accumulateOctave(xs, count, size, period, sum.data(),
+                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
+  }
+  // pat_pattern3's ramp is ((x*px + y*py) + z*pz) / W: pass the (x*px + y*py) part per point.
+  for (int i = 0; i < count; ++i) {
+    const float t = sum[i] / (2.0f * P.turbSize);
+    if (turbOut) turbOut[i] = t;
+    if (valueOut)
+      valueOut[i] = patglsl::pat_sine((xs[i] * P.period.x + y * P.period.y + z * P.period.z) / P.resolution, t,
+                                      P.turbPower);
+  }
+}
+
+}  // namespace marble

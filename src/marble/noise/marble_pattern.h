@@ -1,0 +1,53 @@
+#pragma once
+// The marble pattern on the CPU (paper §3.1): the reference the GPU is tested against, and what
+// `marble texture` bakes. The arithmetic is not written here: marble_pattern.cpp compiles
+// shaders/pattern_core.glsl as C++ (see the comment there), so CPU and GPU share one body.
+//
+// Units: "texel" coordinates q address the paper's W x W texture (W = Material::resolution);
+// object-space positions p map to texels by q = p * (W / 2) / pattern_scale.
+#include <glm/glm.hpp>
+
+#include "marble/scene/material.h"
+
+namespace marble {
+
+// ---- stages (2D: the paper's texture, q in texels) ----
+// White noise of the lattice cell containing q: [0,1), wraps with period W.
+float whiteNoise(const Material& m, glm::vec2 q);
+// Smooth noise (the material's basis) at lattice coordinates p (one unit = one cell), lattice
+// period W cells: [0,1].
+float smoothNoise(const Material& m, glm::vec2 p);
+// Turbulence (octaves turb_size, turb_size/2, ... >= 1, weighted by size): [0,1).
+float turbulence(const Material& m, glm::vec2 q);
+// |sin(pi * (x*x_period/W + y*y_period/W + turb_power * turbulence))|: [0,1].
+float sinePattern(const Material& m, glm::vec2 q);
+
+// ---- 3D (solid marble, q in texels) ----
+float whiteNoise3(const Material& m, glm::vec3 q);
+float smoothNoise3(const Material& m, glm::vec3 p);
+float turbulence3(const Material& m, glm::vec3 q);
+float sinePattern3(const Material& m, glm::vec3 q);
+
+// Perlin's improved noise, signed ([-1,1]), lattice coordinates, wrapping with `period` cells.
+float perlinNoise2(glm::vec2 p, float period, uint32_t seed);
+float perlinNoise3(glm::vec3 p, float period, uint32_t seed);
+
+// ---- mappings and colour (what the GPU's marble_albedo computes) ----
+glm::vec3 texelPosition(const Material& m, glm::vec3 objectPos);
+// GL_MIRRORED_REPEAT on texel coordinates: [0,W] as is, mirrored beyond; result in [0,W].
+float mirrorTexel(float s, float W);
+// Pattern value in [0,1] for the material's mapping (normal used by triplanar only).
+float marblePatternValue(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal);
+// The colour ramp: v in [0,1] -> linear RGB.
+glm::vec3 patternColor(const Material& m, float v);
+glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal);
+
+// ---- batched rows (the fast path: bit-identical to the functions above) ----
+// A row of points (xs[i], y) or (xs[i], y, z) in texels. Lattice columns and the row's y/z
+// hashes are computed once per cell instead of once per point (value basis; the Perlin basis
+// falls back to per-point evaluation). xs in increasing order is fastest; any order is correct.
+// turbOut and/or valueOut may be null.
+void patternRow2(const Material& m, const float* xs, float y, int count, float* turbOut, float* valueOut);
+void patternRow3(const Material& m, const float* xs, float y, float z, int count, float* turbOut, float* valueOut);
+
+}  // namespace marble

@@ -1,0 +1,60 @@
+#include "marble/render/geometry_pass.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "marble/noise/pattern_uniforms.h"
+
+namespace marble {
+
+GeometryPass::GeometryPass(const ShaderLibrary& shaders)
+    : program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "geometry.frag.glsl"}}) {}
+
+void GeometryPass::resize(int width, int height) {
+  if (width == width_ && height == height_ && fbo_) return;
+  width_ = width;
+  height_ = height;
+  albedo_ = gl::Texture::create(GL_TEXTURE_2D);
+  normal_ = gl::Texture::create(GL_TEXTURE_2D);
+  depth_ = gl::Texture::create(GL_TEXTURE_2D);
+  fbo_ = gl::Framebuffer::create();
+  glTextureStorage2D(albedo_.id(), 1, GL_RGBA8, width, height);
+  glTextureStorage2D(normal_.id(), 1, GL_RG16_SNORM, width, height);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  for (GLuint t : {albedo_.id(), normal_.id(), depth_.id()}) {
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 2, bufs);
+}
+
+void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera,
+                       const Material& material) {
+  timer_.begin();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  const float zero[4] = {0, 0, 0, 0};
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  program_.set("u_model", model);
+  program_.set("u_view_proj", camera.viewProj);
+  program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  applyPatternUniforms(program_.id(), material);
+  glUseProgram(program_.id());
+  mesh.draw();
+  timer_.end();
+}
+
+}  // namespace marble

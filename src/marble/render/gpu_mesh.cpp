@@ -1,0 +1,36 @@
+#include "marble/render/gpu_mesh.h"
+
+#include <vector>
+
+namespace marble {
+
+GpuMesh::GpuMesh(const Mesh& mesh)
+    : vertices_(gl::Buffer::create()), indices_(gl::Buffer::create()), vao_(gl::VertexArray::create()) {
+  std::vector<float> interleaved;
+  interleaved.reserve(mesh.positions.size() * 6);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::vec3 n = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
+    interleaved.insert(interleaved.end(), {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z, n.x, n.y, n.z});
+  }
+  const auto vbytes = static_cast<GLsizeiptr>(interleaved.size() * sizeof(float));
+  const auto ibytes = static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t));
+  glNamedBufferStorage(vertices_.id(), vbytes, interleaved.data(), 0);
+  glNamedBufferStorage(indices_.id(), ibytes, mesh.indices.data(), 0);
+  bytes_ = static_cast<size_t>(vbytes + ibytes);
+  glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, 6 * sizeof(float));
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
+  glEnableVertexArrayAttrib(vao_.id(), 0);
+  glEnableVertexArrayAttrib(vao_.id(), 1);
+  glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribFormat(vao_.id(), 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+  glVertexArrayAttribBinding(vao_.id(), 0, 0);
+  glVertexArrayAttribBinding(vao_.id(), 1, 0);
+  indexCount_ = static_cast<GLsizei>(mesh.indices.size());
+}
+
+void GpuMesh::draw() const {
+  glBindVertexArray(vao_.id());
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace marble

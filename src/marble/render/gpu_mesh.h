@@ -1,0 +1,24 @@
+#pragma once
+// A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer.
+#include "marble/gl/handles.h"
+#include "marble/mesh/mesh.h"
+
+namespace marble {
+
+class GpuMesh {
+public:
+  GpuMesh() = default;
+  explicit GpuMesh(const Mesh& mesh);
+  void draw() const;
+  size_t triangleCount() const { return indexCount_ / 3; }
+  size_t bytes() const { return bytes_; }
+  bool empty() const { return indexCount_ == 0; }
+
+private:
+  gl::Buffer vertices_, indices_;
+  gl::VertexArray vao_;
+  GLsizei indexCount_ = 0;
+  size_t bytes_ = 0;
+};
+
+}  // namespace marble

@@ -1,0 +1,49 @@
+#include "marble/render/light_depth_pass.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace marble {
+
+LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
+    : size_(size),
+      program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
+      distance_(gl::Texture::create(GL_TEXTURE_2D)),
+      depth_(gl::Texture::create(GL_TEXTURE_2D)),
+      fbo_(gl::Framebuffer::create()) {
+  glTextureStorage2D(distance_.id(), 1, GL_R32F, size, size);
+  // Linear filtering of distances softens the map's texel steps in the thickness.
+  glTextureParameteri(distance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(distance_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, distance_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+}
+
+void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
+  timer_.begin();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, size_, size_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  // Both faces: meshes with holes or inconsistent winding must still block the light.
+  glDisable(GL_CULL_FACE);
+  const float farValue = light.far + 1e3f;  // "nothing hit": a distance beyond every surface
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &farValue);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  program_.set("u_model", model);
+  program_.set("u_view_proj", light.viewProj);
+  program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  program_.set("u_light_pos", light.position);
+  program_.set("u_light_dir", light.direction);
+  program_.set("u_light_directional", light.directional ? 1 : 0);
+  glUseProgram(program_.id());
+  mesh.draw();
+  timer_.end();
+}
+
+}  // namespace marble

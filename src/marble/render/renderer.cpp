@@ -1,0 +1,92 @@
+#include "marble/render/renderer.h"
+
+#include <cstring>
+
+namespace marble {
+
+struct Renderer::Passes {
+  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), floor(s) {}
+  LightDepthPass lightDepth;
+  GeometryPass geometry;
+  LightingPass lighting;
+  FloorPass floor;
+};
+
+bool samePattern(const Material& a, const Material& b) {
+  return a.seed == b.seed && a.resolution == b.resolution && a.basis == b.basis && a.mapping == b.mapping &&
+         a.x_period == b.x_period && a.y_period == b.y_period && a.z_period == b.z_period &&
+         a.turb_power == b.turb_power && a.turb_size == b.turb_size && a.pattern_scale == b.pattern_scale &&
+         a.base_color == b.base_color && a.vein_color == b.vein_color && a.vein2_color == b.vein2_color &&
+         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount;
+}
+
+namespace {
+bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
+}  // namespace
+
+Renderer::Renderer(ShaderLibrary shaders) : shaders_(std::move(shaders)), passes_(std::make_unique<Passes>(shaders_)) {
+  // llvmpipe reports the context's age, not the elapsed time, for the first GL_TIME_ELAPSED
+  // query of a context: spend it on an empty one.
+  PassTimer warmup;
+  warmup.begin();
+  warmup.end();
+  warmup.waitMilliseconds();
+}
+Renderer::~Renderer() = default;
+
+void Renderer::setMesh(const Mesh& mesh) {
+  mesh_.emplace(mesh);
+  invalidate();
+}
+
+void Renderer::reloadShaders() {
+  auto fresh = std::make_unique<Passes>(shaders_);  // throws on error; old passes stay
+  passes_ = std::move(fresh);
+  invalidate();
+}
+
+void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
+  if (!mesh_ || width <= 0 || height <= 0) return;
+  const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
+  times_.lightDepthRan = times_.geometryRan = false;
+  if (scene.render.mode == RenderMode::Floor) {
+    passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
+                       targetFbo, width, height);
+    return;
+  }
+  const LightMatrices light = lightMatrices(scene.light);
+  if (!lightValid_ || !sameMatrix(light.viewProj, lastLight_.viewProj) || !sameMatrix(model, lastModel_)) {
+    passes_->lightDepth.run(*mesh_, model, light);
+    lightValid_ = true;
+    times_.lightDepthRan = true;
+  }
+  passes_->geometry.resize(width, height);
+  if (!geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || !sameMatrix(model, lastModel_) ||
+      !samePattern(scene.material, lastMaterial_)) {
+    passes_->geometry.run(*mesh_, model, camera, scene.material);
+    geometryValid_ = true;
+    times_.geometryRan = true;
+  }
+  lastLight_ = light;
+  lastCamera_ = camera;
+  lastModel_ = model;
+  lastMaterial_ = scene.material;
+  const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
+                          passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture()};
+  passes_->lighting.run(in, camera, light, scene.light, scene.material, scene.render, targetFbo, width, height);
+}
+
+PassTimes Renderer::passTimes(bool wait) {
+  auto get = [wait](PassTimer& t) { return wait ? t.waitMilliseconds() : t.milliseconds(); };
+  times_.lightDepthMs = get(passes_->lightDepth.timer());
+  times_.geometryMs = get(passes_->geometry.timer());
+  times_.lightingMs = get(passes_->lighting.timer());
+  times_.floorMs = get(passes_->floor.timer());
+  return times_;
+}
+
+size_t Renderer::glBytes() const {
+  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + (mesh_ ? mesh_->bytes() : 0);
+}
+
+}  // namespace marble

@@ -1,0 +1,66 @@
+#pragma once
+// The renderer owns the passes and runs them in order:
+//   1 light depth  -> only when the light, the mesh or the model transform changed
+//   2 geometry     -> only when the camera, the mesh, the size or the pattern changed
+//   3 lighting     -> every frame (cheap, full screen)
+// The viewer and the CLI own nothing of GL but a context and a Renderer.
+#include <memory>
+#include <optional>
+
+#include "marble/gl/shader_library.h"
+#include "marble/render/floor_pass.h"
+#include "marble/render/geometry_pass.h"
+#include "marble/render/gpu_mesh.h"
+#include "marble/render/light_depth_pass.h"
+#include "marble/render/lighting_pass.h"
+#include "marble/scene/scene.h"
+
+namespace marble {
+
+struct PassTimes {
+  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, floorMs = 0;
+  bool lightDepthRan = false, geometryRan = false;
+};
+
+class Renderer {
+public:
+  explicit Renderer(ShaderLibrary shaders = ShaderLibrary());
+  ~Renderer();
+
+  void setMesh(const Mesh& mesh);
+  bool hasMesh() const { return mesh_ && !mesh_->empty(); }
+  size_t triangleCount() const { return mesh_ ? mesh_->triangleCount() : 0; }
+
+  // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
+  void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
+
+  // GPU times of the last frame's passes; `wait` blocks until they are known.
+  PassTimes passTimes(bool wait = false);
+  // Bytes of GL textures and buffers the renderer allocated.
+  size_t glBytes() const;
+
+  // Forget cached passes (the next frame runs all of them).
+  void invalidate() { lightValid_ = geometryValid_ = false; }
+
+  // Rebuilds every program from the library's sources. On a compile error the previous
+  // programs stay in use and gl::ShaderError is thrown (its message names file and line).
+  void reloadShaders();
+
+private:
+  struct Passes;
+  ShaderLibrary shaders_;
+  std::unique_ptr<Passes> passes_;
+  std::optional<GpuMesh> mesh_;
+  PassTimes times_;
+  // What the cached passes were made from.
+  bool lightValid_ = false, geometryValid_ = false;
+  LightMatrices lastLight_{};
+  CameraMatrices lastCamera_{};
+  glm::mat4 lastModel_{1.0f};
+  Material lastMaterial_{};
+};
+
+// Whether two materials give the same G-buffer albedo (pattern and colour fields).
+bool samePattern(const Material& a, const Material& b);
+
+}  // namespace marble

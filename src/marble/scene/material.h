@@ -1,0 +1,57 @@
+#pragma once
+// The marble material: the vein pattern (paper §3.1), its colours, and how light meets it
+// (paper §3.2 subsurface, §3.3 Fresnel-Schlick). Every field has a flat key in preset
+// files and on the command line (`--set key=value`); the keys are listed in
+// docs/materials.md and by materialKeys().
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace marble {
+
+enum class NoiseBasis { Value, Perlin };          // key "basis": "value" (the paper's) | "perlin"
+enum class PatternMapping { Planar, Triplanar, Solid };  // key "mapping": "planar" | "triplanar" | "solid"
+enum class ShadingOrder { SubsurfaceFirst, ReflectanceFirst };  // key "order": "sss-first" | "schlick-first"
+enum class SchlickCosine { HdotV, HdotN };        // key "schlick_cos": "hv" | "hn"
+
+struct Material {
+  std::string name = "paper";
+  std::string description = "The paper's default: cream stone with ochre veins";
+
+  // --- pattern (paper §3.1) ---
+  uint32_t seed = 1;             // "seed": lattice of white noise
+  int resolution = 256;          // "resolution": W = H, texels of the paper's texture / lattice cells per 2 units
+  NoiseBasis basis = NoiseBasis::Value;  // "basis"
+  PatternMapping mapping = PatternMapping::Solid;  // "mapping"
+  float x_period = 5.0f;         // "x_period": vein repetitions along x over the texture
+  float y_period = 10.0f;        // "y_period": along y (the texture's t)
+  float z_period = 0.0f;         // "z_period": along z (solid mapping only)
+  float turb_power = 5.0f;       // "turb_power": 0 gives a plain sine
+  float turb_size = 32.0f;       // "turb_size": first octave size in texels, halves each octave
+  float pattern_scale = 1.0f;    // "pattern_scale": object units per texture width / 2
+
+  // --- colour ---
+  glm::vec3 base_color{0.93f, 0.89f, 0.80f};   // "base_color": linear RGB of the stone
+  glm::vec3 vein_color{0.55f, 0.38f, 0.16f};   // "vein_color": main veins
+  glm::vec3 vein2_color{0.75f, 0.62f, 0.42f};  // "vein2_color": secondary veins (ramp middle)
+  float vein_sharpness = 1.0f;   // "vein_sharpness": exponent on the sine (1 = the paper)
+  float vein2_amount = 0.0f;     // "vein2_amount": 0 = two-colour ramp (the paper)
+
+  // --- subsurface (paper §3.2, GPU Gems 1 ch. 16) ---
+  glm::vec3 sigma_t{0.6f, 0.9f, 1.3f};  // "sigma_t": extinction per scene unit, per channel
+  float k_sss = 1.0f;            // "k_sss": strength of the subsurface term
+
+  // --- reflectance (paper §3.3) ---
+  float k_schlick = 0.5f;        // "k_schlick": opacity of the Schlick reflectance
+  float metalness = 0.0f;        // "metalness": F0 = mix(0.04, diffuse, metalness)
+  ShadingOrder order = ShadingOrder::SubsurfaceFirst;  // "order"
+  SchlickCosine schlick_cos = SchlickCosine::HdotV;    // "schlick_cos"
+
+  // --- comparison models ---
+  float shininess = 32.0f;       // "shininess": Phong exponent
+  float oren_nayar_sigma = 0.3f; // "oren_nayar_sigma": roughness (radians) of Oren-Nayar
+};
+
+}  // namespace marble

@@ -1,0 +1,25 @@
+#include <stdexcept>
+
+#include "marble/scene/scene.h"
+
+namespace marble {
+
+const std::vector<std::string>& renderModeNames() {
+  static const std::vector<std::string> names = {"paper", "marble", "phong", "oren-nayar", "subsurface",
+                                                 "reflectance", "albedo", "light-depth", "thickness",
+                                                 "depth", "position", "normal", "floor"};
+  return names;
+}
+
+RenderMode parseRenderMode(const std::string& name) {
+  const auto& names = renderModeNames();
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<RenderMode>(i);
+  std::string all;
+  for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown render mode \"" + name + "\"; known: " + all);
+}
+
+const std::string& renderModeName(RenderMode mode) { return renderModeNames().at(static_cast<size_t>(mode)); }
+
+}  // namespace marble

@@ -1,0 +1,71 @@
+#pragma once
+// A scene: which mesh, seen from where, lit how, made of which marble, rendered how.
+// Every field is optional in the JSON file (docs/scene-format.md lists the defaults).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "marble/mesh/mesh.h"
+#include "marble/scene/material.h"
+
+namespace marble {
+
+struct Camera {
+  glm::vec3 position{0.0f, 0.8f, 4.2f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 40.0f;
+};
+
+enum class LightType { Point, Directional };
+
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 position{3.0f, 3.0f, 3.0f};  // for a directional light: the direction it comes from
+  glm::vec3 color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+};
+
+// The render modes, by their exact command-line names (issue 4).
+enum class RenderMode {
+  Paper, Marble, Phong, OrenNayar, Subsurface, Reflectance, Albedo, LightDepth, Thickness, Depth, Position,
+  Normal, Floor
+};
+const std::vector<std::string>& renderModeNames();  // in enum order
+RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_argument
+const std::string& renderModeName(RenderMode mode);
+
+struct RenderSettings {
+  int width = 800;
+  int height = 800;
+  glm::vec3 background{0.19f, 0.11f, 0.03f};  // the paper's dark brown, as displayed
+  RenderMode mode = RenderMode::Marble;
+};
+
+struct Scene {
+  std::string mesh = "builtin:sculpture";  // a path (relative to the scene file) or builtin:NAME
+  UpAxis up = UpAxis::Y;
+  Camera camera;
+  Light light;
+  Material material;
+  RenderSettings render;
+};
+
+// Limits on what a scene may ask for.
+constexpr int kMaxRenderSize = 8192;
+
+// Reads and validates a scene file. Wrong types and out-of-range values throw InputError
+// naming the file and the field ("scene.json: camera.fov_y_deg: expected a number in
+// (1, 179), got 500"); unknown keys are appended to `warnings`.
+Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings);
+
+// Interprets a command-line input: a .json scene, a mesh file (default scene around it),
+// or empty (the built-in default scene).
+Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings);
+
+// Resolves Scene::mesh and loads it (builtin:NAME or a file).
+Mesh loadSceneMesh(const Scene& scene);
+
+}  // namespace marble

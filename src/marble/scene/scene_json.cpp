@@ -1,0 +1,222 @@
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "marble/core/error.h"
+#include "marble/scene/material_io.h"
+#include "marble/scene/scene.h"
+
+namespace marble {
+namespace {
+
+using json = nlohmann::json;
+
+// Reads fields of one JSON object, checking types and ranges and remembering which keys
+// were used, so the leftovers can be reported as unknown.
+class ObjectReader {
+public:
+  ObjectReader(const json& obj, std::string file, std::string prefix)
+      : obj_(obj), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+  const json* find(const std::string& key) {
+    used_.push_back(key);
+    auto it = obj_.find(key);
+    return it == obj_.end() ? nullptr : &*it;
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+    throw InputError(file_, prefix_ + key, problem);
+  }
+
+  static std::string describe(const json& v) {
+    std::string d = v.dump();
+    if (d.size() > 40) d = d.substr(0, 37) + "...";
+    return std::string(v.type_name()) + " " + d;
+  }
+
+  void number(const std::string& key, float& out, float lo, float hi) {
+    const json* v = find(key);
+    if (!v) return;
+    if (!v->is_number()) fail(key, "expected a number, got " + describe(*v));
+    const double d = v->get<double>();
+    if (!std::isfinite(d) || d < lo || d > hi)
+      fail(key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + v->dump());
+    out = static_cast<float>(d);
+  }
+
+  void integer(const std::string& key, int& out, int lo, int hi) {
+    const json* v = find(key);
+    if (!v) return;
+    if (!v->is_number_integer()) fail(key, "expected a whole number, got " + describe(*v));
+    const long long i = v->get<long long>();
+    if (i < lo || i > hi) fail(key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v->dump());
+    out = static_cast<int>(i);
+  }
+
+  void vec3(const std::string& key, glm::vec3& out, float lo, float hi) {
+    const json* v = find(key);
+    if (!v) return;
+    if (!v->is_array() || v->size() != 3) fail(key, "expected an array of 3 numbers, got " + describe(*v));
+    glm::vec3 r;
+    for (int i = 0; i < 3; ++i) {
+      const json& c = (*v)[static_cast<size_t>(i)];
+      if (!c.is_number()) fail(key, "expected an array of 3 numbers, got " + describe(*v));
+      const double d = c.get<double>();
+      if (!std::isfinite(d) || d < lo || d > hi)
+        fail(key, "component " + std::to_string(i) + " must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + c.dump());
+      r[i] = static_cast<float>(d);
+    }
+    out = r;
+  }
+
+  bool string(const std::string& key, std::string& out) {
+    const json* v = find(key);
+    if (!v) return false;
+    if (!v->is_string()) fail(key, "expected a string, got " + describe(*v));
+    out = v->get<std::string>();
+    return true;
+  }
+
+  const json* object(const std::string& key) {
+    const json* v = find(key);
+    if (v && !v->is_object()) fail(key, "expected an object, got " + describe(*v));
+    return v;
+  }
+
+  void warnUnknown(std::vector<std::string>& warnings) const {
+    for (auto it = obj_.begin(); it != obj_.end(); ++it)
+      if (std::find(used_.begin(), used_.end(), it.key()) == used_.end())
+        warnings.push_back(file_ + ": " + prefix_ + it.key() + ": unknown key (ignored)");
+  }
+
+private:
+  static std::string fmt(float v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+  const json& obj_;
+  std::string file_, prefix_;
+  std::vector<std::string> used_;
+};
+
+void readCamera(const json& j, const std::string& file, Camera& cam, std::vector<std::string>& warnings) {
+  ObjectReader r(j, file, "camera.");
+  r.vec3("position", cam.position, -1e4f, 1e4f);
+  r.vec3("target", cam.target, -1e4f, 1e4f);
+  r.vec3("up", cam.up, -1e4f, 1e4f);
+  r.number("fov_y_deg", cam.fov_y_deg, 1.0f, 179.0f);
+  if (glm::length(cam.up) < 1e-6f) r.fail("up", "must not be the zero vector");
+  if (glm::length(cam.position - cam.target) < 1e-6f) r.fail("position", "must differ from camera.target");
+  if (glm::length(glm::cross(glm::normalize(cam.position - cam.target), glm::normalize(cam.up))) < 1e-4f)
+    r.fail("up", "must not be parallel to the viewing direction");
+  r.warnUnknown(warnings);
+}
+
+void readLight(const json& j, const std::string& file, Light& light, std::vector<std::string>& warnings) {
+  ObjectReader r(j, file, "light.");
+  std::string type;
+  if (r.string("type", type)) {
+    if (type == "point") light.type = LightType::Point;
+    else if (type == "directional") light.type = LightType::Directional;
+    else r.fail("type", "expected \"point\" or \"directional\", got \"" + type + "\"");
+  }
+  r.vec3("position", light.position, -1e4f, 1e4f);
+  r.vec3("color", light.color, 0.0f, 1e3f);
+  r.number("intensity", light.intensity, 0.0f, 1e4f);
+  if (glm::length(light.position) < 1e-3f) r.fail("position", "must not be at the origin (the object is there)");
+  r.warnUnknown(warnings);
+}
+
+void readRender(const json& j, const std::string& file, RenderSettings& rs, std::vector<std::string>& warnings) {
+  ObjectReader r(j, file, "render.");
+  r.integer("width", rs.width, 1, kMaxRenderSize);
+  r.integer("height", rs.height, 1, kMaxRenderSize);
+  r.vec3("background", rs.background, 0.0f, 1.0f);
+  std::string mode;
+  if (r.string("mode", mode)) {
+    try {
+      rs.mode = parseRenderMode(mode);
+    } catch (const std::invalid_argument& e) {
+      r.fail("mode", e.what());
+    }
+  }
+  r.warnUnknown(warnings);
+}
+
+std::string readText(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "no such file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "", "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open for reading");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+  const std::string file = path.string();
+  const std::string text = readText(path);
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann's message carries line and column: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    std::string what = e.what();
+    const auto pos = what.find("parse error");
+    throw InputError(file, "", "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+  }
+  if (!root.is_object()) throw InputError(file, "", "expected a JSON object at the top level");
+
+  Scene scene;
+  ObjectReader r(root, file, "");
+  std::string mesh;
+  if (r.string("mesh", mesh)) {
+    if (mesh.empty()) r.fail("mesh", "must not be empty");
+    if (mesh.rfind("builtin:", 0) == 0) {
+      scene.mesh = mesh;
+    } else {
+      std::filesystem::path p(mesh);
+      if (p.is_relative()) p = path.parent_path() / p;
+      scene.mesh = p.lexically_normal().string();
+    }
+  }
+  std::string up;
+  if (r.string("up", up)) {
+    try {
+      scene.up = parseUpAxis(up);
+    } catch (const std::invalid_argument&) {
+      r.fail("up", "expected one of \"y\", \"z\", \"x\", \"-y\", \"-z\", \"-x\", got \"" + up + "\"");
+    }
+  }
+  if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
+  if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);
+  if (const json* m = r.object("material")) applyMaterialJson(scene.material, *m, file, "material.", warnings);
+  if (const json* rs = r.object("render")) readRender(*rs, file, scene.render, warnings);
+  r.warnUnknown(warnings);
+  return scene;
+}
+
+Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings) {
+  if (input.empty()) return Scene{};
+  std::filesystem::path p(input);
+  std::string ext = p.extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (ext == ".json") return loadScene(p, warnings);
+  Scene scene;
+  scene.mesh = input;
+  return scene;
+}
+
+Mesh loadSceneMesh(const Scene& scene) {
+  if (scene.mesh.rfind("builtin:", 0) == 0) return builtinMesh(scene.mesh.substr(8));
+  return loadMesh(scene.mesh, scene.up);
+}
+
+}  // namespace marble

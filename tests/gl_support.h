@@ -1,0 +1,38 @@
+#pragma once
+// Shared by the GL tests: one headless context per test binary (EGL on llvmpipe here; a GL
+// test that cannot get a context fails, it does not skip), and a render-to-image helper.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "marble/gl/headless_context.h"
+#include "marble/render/offscreen_target.h"
+#include "marble/render/renderer.h"
+
+namespace marble::test {
+
+inline HeadlessContext& glContext() {
+  static std::unique_ptr<HeadlessContext> ctx = std::make_unique<HeadlessContext>();
+  return *ctx;
+}
+
+inline ImageRGBA8 renderImage(Renderer& renderer, const Scene& scene) {
+  glContext();
+  OffscreenTarget target(scene.render.width, scene.render.height);
+  renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  return target.read();
+}
+
+inline glm::vec3 pixel(const ImageRGBA8& img, int x, int y) {
+  const auto p = img.at(x, y);
+  return glm::vec3(p.r, p.g, p.b) / 255.0f;
+}
+
+inline double meanAbsDiff(const ImageRGBA8& a, const ImageRGBA8& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+  return sum / static_cast<double>(a.pixels.size());
+}
+
+}  // namespace marble::test

@@ -1,0 +1,139 @@
+// `marble render` and friends end to end: exit codes, one-line messages, and the picture.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cli_support.h"
+#include "marble/core/image.h"
+
+using namespace marble;
+using namespace marble::test;
+
+namespace {
+
+void writeFile(const std::filesystem::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+// The background of the default scene (the paper's brown) as 8-bit.
+bool isBackground(const glm::u8vec4& px) {
+  return std::abs(px.r - 48) <= 2 && std::abs(px.g - 28) <= 2 && std::abs(px.b - 8) <= 2;
+}
+
+}  // namespace
+
+TEST(CliRender, HelpExitsZeroAndListsCommands) {
+  const auto r = runMarble("--help");
+  EXPECT_EQ(r.exitCode, 0);
+  for (const char* cmd : {"render", "view", "texture", "presets"}) EXPECT_NE(r.output.find(cmd), std::string::npos) << cmd;
+  EXPECT_EQ(runMarble("render --help").exitCode, 0);
+}
+
+TEST(CliRender, BadUsageExitsTwo) {
+  EXPECT_EQ(runMarble("").exitCode, 2);
+  EXPECT_EQ(runMarble("frobnicate").exitCode, 2);
+  EXPECT_EQ(runMarble("render").exitCode, 2);  // -o is required
+  EXPECT_EQ(runMarble("render -o x.png --width 0").exitCode, 2);
+  const auto r = runMarble("render -o /tmp/x.png --mode sparkly");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("unknown render mode"), std::string::npos) << r.output;
+}
+
+TEST(CliRender, DefaultSceneRendersCentredObject) {
+  const auto dir = tempDir("render-default");
+  const auto out = dir / "default.png";
+  const auto r = runMarble("render -o " + out.string() + " --width 160 --height 120");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 img = readPng(out);
+  ASSERT_EQ(img.width, 160);
+  ASSERT_EQ(img.height, 120);
+  EXPECT_FALSE(isBackground(img.at(80, 60))) << "the object should cover the centre";
+  EXPECT_TRUE(isBackground(img.at(1, 1))) << "corners show the background";
+  EXPECT_TRUE(isBackground(img.at(158, 118)));
+  // No temporary left beside the output.
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, BadMeshFilesGiveOneLineAndExitTwo) {
+  const auto dir = tempDir("render-bad");
+  struct Case {
+    std::string name, content, expect;
+  };
+  const std::vector<Case> cases = {
+      {"empty.obj", "", "empty.obj"},
+      {"garbage.obj", std::string("\x7f\x45\x4c\x46\x02\x01\x01\x00\xff\xfe", 10), "garbage.obj"},
+      {"index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "line 4"},
+      {"zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4"},
+      {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2"},
+      {"nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "nofaces.obj"},
+  };
+  for (const auto& c : cases) {
+    writeFile(dir / c.name, c.content);
+    const auto r = runMarble("render " + (dir / c.name).string() + " -o " + (dir / "out.png").string());
+    EXPECT_EQ(r.exitCode, 2) << c.name << ": " << r.output;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.name << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.name << ": " << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+  }
+  const auto missing = runMarble("render " + (dir / "missing.obj").string() + " -o " + (dir / "out.png").string());
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("missing.obj"), std::string::npos);
+  const auto directory = runMarble("render " + dir.string() + " -o " + (dir / "out.png").string());
+  EXPECT_EQ(directory.exitCode, 2) << directory.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, BadSceneNamesFileAndField) {
+  const auto dir = tempDir("render-scene");
+  writeFile(dir / "s.json", R"({"camera": {"fov_y_deg": "wide"}})");
+  auto r = runMarble("render " + (dir / "s.json").string() + " -o " + (dir / "o.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("s.json: camera.fov_y_deg: expected a number"), std::string::npos) << r.output;
+  writeFile(dir / "u.json", R"({"mesh": "builtin:sphere", "colour": 1, "render": {"width": 32, "height": 32}})");
+  r = runMarble("render " + (dir / "u.json").string() + " -o " + (dir / "o.png").string());
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: " + (dir / "u.json").string() + ": colour: unknown key"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, UnwritableOutputExitsTwo) {
+  const auto r = runMarble("render -o /nonexistent-dir/x.png --width 16 --height 16");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("/nonexistent-dir/x.png"), std::string::npos) << r.output;
+}
+
+TEST(CliView, WithoutDisplaySaysSoAndPointsAtRender) {
+  const auto r = runMarble("view", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("marble render"), std::string::npos) << r.output;
+}
+
+TEST(CliView, UnderXvfbDrawsFramesAndSavesScreenshotWithMeshAndPanel) {
+  const auto dir = tempDir("view");
+  const auto shot = dir / "shot.png";
+  const auto r = runMarble("view --frames 3 --width 640 --height 480 --screenshot " + shot.string(),
+                           "xvfb-run -a -s '-screen 0 1024x768x24'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 img = readPng(shot);
+  ASSERT_EQ(img.width, 640);
+  ASSERT_EQ(img.height, 480);
+  // The mesh: the right half's centre (beside the panel) is not background; corners are.
+  EXPECT_TRUE(isBackground(img.at(630, 470)));
+  int object = 0, panel = 0;
+  for (int y = 150; y < 330; ++y)
+    for (int x = 420; x < 600; ++x)
+      if (!isBackground(img.at(x, y))) ++object;
+  EXPECT_GT(object, 1000) << "the mesh should be visible right of the panel";
+  // The panel: ImGui's dark-blue title bar and grey-blue window at the top left.
+  for (int y = 12; y < 60; ++y)
+    for (int x = 12; x < 300; ++x) {
+      const auto px = img.at(x, y);
+      if (px.b > px.r + 15) ++panel;
+    }
+  EXPECT_GT(panel, 500) << "the ImGui panel should be drawn at the top left";
+  std::filesystem::remove_all(dir);
+}

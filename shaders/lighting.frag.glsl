@@ -11,6 +11,7 @@ layout(binding = 0) uniform sampler2D u_albedo;
 layout(binding = 1) uniform sampler2D u_normal;
 layout(binding = 2) uniform sampler2D u_depth;
 layout(binding = 3) uniform sampler2D u_light_distance;
+layout(binding = 4) uniform sampler2DShadow u_light_shadow;
 
 uniform mat4 u_inv_view_proj;
 uniform vec3 u_camera_pos;
@@ -33,6 +34,15 @@ uniform float u_shininess;
 uniform float u_oren_nayar_sigma;
 uniform int u_mode;
 
+// Physically based marble (mode `marble`).
+uniform float u_mm_per_unit;     // millimetres per scene unit
+uniform vec3 u_sigma_tr_mm;      // effective transport coefficient per mm, sqrt(3 sigma_a sigma_t')
+uniform float u_ior;
+uniform float u_roughness;
+uniform float u_translucency;
+uniform float u_env_intensity;   // 0 = no environment light
+uniform float u_light_texel_world;  // world size of one light-map texel at the object
+
 // Keep in step with marble::RenderMode.
 const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
           MODE_REFLECTANCE = 5, MODE_ALBEDO = 6, MODE_LIGHT_DEPTH = 7, MODE_THICKNESS = 8,
@@ -52,6 +62,47 @@ float thickness_at(vec3 p) {
   return max(light_distance_of(p) - entered, 0.0);
 }
 
+#include "marble_shading.glsl"
+
+// The `marble` mode: linear HDR radiance. Light intensity 1 is scaled by PI so a white
+// Lambertian surface facing the light reflects 1.0, as in the paper's modes.
+vec3 marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, vec3 albedo) {
+  float NoL = dot(N, L);
+  float NoV = max(dot(N, V), 1e-4);
+  vec3 H = normalize(V + L);
+  float a = max(u_roughness * u_roughness, 0.002);
+  vec3 F0 = f0_from_ior(u_ior);
+  vec3 E = u_light_radiance * PI;
+  float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
+
+  float nl = max(NoL, 0.0);
+  vec3 F = fresnel_schlick(F0, dot(H, V));
+  vec3 specular = ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F;
+  // Energy split: light that is reflected at the surface, on the way in or out, does not
+  // enter the stone (Shirley et al. 1997's coupled diffuse, in Schlick form).
+  vec3 into = (1.0 - fresnel_schlick(F0, nl)) * (1.0 - fresnel_schlick(F0, NoV));
+  vec3 diffuse = albedo / PI * into;
+  vec3 direct = E * nl * visible * (diffuse + specular);
+
+  // Transmission: light that entered where the light's map says and crossed s millimetres of
+  // stone to leave here, attenuated per channel by exp(-sigma_tr s) (Jensen et al. 2001's
+  // diffusion decay). An inward offset keeps the surface's own depth sample out (no acne).
+  // It reaches the side facing away from the light; facing the light, the direct term
+  // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
+  float s_mm = thickness_at(P - N * (2.0 * u_light_texel_world)) * u_mm_per_unit;
+  float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
+  vec3 transmitted = E * albedo / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
+                     (1.0 - fresnel_schlick(F0, NoV));
+
+  vec3 ambient = vec3(0.0);
+  if (u_env_intensity > 0.0) {
+    vec3 R = reflect(-V, N);
+    ambient = u_env_intensity * (albedo * studio_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV)) +
+                                 studio_radiance(R, u_roughness * 1.2) * env_brdf_approx(F0, u_roughness, NoV));
+  }
+  return direct + transmitted + ambient;
+}
+
 void main() {
   if (u_mode == MODE_LIGHT_DEPTH) {
     // The light's distance map itself, near = black, far (nothing hit) = white.
@@ -62,6 +113,7 @@ void main() {
   }
   float depth = texture(u_depth, v_uv).r;
   if (depth >= 1.0) {
+    // For `marble` the post pass paints the background after tone mapping.
     o_color = vec4(u_background, 1.0);
     return;
   }
@@ -73,7 +125,9 @@ void main() {
   vec3 L = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - P);
 
   vec3 c;
-  if (u_mode == MODE_PAPER || u_mode == MODE_MARBLE) {
+  if (u_mode == MODE_MARBLE) {
+    c = marble_radiance(P, N, V, L, albedo);
+  } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;
     if (u_reflectance_first == 0) {
       // Paper §4: subsurface first, its result is the Schlick input colour.

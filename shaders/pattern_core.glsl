@@ -18,6 +18,8 @@
 //                   Perlin's improved gradient noise (2002) mapped to [0,1].
 //   turbulence    : sum over size = turbSize, size /= 2 while size >= 1 of
 //                   smooth(q / size) * size, divided by 2 * turbSize  -> [0,1)
+//                   (q / size computed as q * (1 / size), the reciprocal doubling per octave:
+//                   exact for power-of-two sizes, and a division per point saved)
 //                   (Lode's 128 * sum / turbSize is this times 256).
 //   sine pattern  : |sin(pi * (x*xPeriod/W + y*yPeriod/H + turbPower * turbulence))|
 //                   (the paper's turbPower * turbulence / 256 with turbulence in [0,256)).
@@ -69,22 +71,27 @@ float pat_unit(uint h) { return float(h >> 8u) * (1.0f / 16777216.0f); }
 // i mod period for integer-valued floats, exact (the correction steps absorb a division
 // that rounds the quotient across an integer).
 float pat_wrap(float i, float period) {
+  if (i >= 0.0f && i < period) return i;  // the common case, without the division
   float w = i - period * floor(i / period);
   if (w >= period) w -= period;
   if (w < 0.0f) w += period;
   return w;
 }
 
-// Lattice period (cells) of the octave of size `size` texels in a texture of `res` texels.
-float pat_octave_period(float res, float size) { return max(1.0f, floor(res / size + 0.5f)); }
+// Lattice period (cells) of the octave whose cells are 1/inv texels, in a texture of `res` texels.
+float pat_octave_period(float res, float inv) { return max(1.0f, floor(res * inv + 0.5f)); }
 
 float pat_lerp(float a, float b, float t) { return a + (b - a) * t; }
 
-// Hash of the (y, z) part of a lattice point; the x part is added last so a row of points
-// (fixed y, z) can reuse it.
-uint pat_hash_yz(float y, float z, uint seedHash) { return pat_hash(uint(y) + pat_hash(uint(z) + seedHash)); }
-uint pat_hash_y(float y, uint seedHash) { return pat_hash(uint(y) + seedHash); }
-uint pat_hash_x(float x, uint hyz) { return pat_hash(uint(x) + hyz); }
+// A lattice point's hash: lowbias32 of x*K1 + y*K2 + z*K3 + hash(seed) (odd constants: a
+// bijection in each coordinate), one hash per corner. The (y, z) part is a separate function so
+// a row of points (fixed y, z) computes it once.
+uint pat_hash_yz(float y, float z, uint seedHash) { return uint(y) * 0xd8163841u + uint(z) * 0xcb1ab31fu + seedHash; }
+uint pat_hash_y(float y, uint seedHash) { return uint(y) * 0xd8163841u + seedHash; }
+uint pat_hash_x(float x, uint hyz) { return pat_hash(uint(x) * 0x8da6b343u + hyz); }
+
+// The lattice index after w (already wrapped), wrapped.
+float pat_next(float w, float period) { return w + 1.0f >= period ? 0.0f : w + 1.0f; }
 
 // White noise at integer lattice point (wrapped with `period`), 2D and 3D.
 float pat_white2(vec2 cell, float period, uint seedHash) {
@@ -112,24 +119,26 @@ float pat_value3_column(float x, uint h00, uint h10, uint h01, uint h11, float f
 float pat_value2(vec2 p, float period, uint seedHash) {
   vec2 i = floor(p);
   vec2 f = p - i;
-  uint h0 = pat_hash_y(pat_wrap(i.y, period), seedHash);
-  uint h1 = pat_hash_y(pat_wrap(i.y + 1.0f, period), seedHash);
-  return pat_lerp(pat_value2_column(pat_wrap(i.x, period), h0, h1, f.y),
-                  pat_value2_column(pat_wrap(i.x + 1.0f, period), h0, h1, f.y), f.x);
+  float x0 = pat_wrap(i.x, period);
+  float y0 = pat_wrap(i.y, period);
+  uint h0 = pat_hash_y(y0, seedHash);
+  uint h1 = pat_hash_y(pat_next(y0, period), seedHash);
+  return pat_lerp(pat_value2_column(x0, h0, h1, f.y), pat_value2_column(pat_next(x0, period), h0, h1, f.y), f.x);
 }
 float pat_value3(vec3 p, float period, uint seedHash) {
   vec3 i = floor(p);
   vec3 f = p - i;
   float y0 = pat_wrap(i.y, period);
-  float y1 = pat_wrap(i.y + 1.0f, period);
+  float y1 = pat_next(y0, period);
   float z0 = pat_wrap(i.z, period);
-  float z1 = pat_wrap(i.z + 1.0f, period);
+  float z1 = pat_next(z0, period);
   uint h00 = pat_hash_yz(y0, z0, seedHash);
   uint h10 = pat_hash_yz(y1, z0, seedHash);
   uint h01 = pat_hash_yz(y0, z1, seedHash);
   uint h11 = pat_hash_yz(y1, z1, seedHash);
-  return pat_lerp(pat_value3_column(pat_wrap(i.x, period), h00, h10, h01, h11, f.y, f.z),
-                  pat_value3_column(pat_wrap(i.x + 1.0f, period), h00, h10, h01, h11, f.y, f.z), f.x);
+  float x0 = pat_wrap(i.x, period);
+  return pat_lerp(pat_value3_column(x0, h00, h10, h01, h11, f.y, f.z),
+                  pat_value3_column(pat_next(x0, period), h00, h10, h01, h11, f.y, f.z), f.x);
 }
 
 // ---- smooth noise: Perlin's improved noise (Perlin 2002) ----------------------------------
@@ -138,11 +147,18 @@ float pat_value3(vec3 p, float period, uint seedHash) {
 
 float pat_fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
 
+// Perlin's grad(): u = k < 8 ? x : y; v = k < 4 ? y : (k == 12 || k == 14 ? x : z); signs from
+// bits 0 and 1. Written with 0/1 weights instead of branches (hash bits are unpredictable, so
+// branches mispredict on the CPU); a product with 0 or 1 and a sum with 0 are exact, so the
+// value is the same.
 float pat_grad(uint h, float x, float y, float z) {
   uint k = (h >> 4u) & 15u;
-  float u = k < 8u ? x : y;
-  float v = k < 4u ? y : ((k == 12u || k == 14u) ? x : z);
-  return ((k & 1u) == 0u ? u : -u) + ((k & 2u) == 0u ? v : -v);
+  float a = float(k < 8u);
+  float b = float(k < 4u);
+  float c = float(k == 12u || k == 14u);
+  float u = x * a + y * (1.0f - a);
+  float v = y * b + (x * c + z * (1.0f - c)) * (1.0f - b);
+  return u * (1.0f - float(k & 1u) * 2.0f) + v * (1.0f - float(k & 2u));
 }
 
 // In [-1,1]; the 2D version is the z = 0 slice of the 3D one.
@@ -150,9 +166,10 @@ float pat_perlin2_signed(vec2 p, float period, uint seedHash) {
   vec2 i = floor(p);
   vec2 f = p - i;
   float x0 = pat_wrap(i.x, period);
-  float x1 = pat_wrap(i.x + 1.0f, period);
-  uint h0 = pat_hash_y(pat_wrap(i.y, period), seedHash);
-  uint h1 = pat_hash_y(pat_wrap(i.y + 1.0f, period), seedHash);
+  float x1 = pat_next(x0, period);
+  float y0 = pat_wrap(i.y, period);
+  uint h0 = pat_hash_y(y0, seedHash);
+  uint h1 = pat_hash_y(pat_next(y0, period), seedHash);
   float u = pat_fade(f.x);
   float v = pat_fade(f.y);
   float a = pat_lerp(pat_grad(pat_hash_x(x0, h0), f.x, f.y, 0.0f), pat_grad(pat_hash_x(x1, h0), f.x - 1.0f, f.y, 0.0f), u);
@@ -164,11 +181,11 @@ float pat_perlin3_signed(vec3 p, float period, uint seedHash) {
   vec3 i = floor(p);
   vec3 f = p - i;
   float x0 = pat_wrap(i.x, period);
-  float x1 = pat_wrap(i.x + 1.0f, period);
+  float x1 = pat_next(x0, period);
   float y0 = pat_wrap(i.y, period);
-  float y1 = pat_wrap(i.y + 1.0f, period);
+  float y1 = pat_next(y0, period);
   float z0 = pat_wrap(i.z, period);
-  float z1 = pat_wrap(i.z + 1.0f, period);
+  float z1 = pat_next(z0, period);
   uint h00 = pat_hash_yz(y0, z0, seedHash);
   uint h10 = pat_hash_yz(y1, z0, seedHash);
   uint h01 = pat_hash_yz(y0, z1, seedHash);
@@ -202,15 +219,15 @@ float pat_smooth3(vec3 p, float period, uint seedHash, int basis) {
 float pat_turbulence2(PatParams P, vec2 q) {
   uint sh = pat_hash(P.seed);
   float sum = 0.0f;
-  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f)
-    sum += pat_smooth2(q / size, pat_octave_period(P.resolution, size), sh, P.basis) * size;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f)
+    sum += pat_smooth2(q * inv, pat_octave_period(P.resolution, inv), sh, P.basis) * size;
   return sum / (2.0f * P.turbSize);
 }
 float pat_turbulence3(PatParams P, vec3 q) {
   uint sh = pat_hash(P.seed);
   float sum = 0.0f;
-  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f)
-    sum += pat_smooth3(q / size, pat_octave_period(P.resolution, size), sh, P.basis) * size;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f)
+    sum += pat_smooth3(q * inv, pat_octave_period(P.resolution, inv), sh, P.basis) * size;
   return sum / (2.0f * P.turbSize);
 }
 
@@ -268,12 +285,14 @@ float pat_value_at(PatParams P, vec3 objectPos, vec3 objectNormal) {
 // v = 0 is the heart of a vein, v = 1 the stone between veins. Sharpness s applies v^(1/s):
 // s > 1 thins the veins, s < 1 widens them. The ramp is vein -> base (the paper), blended
 // with vein -> vein2 -> base (vein2 at the middle) by vein2Amount.
+// a*(1-t) + b*t: exactly a at t = 0 and exactly b at t = 1.
+vec3 pat_mix3(vec3 a, vec3 b, float t) { return a * (1.0f - t) + b * t; }
+
 vec3 pat_color(PatParams P, float v) {
   float t = pow(min(max(v, 0.0f), 1.0f), 1.0f / P.sharpness);
-  vec3 two = P.veinColor + (P.baseColor - P.veinColor) * t;
-  vec3 three = t < 0.5f ? P.veinColor + (P.vein2Color - P.veinColor) * (2.0f * t)
-                        : P.vein2Color + (P.baseColor - P.vein2Color) * (2.0f * t - 1.0f);
-  return two + (three - two) * P.vein2Amount;
+  vec3 two = pat_mix3(P.veinColor, P.baseColor, t);
+  vec3 three = t < 0.5f ? pat_mix3(P.veinColor, P.vein2Color, 2.0f * t) : pat_mix3(P.vein2Color, P.baseColor, 2.0f * t - 1.0f);
+  return pat_mix3(two, three, P.vein2Amount);
 }
 
 vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {

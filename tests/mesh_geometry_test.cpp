@@ -43,7 +43,7 @@ TEST(MeshNormals, AreaWeighted) {
   m.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 1, 0}, {0, 0, -1}};
   m.indices = {0, 1, 2, 0, 3, 4};
   computeSmoothNormals(m);
-  glm::vec3 expected = glm::normalize(glm::vec3(1, 0, 100));  // cross products: (0,0,100) and (1,0,0)
+  glm::vec3 expected = glm::normalize(glm::vec3(-1, 0, 100));  // cross products: (0,0,100) and (-1,0,0)
   EXPECT_NEAR(glm::dot(m.normals[0], expected), 1.0f, 1e-6f);
 }
 

@@ -52,10 +52,10 @@ TEST(MeshObj, AllCornerForms) {
                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
                      "vt 0 0\nvt 1 0\nvt 0 1\n"
                      "vn 0 0 1\n"
-                     "f 1/1/1 2/2/1 3/3/1\n"   // v/vt/vn
-                     "f 1/1 3/3 4/1\n"         // v/vt (no normal: normals dropped for all)
-                     "f 1//1 4//1 2//1\n"      // v//vn (no vt: texcoords dropped for all)
-                     "f 2 4 3\n");             // v
+                     "f 1/1/1 3/3/1 2/2/1\n"   // v/vt/vn
+                     "f 1/1 2/2 4/1\n"         // v/vt (no normal: normals dropped for all)
+                     "f 1//1 4//1 3//1\n"      // v//vn (no vt: texcoords dropped for all)
+                     "f 2 3 4\n");             // v
   Mesh m = loadMesh(p);
   meshtest::expectWellFormed(m);
   EXPECT_EQ(m.triangleCount(), 4u);
@@ -72,9 +72,9 @@ TEST(MeshObj, NegativeIndices) {
                      "v 0 0 0\nv 0 1 0\nv 1 0 0\n"
                      "f -3 -2 -1\n"  // 1 2 3
                      "v 0 0 1\n"
-                     "f -4 -1 -2\n"  // 1 4 2
-                     "f -4 -3 -1\n"  // 1 3 4
-                     "f -3 -2 -1\n"  // 2 3 4
+                     "f -4 -1 -3\n"  // 1 4 2
+                     "f -4 -2 -1\n"  // 1 3 4
+                     "f -2 -3 -1\n"  // 3 2 4
                      "f -1/-1 -2/-1 -3/-1\n"
                      "vt 0 0\n");
   // The last face uses vt -1 before any vt exists: an error on that line.
@@ -84,13 +84,14 @@ TEST(MeshObj, NegativeIndices) {
                      "v 0 0 0\nv 0 1 0\nv 1 0 0\n"
                      "f -3 -2 -1\n"
                      "v 0 0 1\n"
-                     "f -4 -1 -2\n"
-                     "f -4 -3 -1\n"
-                     "f -3 -2 -1\n");
+                     "f -4 -1 -3\n"
+                     "f -4 -2 -1\n"
+                     "f -2 -3 -1\n");
   Mesh m = loadMesh(q);
   ASSERT_EQ(m.indices.size(), 12u);
   EXPECT_EQ(std::vector<uint32_t>(m.indices.begin(), m.indices.end()),
-            (std::vector<uint32_t>{0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 2, 3}));
+            (std::vector<uint32_t>{0, 1, 2, 0, 3, 1, 0, 2, 3, 2, 1, 3}));
+  EXPECT_GT(signedVolume(m), 0.0);
   EXPECT_TRUE(meshtest::closedAndConsistent(m));
 }
 

@@ -96,6 +96,8 @@ TEST_F(RendererFixture, SwappingTheOrderChangesTheImage) {
   useMesh("sculpture");
   Scene s = smallScene(RenderMode::Paper);
   s.material.k_schlick = 0.6f;
+  s.material.schlick_cos = SchlickCosine::HdotN;  // the paper's form: a strong reflectance term
+  s.light.position = {-2, 1, -3};                  // partly behind: subsurface attenuation matters
   s.material.order = ShadingOrder::SubsurfaceFirst;
   const ImageRGBA8 a = renderImage(renderer, s);
   s.material.order = ShadingOrder::ReflectanceFirst;

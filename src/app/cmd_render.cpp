@@ -35,10 +35,15 @@ int runRenderCommand(const RenderOptions& o) {
       throw EnvironmentError(std::string("OpenGL error ") + hex + " while rendering");
     }
     writePng(o.output, image);
+    if (!o.hdr.empty()) {
+      if (scene.render.mode == RenderMode::Floor) throw InputError("--hdr", "", "the floor mode has no HDR image");
+      writeExr(o.hdr, renderer.readHdr());
+      std::cout << "wrote " << o.hdr << " (linear, not tone-mapped)\n";
+    }
     if (o.timings) {
       const PassTimes t = renderer.passTimes(true);
-      std::printf("pass          GPU ms\nlight-depth   %8.2f\ngeometry      %8.2f\nlighting      %8.2f\n",
-                  t.lightDepthMs, t.geometryMs, t.lightingMs);
+      std::printf("pass          GPU ms\nlight-depth   %8.2f\ngeometry      %8.2f\nlighting      %8.2f\npost          %8.2f\n",
+                  t.lightDepthMs, t.geometryMs, t.lightingMs, t.postMs);
       if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "

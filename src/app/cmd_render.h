@@ -8,6 +8,7 @@ namespace marble {
 struct RenderOptions {
   SceneOptions scene;
   std::string output;
+  std::string hdr;  // optional linear EXR
   bool timings = false;
 };
 

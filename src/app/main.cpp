@@ -3,6 +3,7 @@
 
 #include <iostream>
 
+#include "cmd_bench.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
 #include "cmd_texture.h"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   auto* renderCmd = app.add_subcommand("render", "Render a scene or mesh headless (no display needed) to a PNG");
   addSceneOptions(*renderCmd, render.scene, true);
   renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically)")->required();
+  renderCmd->add_option("--hdr", render.hdr, "Also write the linear, not tone-mapped image as OpenEXR");
   renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
 
   ViewOptions view;
@@ -37,6 +39,10 @@ int main(int argc, char** argv) {
 
   app.add_subcommand("presets", "List the built-in material presets");
 
+  BenchOptions bench;
+  auto* benchCmd = app.add_subcommand("bench", "Measure frame and pass times and memory while the camera, light or material changes");
+  addBenchOptions(*benchCmd, bench);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -52,5 +58,6 @@ int main(int argc, char** argv) {
   if (viewCmd->parsed()) return runViewCommand(view);
   if (textureCmd->parsed()) return runTextureCommand(texture);
   if (app.got_subcommand("presets")) return runPresetsCommand();
+  if (benchCmd->parsed()) return runBenchCommand(bench);
   return 2;
 }

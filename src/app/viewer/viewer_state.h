@@ -1,38 +1,76 @@
 #pragma once
 // Everything the viewer shows and edits, apart from GL: the scene, orbit controls, what
-// the panel reports, and requests from the panel to the frame loop.
+// the panel reports, and requests from the panel to the frame loop (which owns GL and does
+// the work, so the panel never touches the renderer).
 #include <deque>
 #include <string>
 
 #include "marble/render/renderer.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/scene.h"
+#include "marble/scene/undo_stack.h"
 
 namespace marble {
+
+enum class Turntable { Off, Object, Light };
 
 struct ViewerState {
   Scene scene;
   Orbit camera;
   Orbit light;
+  Orbit initialCamera;            // "reset view" goes back here
+  Light initialLight;             // the light section's reset
+  Orbit initialLightOrbit;
+  float meshRadius = 1.7320508f;  // bounding sphere about the origin, for framing (F)
   std::string meshLabel;          // what is loaded, for the panel
   size_t triangles = 0;
-  std::string meshPathInput;      // the panel's path box
+
+  // Path boxes.
+  std::string meshPathInput;
+  std::string materialPathInput = "my-marble.json";
+  std::string scenePathInput = "scene.json";
+
   std::string presetName;         // the preset the material started from
+  Material presetMaterial;        // what "reset" returns a section to
+  UndoStack undo;
+
   std::string status;             // last message (errors in red)
   bool statusIsError = false;
+  std::string lastScreenshot;     // absolute path of the last screenshot saved
+
   std::deque<float> frameMs;      // recent frame times for the graph
   PassTimes passTimes;
+
+  Turntable turntable = Turntable::Off;
+  float turntableDegPerSec = 15.0f;
+  float turntableAngle = 0.0f;    // degrees; transient, not part of the scene or undo
+
+  bool vsync = true;
+  bool showPanel = true;
+  bool showHelp = false;
+  bool devMode = false;
+  float panelWidth = 0.0f;        // in window coordinates, 0 when hidden; the 3D view is right of it
+  float contentScale = 1.0f;      // HiDPI: the monitor's content scale, applied to the UI
+  bool contentScaleChanged = false;
+
+  // Requests from the panel/keys to the frame loop.
   bool requestMeshLoad = false;
   bool requestScreenshot = false;
   bool requestShaderReload = false;
-  bool showHelp = false;
-  bool devMode = false;
+  bool requestFrame = false;
+  bool requestUndo = false, requestRedo = false;
+  bool requestSaveMaterial = false, requestLoadMaterial = false;
+  bool requestSaveScene = false, requestLoadScene = false;
 
   void setError(const std::string& message) { status = message; statusIsError = true; }
   void setStatus(const std::string& message) { status = message; statusIsError = false; }
 };
 
-// Draws the ImGui panel; edits `state` in place.
+// The undoable part of the state, and putting one back.
+EditState currentEdit(const ViewerState& s);
+void applyEdit(ViewerState& s, const EditState& e);
+
+// Draws the ImGui panel (docked at the left, full height); edits `state` in place.
 void drawPanel(ViewerState& state);
 void drawHelpOverlay(ViewerState& state);
 

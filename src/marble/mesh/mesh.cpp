@@ -187,7 +187,7 @@ void normalizeMesh(Mesh& mesh, const std::string& source) {
   glm::dvec3 extent = glm::dvec3(hi) - glm::dvec3(lo);
   double largest = std::max({extent.x, extent.y, extent.z});
   double scale = 2.0 / largest;
-  if (!(largest > 0.0) || !std::isfinite(scale) || scale > 1e30)
+  if (!(largest > 0.0) || !std::isfinite(scale))
     throw InputError(source, "bounds", "all vertices are at the same point (zero extent); cannot normalize");
   for (glm::vec3& p : mesh.positions) p = glm::vec3((glm::dvec3(p) - centre) * scale);
 }

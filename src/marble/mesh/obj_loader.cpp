@@ -123,7 +123,7 @@ private:
   }
 
   // One index of a face corner; returns it 0-based.
-  uint32_t index(size_t count, PendingMax& pending, const char* what) {
+  uint32_t index(size_t count, PendingMax& pending, const char* what, const char* plural) {
     bool negative = false;
     if (p_ < end_ && (*p_ == '-' || *p_ == '+')) {
       negative = *p_ == '-';
@@ -140,7 +140,7 @@ private:
     if (negative) {
       if (value > count)
         fail(std::string("relative ") + what + " index -" + std::to_string(value) + " is out of range (only " +
-             std::to_string(count) + " " + what + "s defined so far)");
+             std::to_string(count) + " " + plural + " defined so far)");
       return static_cast<uint32_t>(count - value);
     }
     if (value > pending.index) {
@@ -155,13 +155,13 @@ private:
     for (;;) {
       while (p_ < end_ && isBlank(*p_)) ++p_;
       if (p_ >= end_ || *p_ == '\n' || *p_ == '#') break;
-      Corner c{index(positions_.size(), maxV_, "vertex"), kNone, kNone};
+      Corner c{index(positions_.size(), maxV_, "vertex", "vertices"), kNone, kNone};
       if (p_ < end_ && *p_ == '/') {
         ++p_;
-        if (p_ < end_ && *p_ != '/') c.vt = index(texcoords_.size(), maxVt_, "texture coordinate");
+        if (p_ < end_ && *p_ != '/') c.vt = index(texcoords_.size(), maxVt_, "texture coordinate", "texture coordinates");
         if (p_ < end_ && *p_ == '/') {
           ++p_;
-          c.vn = index(normals_.size(), maxVn_, "normal");
+          c.vn = index(normals_.size(), maxVn_, "normal", "normals");
         }
       }
       if (p_ < end_ && !isBlank(*p_) && *p_ != '\n' && *p_ != '#') fail("bad face vertex near '" + tokenHere() + "'");
@@ -184,18 +184,18 @@ private:
     }
   }
 
-  void checkPending(const PendingMax& pending, size_t count, const char* what) const {
+  void checkPending(const PendingMax& pending, size_t count, const char* what, const char* plural) const {
     if (pending.index > count)
       failAt(pending.line, std::string(what) + " index " + std::to_string(pending.index) + " is out of range (the file has " +
-                               withThousands(count) + " " + what + "s)");
+                               withThousands(count) + " " + plural + ")");
   }
 
   Mesh build() {
-    checkPending(maxV_, positions_.size(), "vertex");
+    checkPending(maxV_, positions_.size(), "vertex", "vertices");
     const bool useVt = anyVt_ && allVt_;
     const bool useVn = anyVn_ && allVn_;
-    if (useVt) checkPending(maxVt_, texcoords_.size(), "texture coordinate");
-    if (useVn) checkPending(maxVn_, normals_.size(), "normal");
+    if (useVt) checkPending(maxVt_, texcoords_.size(), "texture coordinate", "texture coordinates");
+    if (useVn) checkPending(maxVn_, normals_.size(), "normal", "normals");
 
     Mesh mesh;
     if (!useVt && !useVn) {

@@ -103,22 +103,25 @@ glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectN
 namespace {
 
 template <typename ColumnFn>
-void accumulateOctave(const float* xs, int count, float size, float period, float* acc, ColumnFn column) {
+void accumulateOctave(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column) {
   using patglsl::pat_lerp;
   using patglsl::pat_wrap;
-  float cell = 0.0f, c0 = 0.0f, c1 = 0.0f;
+  float cell = 0.0f, c0 = 0.0f, c1 = 0.0f, w0 = 0.0f, w1 = 0.0f;
   bool have = false;
   for (int i = 0; i < count; ++i) {
-    const float px = xs[i] / size;
+    const float px = xs[i] * inv;
     const float ix = patglsl::floor(px);
     const float fx = px - ix;
     if (!have || ix != cell) {
       if (have && ix == cell + 1.0f) {
         c0 = c1;
+        w0 = w1;
       } else {
-        c0 = column(pat_wrap(ix, period));
+        w0 = pat_wrap(ix, period);
+        c0 = column(w0);
       }
-      c1 = column(pat_wrap(ix + 1.0f, period));
+      w1 = patglsl::pat_next(w0, period);
+      c1 = column(w1);
       cell = ix;
       have = true;
     }
@@ -154,14 +157,14 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
   }
   const uint32_t sh = patglsl::pat_hash(P.seed);
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
-  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f) {
-    const float period = patglsl::pat_octave_period(P.resolution, size);
-    const float py = y / size;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f) {
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    const float py = y * inv;
     const float iy = patglsl::floor(py);
     const float fy = py - iy;
     const uint32_t h0 = patglsl::pat_hash_y(patglsl::pat_wrap(iy, period), sh);
-    const uint32_t h1 = patglsl::pat_hash_y(patglsl::pat_wrap(iy + 1.0f, period), sh);
-    accumulateOctave(xs, count, size, period, sum.data(),
+    const uint32_t h1 = patglsl::pat_hash_y(patglsl::pat_next(patglsl::pat_wrap(iy, period), period), sh);
+    accumulateOctave(xs, count, size, inv, period, sum.data(),
                      [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); });
   }
   finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
@@ -182,16 +185,16 @@ void patternRow3(const Material& m, const float* xs, float y, float z, int count
   }
   const uint32_t sh = patglsl::pat_hash(P.seed);
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
-  for (float size = P.turbSize; size >= 1.0f; size *= 0.5f) {
-    const float period = patglsl::pat_octave_period(P.resolution, size);
-    const float py = y / size, pz = z / size;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f) {
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    const float py = y * inv, pz = z * inv;
     const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
     const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_wrap(iy + 1.0f, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_wrap(iz + 1.0f, period);
+    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
     const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
     const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    accumulateOctave(xs, count, size, period, sum.data(),
+    accumulateOctave(xs, count, size, inv, period, sum.data(),
                      [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
   }
   // pat_pattern3's ramp is ((x*px + y*py) + z*pz) / W: pass the (x*px + y*py) part per point.

@@ -13,6 +13,7 @@ public:
   LightDepthPass(const ShaderLibrary& shaders, int size = 1024);
   void run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light);
   GLuint distanceTexture() const { return distance_.id(); }
+  GLuint depthTexture() const { return depth_.id(); }  // compare mode on, for sampler2DShadow
   int size() const { return size_; }
   size_t bytes() const { return static_cast<size_t>(size_) * size_ * 8; }
   PassTimer& timer() { return timer_; }

@@ -6,17 +6,34 @@ LightingPass::LightingPass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
+void LightingPass::resize(int width, int height) {
+  if (width == width_ && height == height_ && fbo_) return;
+  width_ = width;
+  height_ = height;
+  hdr_ = gl::Texture::create(GL_TEXTURE_2D);
+  fbo_ = gl::Framebuffer::create();
+  glTextureStorage2D(hdr_.id(), 1, GL_RGBA16F, width, height);
+  glTextureParameteri(hdr_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(hdr_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+}
+
+// sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).
+static glm::vec3 transportCoefficient(const Material& m) {
+  return glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
+}
+
 void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
-                       const Light& light, const Material& m, const RenderSettings& settings, GLuint targetFbo,
-                       int width, int height) {
+                       const Light& light, const Material& m, const Scene& scene, float lightTexelWorld) {
+  const RenderSettings& settings = scene.render;
   timer_.begin();
-  glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
-  glViewport(0, 0, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
-  const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance};
-  glBindTextures(0, 4, textures);
+  const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
+  glBindTextures(0, 5, textures);
   const auto& p = program_;
   p.set("u_inv_view_proj", camera.invViewProj);
   p.set("u_camera_pos", camera.position);
@@ -37,6 +54,13 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_shininess", m.shininess);
   p.set("u_oren_nayar_sigma", m.oren_nayar_sigma);
   p.set("u_mode", static_cast<int>(settings.mode));
+  p.set("u_mm_per_unit", scene.mm_per_unit);
+  p.set("u_sigma_tr_mm", transportCoefficient(m));
+  p.set("u_ior", m.ior);
+  p.set("u_roughness", m.roughness);
+  p.set("u_translucency", m.translucency);
+  p.set("u_env_intensity", settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f);
+  p.set("u_light_texel_world", lightTexelWorld);
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

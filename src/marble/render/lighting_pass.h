@@ -1,6 +1,7 @@
 #pragma once
 // Pass 3: full screen. Reads the G-buffer and the light's distance map; writes the render
-// mode's picture into the target framebuffer (the window's, or an offscreen one).
+// mode's picture, linear and unclamped, into its own RGBA16F target (read by PostPass and by
+// `--hdr`).
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/view_setup.h"
@@ -9,18 +10,25 @@
 namespace marble {
 
 struct LightingInputs {
-  GLuint albedo, normal, depth, lightDistance;
+  GLuint albedo, normal, depth, lightDistance, lightDepth;
 };
 
 class LightingPass {
 public:
   explicit LightingPass(const ShaderLibrary& shaders);
+  void resize(int width, int height);
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           const Material& material, const RenderSettings& settings, GLuint targetFbo, int width, int height);
+           const Material& material, const Scene& scene, float lightTexelWorld);
+  GLuint hdrTexture() const { return hdr_.id(); }
+  GLuint fbo() const { return fbo_.id(); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
   PassTimer& timer() { return timer_; }
 
 private:
   gl::Program program_;
+  gl::Texture hdr_;
+  gl::Framebuffer fbo_;
+  int width_ = 0, height_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
 };

@@ -1,14 +1,16 @@
 #include "marble/render/renderer.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace marble {
 
 struct Renderer::Passes {
-  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), floor(s) {}
+  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), post(s), floor(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   LightingPass lighting;
+  PostPass post;
   FloorPass floor;
 };
 
@@ -72,8 +74,13 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastModel_ = model;
   lastMaterial_ = scene.material;
   const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
-                          passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture()};
-  passes_->lighting.run(in, camera, light, scene.light, scene.material, scene.render, targetFbo, width, height);
+                          passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
+                          passes_->lightDepth.depthTexture()};
+  passes_->lighting.resize(width, height);
+  const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
+  passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
+  passes_->post.run(passes_->lighting.hdrTexture(), passes_->geometry.depthTexture(), scene.render, targetFbo, width,
+                    height);
 }
 
 PassTimes Renderer::passTimes(bool wait) {
@@ -81,12 +88,31 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.lightDepthMs = get(passes_->lightDepth.timer());
   times_.geometryMs = get(passes_->geometry.timer());
   times_.lightingMs = get(passes_->lighting.timer());
+  times_.postMs = get(passes_->post.timer());
   times_.floorMs = get(passes_->floor.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
-  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + (mesh_ ? mesh_->bytes() : 0);
+  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() +
+         (mesh_ ? mesh_->bytes() : 0);
+}
+
+ImageRGBF Renderer::readHdr() const {
+  const GLuint fbo = passes_->lighting.fbo();
+  GLint w = 0, h = 0;
+  glGetTextureLevelParameteriv(passes_->lighting.hdrTexture(), 0, GL_TEXTURE_WIDTH, &w);
+  glGetTextureLevelParameteriv(passes_->lighting.hdrTexture(), 0, GL_TEXTURE_HEIGHT, &h);
+  ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
+  std::vector<float> rows(img.pixels.size());
+  glNamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rows.data());
+  const size_t row = static_cast<size_t>(w) * 3;
+  for (int y = 0; y < h; ++y)
+    std::copy_n(rows.begin() + static_cast<ptrdiff_t>((h - 1 - y) * row), row, img.pixels.begin() + static_cast<ptrdiff_t>(y * row));
+  return img;
 }
 
 }  // namespace marble

@@ -13,12 +13,14 @@
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_depth_pass.h"
 #include "marble/render/lighting_pass.h"
+#include "marble/render/post_pass.h"
+#include "marble/core/image.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
 
 struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, floorMs = 0;
+  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, postMs = 0, floorMs = 0;
   bool lightDepthRan = false, geometryRan = false;
 };
 
@@ -33,6 +35,9 @@ public:
 
   // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
+
+  // The last frame's linear HDR image (before tone mapping), top row first. Not for `floor`.
+  ImageRGBF readHdr() const;
 
   // GPU times of the last frame's passes; `wait` blocks until they are known.
   PassTimes passTimes(bool wait = false);

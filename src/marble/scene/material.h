@@ -52,6 +52,14 @@ struct Material {
   // --- comparison models ---
   float shininess = 32.0f;       // "shininess": Phong exponent
   float oren_nayar_sigma = 0.3f; // "oren_nayar_sigma": roughness (radians) of Oren-Nayar
+
+  // --- physically based marble (render mode `marble`, issue 5) ---
+  // Jensen et al. 2001, "A Practical Model for Subsurface Light Transport", Table 1 (marble), per mm.
+  glm::vec3 sigma_a_mm{0.0021f, 0.0041f, 0.0071f};  // "sigma_a_mm": absorption coefficient, 1/mm
+  glm::vec3 sigma_s_mm{2.19f, 2.62f, 3.00f};        // "sigma_s_mm": reduced scattering coefficient, 1/mm
+  float ior = 1.55f;             // "ior": calcite is 1.486-1.658 (F0 about 0.04-0.06)
+  float roughness = 0.12f;       // "roughness": perceptual; GGX alpha = roughness^2. Polished 0.05-0.15, honed 0.4-0.6
+  float translucency = 1.0f;     // "translucency": scales light transmitted through thin parts (1 = physical)
 };
 
 }  // namespace marble

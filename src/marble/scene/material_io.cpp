@@ -87,7 +87,7 @@ public:
     }
     if (v_.is_number_unsigned()) {
       const auto u = v_.get<unsigned long long>();
-      if (u > static_cast<unsigned long long>(hi)) fail(want + v_.dump());
+      if (u > static_cast<unsigned long long>(hi) || static_cast<long long>(u) < lo) fail(want + v_.dump());
       return static_cast<long long>(u);
     }
     const long long i = v_.get<long long>();

@@ -37,16 +37,24 @@ const std::vector<std::string>& renderModeNames();  // in enum order
 RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_argument
 const std::string& renderModeName(RenderMode mode);
 
+enum class Environment { Studio, None };
+
 struct RenderSettings {
   int width = 800;
   int height = 800;
   glm::vec3 background{0.19f, 0.11f, 0.03f};  // the paper's dark brown, as displayed
   RenderMode mode = RenderMode::Marble;
+  float exposure = 0.0f;                      // stops, for the `marble` mode's tone mapping
+  Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
+  float environment_intensity = 0.6f;
 };
 
 struct Scene {
   std::string mesh = "builtin:sculpture";  // a path (relative to the scene file) or builtin:NAME
   UpAxis up = UpAxis::Y;
+  // Real size: millimetres per scene unit. The normalized mesh is 2 units across, so the
+  // default 100 makes it a 20 cm statuette. Scattering lengths are in millimetres.
+  float mm_per_unit = 100.0f;
   Camera camera;
   Light light;
   Material material;

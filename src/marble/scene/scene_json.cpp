@@ -135,6 +135,14 @@ void readRender(const json& j, const std::string& file, RenderSettings& rs, std:
   r.integer("width", rs.width, 1, kMaxRenderSize);
   r.integer("height", rs.height, 1, kMaxRenderSize);
   r.vec3("background", rs.background, 0.0f, 1.0f);
+  r.number("exposure", rs.exposure, -10.0f, 10.0f);
+  std::string env;
+  if (r.string("environment", env)) {
+    if (env == "studio") rs.environment = Environment::Studio;
+    else if (env == "none") rs.environment = Environment::None;
+    else r.fail("environment", "expected \"studio\" or \"none\", got \"" + env + "\"");
+  }
+  r.number("environment_intensity", rs.environment_intensity, 0.0f, 100.0f);
   std::string mode;
   if (r.string("mode", mode)) {
     try {
@@ -195,6 +203,7 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
       r.fail("up", "expected one of \"y\", \"z\", \"x\", \"-y\", \"-z\", \"-x\", got \"" + up + "\"");
     }
   }
+  r.number("mm_per_unit", scene.mm_per_unit, 1e-3f, 1e6f);
   if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
   if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);
   if (const json* m = r.object("material")) applyMaterialJson(scene.material, *m, file, "material.", warnings);

@@ -1,0 +1,94 @@
+// Physically based marble (render mode `marble`): microfacet specular, diffuse with an
+// energy split, light transmitted through thin parts with measured extinction, PCF shadows
+// from the light's distance map, and a procedural studio environment. Linear HDR out.
+// Needs from the includer: PI, thickness_at(), u_light_shadow (the light's depth, compare mode).
+
+// GGX / Trowbridge-Reitz normal distribution (Walter et al. 2007, eq. 33). a = roughness^2.
+float ggx_distribution(float NoH, float a) {
+  float a2 = a * a;
+  float d = NoH * NoH * (a2 - 1.0) + 1.0;
+  return a2 / (PI * d * d);
+}
+
+// Height-correlated Smith visibility V = G / (4 NoL NoV) (Heitz 2014, eq. 99; Filament 4.4.2).
+float smith_ggx_visibility(float NoV, float NoL, float a) {
+  float a2 = a * a;
+  float gv = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+  float gl = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
+  return 0.5 / max(gv + gl, 1e-6);
+}
+
+// Fresnel-Schlick with cos = H.V (Schlick 1994).
+vec3 fresnel_schlick(vec3 F0, float c) {
+  return F0 + (1.0 - F0) * pow(1.0 - clamp(c, 0.0, 1.0), 5.0);
+}
+
+// F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.
+vec3 f0_from_ior(float ior) {
+  float r = (ior - 1.0) / (ior + 1.0);
+  return vec3(r * r);
+}
+
+// Split-sum environment BRDF, analytic fit (Karis 2014, "Physically Based Shading on Mobile").
+vec3 env_brdf_approx(vec3 F0, float roughness, float NoV) {
+  const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+  const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+  vec4 r = roughness * c0 + c1;
+  float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+  vec2 AB = vec2(-1.04, 1.04) * a004 + r.zw;
+  return F0 * AB.x + AB.y;
+}
+
+// Percentage-closer filtering (Reeves et al. 1987) with the hardware's depth comparison:
+// each of the 4 taps is itself a bilinear 2x2 comparison, so 16 texels are weighed in all.
+// The point is first pushed out along its normal, against self-shadow acne.
+float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
+  vec4 clip = light_view_proj * vec4(P + N * (2.0 * texel_world), 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;
+  vec3 uvz = ndc * 0.5 + 0.5;
+  uvz.z -= 1e-4;
+  vec2 texel = 1.0 / vec2(textureSize(u_light_shadow, 0));
+  float lit = texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, -0.5) * texel, uvz.z)) +
+              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, -0.5) * texel, uvz.z)) +
+              texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, 0.5) * texel, uvz.z)) +
+              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, 0.5) * texel, uvz.z));
+  return lit * 0.25;
+}
+
+// --- procedural studio environment (no file needed) ---
+// A dark floor, grey walls, a bright ceiling, a large softbox above-front and two strip
+// lights behind-left and behind-right, so polished stone shows highlights from every side.
+struct Softbox { vec3 axis; float radius; float radiance; };
+const int SOFTBOXES = 3;
+Softbox softbox(int i) {
+  if (i == 0) return Softbox(normalize(vec3(0.0, 0.85, 0.55)), 0.45, 3.0);
+  if (i == 1) return Softbox(normalize(vec3(-0.9, 0.25, -0.45)), 0.18, 4.0);
+  return Softbox(normalize(vec3(0.9, 0.25, -0.45)), 0.18, 4.0);
+}
+vec3 studio_background(vec3 d) {
+  return mix(vec3(0.02), vec3(0.12, 0.12, 0.13), smoothstep(-0.4, 0.7, d.y));
+}
+// Radiance seen along d, blurred over `blur` radians (a stand-in for prefiltering by
+// roughness). Widening a box keeps its power: radiance scales by (r / (r + blur))^2.
+vec3 studio_radiance(vec3 d, float blur) {
+  vec3 c = studio_background(d);
+  for (int i = 0; i < SOFTBOXES; ++i) {
+    Softbox b = softbox(i);
+    float r = b.radius;
+    float k = r / (r + blur);
+    // Compared in cosine space (no acos per pixel): inside the box's cone, fading at its edge.
+    c += b.radiance * k * k * smoothstep(cos(r + 0.02 + blur), cos(max(r - 0.02 - blur, 0.0)), dot(d, b.axis));
+  }
+  return c;
+}
+// Irradiance / PI for a surface with normal n: the gradient's cosine-weighted average plus
+// each softbox as a small source of solid angle pi r^2.
+vec3 studio_diffuse(vec3 n) {
+  vec3 e = mix(vec3(0.02), vec3(0.12, 0.12, 0.13), 0.5 + 0.45 * n.y);
+  for (int i = 0; i < SOFTBOXES; ++i) {
+    Softbox b = softbox(i);
+    e += b.radiance * b.radius * b.radius * max(dot(n, b.axis), 0.0);
+  }
+  return e;
+}

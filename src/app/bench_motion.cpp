@@ -1,0 +1,72 @@
+#include "bench_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "marble/core/error.h"
+#include "marble/scene/orbit.h"
+
+namespace marble {
+
+namespace {
+
+// A few degrees per frame: what an orbiting hand does at 30-60 frames per second, and small
+// enough that the object stays in view over any number of frames.
+constexpr float kCameraDegPerFrame = 2.0f;
+constexpr float kLightDegPerFrame = 3.0f;
+
+struct Named {
+  BenchMotion motion;
+  const char* name;
+};
+constexpr Named kMotions[] = {{BenchMotion::None, "none"},
+                              {BenchMotion::Camera, "camera"},
+                              {BenchMotion::Light, "light"},
+                              {BenchMotion::Both, "both"},
+                              {BenchMotion::Params, "params"}};
+
+void orbitCamera(Camera& camera, int frame) {
+  Orbit orbit = Orbit::fromPosition(camera.position, camera.target);
+  orbit.rotate(kCameraDegPerFrame * static_cast<float>(frame), 0.0f);
+  camera.position = orbit.position();
+}
+
+void turnLight(Light& light, int frame) {
+  // About +Y through the origin (the normalized mesh's centre); for a directional light
+  // `position` is the direction it comes from, and the same rotation applies.
+  const float angle = glm::radians(kLightDegPerFrame * static_cast<float>(frame));
+  light.position = glm::vec3(glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0)) * glm::vec4(light.position, 1.0f));
+}
+
+void moveLightingParameter(Material& m, int frame) {
+  // k_schlick only feeds the lighting pass, so the G-buffer stays valid: this is the
+  // "re-shade from the G-buffer" case. A pattern parameter would force the geometry pass.
+  // sin of distinct integers never repeats, so every frame sees a new value.
+  m.k_schlick = std::clamp(m.k_schlick + 0.3f * std::sin(0.7f * static_cast<float>(frame)), 0.0f, 1.0f);
+}
+
+}  // namespace
+
+BenchMotion parseBenchMotion(const std::string& name) {
+  for (const auto& m : kMotions)
+    if (name == m.name) return m.motion;
+  throw InputError("--motion", "", "expected one of none, camera, light, both, params, got \"" + name + "\"");
+}
+
+const char* benchMotionName(BenchMotion motion) {
+  for (const auto& m : kMotions)
+    if (m.motion == motion) return m.name;
+  return "?";
+}
+
+Scene sceneAtFrame(const Scene& base, BenchMotion motion, int frame) {
+  Scene s = base;
+  if (motion == BenchMotion::Camera || motion == BenchMotion::Both) orbitCamera(s.camera, frame);
+  if (motion == BenchMotion::Light || motion == BenchMotion::Both) turnLight(s.light, frame);
+  if (motion == BenchMotion::Params) moveLightingParameter(s.material, frame);
+  return s;
+}
+
+}  // namespace marble

@@ -1,0 +1,36 @@
+#pragma once
+// What `marble bench` measured, and its two printed forms: a table for people, one JSON
+// object for machines (keys listed in docs/performance.md, "Frame benchmark").
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace marble {
+
+struct PassSeries {
+  std::string name;         // "light_depth", "geometry", "lighting", "floor"
+  std::vector<double> ms;   // one per measured frame; 0 when the pass was skipped (cached)
+  int runs = 0;             // frames in which the pass actually ran
+  std::vector<double> msWhenRun;  // only the frames in which it ran: the cost of one run
+};
+
+struct BenchResult {
+  std::string input;        // what was benchmarked, as the user named it
+  int width = 0, height = 0;
+  std::string mode, motion;
+  int frames = 0, warmup = 0;
+  size_t triangles = 0;
+  double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)
+  double uploadMs = 0;      // copying it into GL buffers
+  std::string glRenderer, glVersion;
+  std::vector<double> frameMs;       // wall clock, render call through glFinish
+  std::vector<double> cpuSubmitMs;   // CPU of the calling thread while the frame is submitted
+  std::vector<double> cpuProcessMs;  // CPU of every thread of the process over the whole frame
+  std::vector<PassSeries> passes;
+  size_t rssBytes = 0, peakRssBytes = 0, glBytes = 0;
+};
+
+void printBenchTable(const BenchResult& r);
+void printBenchJson(const BenchResult& r);
+
+}  // namespace marble

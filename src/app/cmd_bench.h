@@ -1,0 +1,23 @@
+#pragma once
+// `marble bench`: renders a scene headless for a number of frames while something moves, and
+// prints how long the frames and each pass took and how much memory they held (issue 8).
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "scene_options.h"
+
+namespace marble {
+
+struct BenchOptions {
+  SceneOptions scene;
+  int frames = 20;
+  int warmup = 3;
+  std::string motion = "none";
+  bool json = false;
+};
+
+void addBenchOptions(CLI::App& cmd, BenchOptions& o);
+int runBenchCommand(const BenchOptions& o);
+
+}  // namespace marble

@@ -1,0 +1,153 @@
+// The panel's non-material sections: files, mesh, light, view.
+#include <filesystem>
+
+#include "marble/mesh/mesh.h"
+#include "marble/scene/material_io.h"
+#include "panel_sections.h"
+#include "panel_widgets.h"
+
+namespace marble::viewer {
+
+void drawTopBar(ViewerState& s) {
+  if (ImGui::BeginCombo("preset", s.presetName.c_str())) {
+    for (const auto& p : builtinPresets()) {
+      if (ImGui::Selectable(p.name.c_str(), p.name == s.presetName)) {
+        try {
+          s.scene.material = loadPreset(p.name);
+          s.presetName = p.name;
+          s.presetMaterial = s.scene.material;
+          s.setStatus("preset " + p.name + " (Ctrl+Z goes back)");
+        } catch (const std::exception& e) {
+          s.setError(e.what());
+        }
+      }
+      tooltip(p.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  tooltip("Built-in marbles. Picking one replaces the whole material (undoable).\n"
+          "Files: load your own in the Files section.");
+  int mode = static_cast<int>(s.scene.render.mode);
+  std::vector<const char*> names;
+  for (const auto& n : renderModeNames()) names.push_back(n.c_str());
+  if (ImGui::Combo("render mode", &mode, names.data(), static_cast<int>(names.size())))
+    s.scene.render.mode = static_cast<RenderMode>(mode);
+  tooltip("marble: our best. paper: the paper's combination. phong / oren-nayar: comparisons.\n"
+          "subsurface, reflectance: one term alone. albedo ... normal: the buffers. floor: with a floor.");
+  ImGui::BeginDisabled(!s.undo.canUndo());
+  if (ImGui::Button("Undo")) s.requestUndo = true;
+  ImGui::EndDisabled();
+  tooltip("Ctrl+Z: undo the last parameter change (material, light, render mode).");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!s.undo.canRedo());
+  if (ImGui::Button("Redo")) s.requestRedo = true;
+  ImGui::EndDisabled();
+  tooltip("Ctrl+Y or Ctrl+Shift+Z.");
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu / %zu steps", s.undo.undoCount(), s.undo.redoCount());
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) s.showHelp = !s.showHelp;
+  tooltip("F1 or ?: every shortcut.");
+}
+
+void drawFilesSection(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("Files")) return;
+  inputText("material##path", s.materialPathInput, "preset.json or a preset name");
+  tooltip("A material preset file (JSON, the keys of docs/materials.md), or a built-in preset's name for Load.");
+  if (ImGui::Button("Save material")) s.requestSaveMaterial = true;
+  tooltip("Writes the current material to the path (atomically: an old file is never left half-written).");
+  ImGui::SameLine();
+  if (ImGui::Button("Load material")) s.requestLoadMaterial = true;
+  tooltip("Replaces the material; a bad file shows its error below and changes nothing.");
+  inputText("scene##path", s.scenePathInput, "scene.json");
+  tooltip("A whole scene: mesh, camera, light, material, render settings (docs/scene-format.md).");
+  if (ImGui::Button("Save scene")) s.requestSaveScene = true;
+  tooltip("Writes everything you see to the path (atomically). `marble render SCENE -o out.png` renders it.");
+  ImGui::SameLine();
+  if (ImGui::Button("Load scene")) s.requestLoadScene = true;
+  tooltip("Replaces everything (and clears undo); a bad file or mesh shows its error and changes nothing.");
+}
+
+void drawMeshSection(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("Mesh")) return;
+  ImGui::TextWrapped("%s, %zu triangles", s.meshLabel.c_str(), s.triangles);
+  if (inputText("path##mesh", s.meshPathInput, "model.obj - or drop a file")) s.requestMeshLoad = true;
+  tooltip("OBJ, PLY, STL, glTF/GLB. Enter or Load; or drop a file on the window.\nA bad file keeps the current mesh.");
+  if (ImGui::Button("Load")) s.requestMeshLoad = true;
+  ImGui::TextUnformatted("built-in:");
+  for (const auto& name : builtinMeshNames()) {
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(name.c_str()).x + 12) ImGui::NewLine();
+    if (ImGui::SmallButton(name.c_str())) {
+      s.meshPathInput = "builtin:" + name;
+      s.requestMeshLoad = true;
+    }
+  }
+  if (enumCombo("file up axis", s.scene.up, {"+Y", "+Z", "+X", "-Y", "-Z", "-X"},
+                "Which axis of the file points up (many scans, like the paper's dragon, are Z-up).\nReloads the mesh."))
+    if (s.scene.mesh.rfind("builtin:", 0) != 0) {
+      s.meshPathInput = s.scene.mesh;
+      s.requestMeshLoad = true;
+    }
+}
+
+void drawLightSection(ViewerState& s) {
+  bool reset;
+  const bool open = sectionHeader("Light", true, "Put the light back where the scene had it.", reset);
+  if (reset) {
+    s.scene.light = s.initialLight;
+    s.light = s.initialLightOrbit;
+  }
+  if (!open) return;
+  const float pad = 96.0f * ImGui::GetIO().FontGlobalScale;
+  lightPad("##lightpad", s.light, s.camera, pad);
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::PushItemWidth(-80.0f * ImGui::GetIO().FontGlobalScale);
+  ImGui::SliderFloat("azimuth", &s.light.yaw_deg, -180.0f, 180.0f, "%.0f deg");
+  tooltip("Angle around the object. Shift+drag or right-drag in the view moves the light too.");
+  ImGui::SliderFloat("elevation", &s.light.pitch_deg, -89.0f, 89.0f, "%.0f deg");
+  tooltip("Height above the horizon; negative lights from below.");
+  ImGui::SliderFloat("distance", &s.light.distance, 2.0f, 20.0f, "%.1f");
+  tooltip("Distance from the object's centre in scene units (the object is 2 units across).\n"
+          "Closer: stronger falloff across the object.");
+  ImGui::PopItemWidth();
+  if (ImGui::Button("behind")) s.light = Orbit::fromPosition(-s.camera.position() * 1.2f + glm::vec3(0, 0.5f, 0));
+  tooltip("Put the light behind the object as seen from the camera: shows the subsurface glow.");
+  ImGui::SameLine();
+  if (ImGui::Button("at camera")) s.light = Orbit::fromPosition(s.camera.position());
+  tooltip("Light from the viewer's position: flat, shows the pattern best.");
+  ImGui::EndGroup();
+  enumCombo("type", s.scene.light.type, {"point", "directional"},
+            "Point: light from a position, with falloff. Directional: parallel light from that direction (the sun).");
+  colour("colour##light", s.scene.light.color, "Colour of the light (linear RGB).");
+  ImGui::SliderFloat("intensity", &s.scene.light.intensity, 0.0f, 4.0f, "%.2f");
+  tooltip("Brightness multiplier of the light.");
+}
+
+void drawViewSection(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("View")) return;
+  if (ImGui::Button("Frame (F)")) s.requestFrame = true;
+  tooltip("Fit the whole object in the view, keeping the viewing direction.");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset view (Home)")) s.camera = s.initialCamera;
+  tooltip("Back to the scene's camera.");
+  ImGui::SliderFloat("field of view", &s.scene.camera.fov_y_deg, 10.0f, 90.0f, "%.0f deg");
+  tooltip("Vertical field of view: small is a telephoto (flat), large a wide angle (strong perspective).");
+  enumCombo("turntable (T)", s.turntable, {"off", "object", "light"},
+            "Slowly turn the object (its model matrix) or the light around the vertical axis.\n"
+            "Does not change the scene or the undo history.");
+  if (s.turntable != Turntable::Off) {
+    ImGui::SliderFloat("speed", &s.turntableDegPerSec, -90.0f, 90.0f, "%.0f deg/s");
+    tooltip("Degrees per second; negative turns the other way.");
+  }
+  colour("background", s.scene.render.background, "Colour behind the object (linear RGB), saved with the scene.");
+  ImGui::Checkbox("vsync", &s.vsync);
+  tooltip("Wait for the display's refresh: smooth and cool. Off: measure the real frame time.");
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (F12)")) s.requestScreenshot = true;
+  tooltip("Saves the window (panel included) as marble-DATE-TIME.png in the current folder.");
+  if (!s.lastScreenshot.empty()) ImGui::TextWrapped("last: %s", s.lastScreenshot.c_str());
+}
+
+}  // namespace marble::viewer

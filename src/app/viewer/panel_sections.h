@@ -1,0 +1,21 @@
+#pragma once
+// The panel's sections, one function each, drawn top to bottom by drawPanel (panel.cpp).
+#include "viewer_state.h"
+
+namespace marble::viewer {
+
+void drawTopBar(ViewerState& s);          // preset, render mode, undo/redo (always visible)
+void drawFilesSection(ViewerState& s);    // save/load material and scene
+void drawMeshSection(ViewerState& s);
+void drawPatternSection(ViewerState& s);
+void drawColourSection(ViewerState& s);
+void drawSubsurfaceSection(ViewerState& s);
+void drawReflectanceSection(ViewerState& s);
+void drawLightSection(ViewerState& s);
+void drawViewSection(ViewerState& s);     // camera, turntable, background, vsync, screenshot
+void drawPerformanceSection(ViewerState& s);
+
+// A square pad showing the light's direction from above; click or drag to move it.
+void lightPad(const char* id, Orbit& light, const Orbit& camera, float size);
+
+}  // namespace marble::viewer

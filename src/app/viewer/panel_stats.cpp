@@ -1,0 +1,45 @@
+// The performance section: frame-time graph and each pass's GPU time. The renderer re-runs the
+// light-depth and geometry passes only when their inputs change; a pass that did not run this
+// frame shows "cached", not a stale number.
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "panel_sections.h"
+#include "panel_widgets.h"
+
+namespace marble::viewer {
+namespace {
+
+void passLine(const char* name, double ms, bool ran, const char* tip) {
+  if (ran) ImGui::Text("  %-10s %6.2f ms", name, ms);
+  else ImGui::TextDisabled("  %-10s cached", name);
+  tooltip(tip);
+}
+
+}  // namespace
+
+void drawPerformanceSection(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("Performance", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const std::vector<float> v(s.frameMs.begin(), s.frameMs.end());
+  float avg = 0, worst = 0;
+  for (float f : v) {
+    avg += f;
+    worst = std::max(worst, f);
+  }
+  if (!v.empty()) avg /= static_cast<float>(v.size());
+  char overlay[64];
+  std::snprintf(overlay, sizeof overlay, "%.1f ms (%.0f FPS), worst %.0f", avg, avg > 0 ? 1000.0f / avg : 0.0f, worst);
+  if (!v.empty())
+    ImGui::PlotLines("##frames", v.data(), static_cast<int>(v.size()), 0, overlay, 0.0f, std::max(1.0f, worst * 1.1f),
+                     ImVec2(ImGui::GetContentRegionAvail().x, 48.0f * ImGui::GetIO().FontGlobalScale));
+  tooltip("Frame time (CPU wall clock) over the last 120 frames. With vsync on it cannot go below the refresh.");
+  const PassTimes& t = s.passTimes;
+  ImGui::TextUnformatted("GPU time per pass:");
+  passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
+  passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer from the camera. Re-runs when the camera, mesh, size or pattern changes.");
+  passLine("lighting", t.lightingMs, true, "Full-screen shading: subsurface and reflectance. Runs every frame.");
+  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The floor plane and its shadow.");
+}
+
+}  // namespace marble::viewer

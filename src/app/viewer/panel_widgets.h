@@ -1,0 +1,41 @@
+#pragma once
+// Small ImGui helpers shared by the panel's sections: every parameter gets a tooltip, every
+// slider its range from param_ranges.h, every section a header with a reset button.
+#include <imgui.h>
+
+#include <initializer_list>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace marble::viewer {
+
+inline void tooltip(const char* text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
+
+// A text box bound to a std::string; returns true when Enter was pressed in it.
+bool inputText(const char* label, std::string& value, const char* hint = nullptr);
+
+// A slider over the range of material key `key` (param_ranges.h), with a tooltip.
+bool slider(const char* label, const char* key, float& value, const char* tip);
+bool slider3(const char* label, const char* key, glm::vec3& value, const char* tip);
+bool colour(const char* label, glm::vec3& value, const char* tip);
+
+template <typename Enum>
+bool enumCombo(const char* label, Enum& value, std::initializer_list<const char*> names, const char* tip) {
+  int i = static_cast<int>(value);
+  const bool changed = ImGui::Combo(label, &i, names.begin(), static_cast<int>(names.size()));
+  if (changed) value = static_cast<Enum>(i);
+  tooltip(tip);
+  return changed;
+}
+
+// A collapsing header; when open, a right-aligned "reset" button on the first line of the
+// section. Returns whether the section is open; sets `reset` when the button was clicked.
+bool sectionHeader(const char* title, bool defaultOpen, const char* resetTip, bool& reset);
+
+// A grey "(?)" after the previous item, with a tooltip.
+void helpMarker(const char* text);
+
+}  // namespace marble::viewer

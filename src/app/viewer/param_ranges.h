@@ -1,0 +1,35 @@
+#pragma once
+// The panel's slider ranges, by material key. Kept apart from the ImGui code so a unit test
+// (tests/viewer_ranges_test.cpp) can hold them against what preset files accept and what the
+// built-in presets use: a slider whose end the loader rejects would let a user save a preset
+// that cannot be loaded, and a slider narrower than a preset's value would surprise on touch.
+// Ctrl+click on a slider still types any value the loader accepts.
+#include <string_view>
+
+namespace marble::viewer {
+
+struct ParamRange {
+  const char* key;
+  float lo, hi;
+  bool logarithmic;  // for parameters whose useful values span decades (sizes, exponents)
+};
+
+inline constexpr ParamRange kParamRanges[] = {
+    {"x_period", 0.0f, 20.0f, false},      {"y_period", 0.0f, 20.0f, false},
+    {"z_period", 0.0f, 20.0f, false},      {"turb_power", 0.0f, 20.0f, false},
+    {"turb_size", 1.0f, 1024.0f, true},    {"pattern_scale", 0.1f, 8.0f, true},
+    {"vein_sharpness", 0.1f, 8.0f, true},  {"vein2_amount", 0.0f, 1.0f, false},
+    {"sigma_t", 0.0f, 10.0f, false},       {"k_sss", 0.0f, 1.0f, false},
+    {"k_schlick", 0.0f, 1.0f, false},      {"metalness", 0.0f, 1.0f, false},
+    {"shininess", 1.0f, 512.0f, true},     {"oren_nayar_sigma", 0.0f, 1.5707f, false},
+    {"resolution", 16.0f, 1024.0f, true},  {"seed", 0.0f, 1.0e6f, false},
+};
+
+// The range of `key`; a zero range ({nullptr, 0, 0}) for a key without a slider.
+constexpr ParamRange rangeOf(std::string_view key) {
+  for (const auto& r : kParamRanges)
+    if (key == r.key) return r;
+  return {nullptr, 0.0f, 0.0f, false};
+}
+
+}  // namespace marble::viewer

@@ -1,0 +1,103 @@
+// `marble bench` end to end: it runs, its JSON carries the documented keys, the motions
+// exercise the passes they should, and bad input is one line with exit code 2.
+// Nothing here asserts a time: only that times are measured and consistent.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+#include "cli_support.h"
+
+using namespace marble::test;
+
+namespace {
+
+const std::string kSmall = "bench --frames 3 --warmup 1 --width 64 --height 64";
+
+// The JSON object is the one line of stdout that starts with '{' (stderr is merged in).
+nlohmann::json benchJson(const std::string& extra) {
+  const auto r = runMarble(kSmall + " --json " + extra);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line.front() == '{') return nlohmann::json::parse(line);
+  ADD_FAILURE() << "no JSON object in: " << r.output;
+  return nlohmann::json::object();
+}
+
+size_t countLines(const std::string& s) {
+  size_t n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST(CliBench, JsonHasTheDocumentedKeys) {
+  const auto j = benchJson("");
+  for (const char* key : {"frame_ms_median", "frame_ms_min", "frame_ms_max", "passes", "rss_bytes", "gl_bytes",
+                          "triangles", "width", "height", "mode", "motion", "load_ms"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j.value("width", 0), 64);
+  EXPECT_EQ(j.value("height", 0), 64);
+  EXPECT_EQ(j.value("mode", ""), "marble");
+  EXPECT_EQ(j.value("motion", ""), "none");
+  EXPECT_EQ(j.value("frames", 0), 3);
+  EXPECT_GT(j.value("triangles", 0), 0);
+  EXPECT_GT(j.value("rss_bytes", 0.0), 0.0);
+  EXPECT_GT(j.value("gl_bytes", 0.0), 64.0 * 64.0 * 8.0) << "at least the G-buffer's colour planes";
+  EXPECT_GT(j.value("frame_ms_min", 0.0), 0.0);
+  EXPECT_LE(j.value("frame_ms_min", 0.0), j.value("frame_ms_median", 0.0));
+  EXPECT_LE(j.value("frame_ms_median", 0.0), j.value("frame_ms_max", 0.0));
+  ASSERT_TRUE(j["passes"].is_object());
+  for (const char* pass : {"light_depth", "geometry", "lighting"}) {
+    ASSERT_TRUE(j["passes"].contains(pass)) << pass;
+    EXPECT_GE(j["passes"][pass].get<double>(), 0.0) << pass;
+  }
+}
+
+// Each motion re-runs exactly the passes whose inputs it changes (the warm-up frame pays
+// for the first full frame, so "none" measures only cached frames).
+TEST(CliBench, MotionsRunThePassesTheyChange) {
+  struct Case {
+    const char* motion;
+    int lightDepth, geometry;
+  };
+  for (const Case& c : {Case{"none", 0, 0}, Case{"camera", 0, 3}, Case{"light", 3, 0}, Case{"both", 3, 3},
+                        Case{"params", 0, 0}}) {
+    const auto j = benchJson(std::string("--motion ") + c.motion);
+    ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
+    EXPECT_EQ(j.value("motion", ""), c.motion);
+    EXPECT_EQ(j["pass_runs"].value("light_depth", -1), c.lightDepth) << c.motion;
+    EXPECT_EQ(j["pass_runs"].value("geometry", -1), c.geometry) << c.motion;
+    EXPECT_EQ(j["pass_runs"].value("lighting", -1), 3) << c.motion;
+    if (c.geometry == 0) EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";
+  }
+}
+
+TEST(CliBench, FloorModeTimesTheFloorPass) {
+  const auto j = benchJson("--mode floor --motion camera");
+  EXPECT_EQ(j.value("mode", ""), "floor");
+  ASSERT_TRUE(j.contains("passes"));
+  EXPECT_TRUE(j["passes"].contains("floor"));
+  EXPECT_FALSE(j["passes"].contains("geometry"));
+}
+
+TEST(CliBench, TablePrintsSpreadPassesAndMemory) {
+  const auto r = runMarble(kSmall + " --motion camera");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* word : {"median", "min", "max", "p90", "frame", "light_depth", "geometry", "lighting", "CPU",
+                           "rss", "triangles", "64x64", "motion camera"})
+    EXPECT_NE(r.output.find(word), std::string::npos) << word << " in:\n" << r.output;
+}
+
+TEST(CliBench, BadInputIsOneLineAndExitTwo) {
+  for (const std::string args : {kSmall + " --motion wobble", kSmall + " --frames 0", kSmall + " --warmup -1",
+                                 kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj"}) {
+    const auto r = runMarble(args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    EXPECT_EQ(countLines(r.output), 1u) << args << "\n" << r.output;
+  }
+  EXPECT_NE(runMarble(kSmall + " --motion wobble").output.find("--motion"), std::string::npos);
+}

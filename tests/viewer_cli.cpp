@@ -1,0 +1,110 @@
+// The viewer end to end under Xvfb: it starts, draws frames, saves the window on request and
+// exits cleanly; the picture shows the docked panel at the left and the object, whole and
+// centred, in the view right of it. Bad input on the command line is one line and exit code 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "cli_support.h"
+#include "marble/core/image.h"
+
+namespace marble {
+namespace {
+
+using test::runMarble;
+using test::tempDir;
+
+const char* kXvfb = "xvfb-run -a -s '-screen 0 1024x768x24'";
+
+bool isBackground(const glm::u8vec4& px) {  // the default scene's background, as displayed
+  return std::abs(px.r - 48) <= 3 && std::abs(px.g - 28) <= 3 && std::abs(px.b - 8) <= 3;
+}
+
+int lineCount(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n + (!s.empty() && s.back() != '\n');
+}
+
+TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
+  const auto dir = tempDir("viewer-shot");
+  const auto shot = dir / "shot.png";
+  const auto r = runMarble("view --frames 4 --width 800 --height 500 --screenshot " + shot.string(), kXvfb);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 img = readPng(shot);
+  ASSERT_EQ(img.width, 800);
+  ASSERT_EQ(img.height, 500);
+
+  // The panel: a column at the left, full height, ImGui's dark window with blue-ish headers.
+  int blue = 0, dark = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < 300; ++x) {
+      const auto px = img.at(x, y);
+      if (px.b > px.r + 20) ++blue;
+      if (px.r < 40 && px.g < 40 && px.b < 40) ++dark;
+    }
+  EXPECT_GT(blue, 3000) << "headers, sliders and buttons of the panel";
+  EXPECT_GT(dark, 20000) << "the panel's window background";
+  EXPECT_FALSE(isBackground(img.at(5, img.height - 5))) << "the panel reaches the bottom of the window";
+
+  // The view: right of the panel; the object's pixels are all there and centred in it.
+  int left = img.width;
+  for (int x = 0; x < img.width; ++x)
+    if (isBackground(img.at(x, img.height / 2)) || isBackground(img.at(x, 3))) {
+      left = x;
+      break;
+    }
+  ASSERT_LT(left, img.width / 2) << "the 3D view starts right of the panel";
+  long covered = 0;
+  double cx = 0, cy = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = left; x < img.width; ++x)
+      if (!isBackground(img.at(x, y))) {
+        ++covered;
+        cx += x;
+        cy += y;
+      }
+  ASSERT_GT(covered, 5000) << "the mesh is drawn";
+  EXPECT_NEAR(cx / covered, (left + img.width) / 2.0, (img.width - left) * 0.12) << "centred in the view";
+  EXPECT_NEAR(cy / covered, img.height / 2.0, img.height * 0.12);
+  for (int y = 0; y < img.height; ++y) {  // nothing of the object touches the view's borders
+    EXPECT_TRUE(isBackground(img.at(left + 2, y))) << "y " << y;
+    EXPECT_TRUE(isBackground(img.at(img.width - 2, y))) << "y " << y;
+    if (!isBackground(img.at(left + 2, y)) || !isBackground(img.at(img.width - 2, y))) break;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewerCli, OpensAMeshFileWithAPreset) {
+  // The screenshot script and the tests share --frames/--screenshot; other inputs work too.
+  const auto dir = tempDir("viewer-mesh");
+  const auto shot = dir / "cube.png";
+  const auto r = runMarble("view " + std::string(MARBLE_TEST_FIXTURES) + "/mesh/cube_flat.obj --preset carrara --frames 2 "
+                               "--width 400 --height 300 --screenshot " + shot.string(), kXvfb);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(readPng(shot).width, 400);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {
+  const auto r = runMarble("view /nonexistent/thing.obj --frames 1", kXvfb);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("/nonexistent/thing.obj"), std::string::npos) << r.output;
+}
+
+TEST(ViewerCli, BadSceneFileIsOneLineAndExitTwo) {
+  const auto dir = tempDir("viewer-badscene");
+  const auto scene = dir / "bad.json";
+  { std::ofstream(scene) << "{\"camera\": {\"fov_y_deg\": 500}}"; }
+  const auto r = runMarble("view " + scene.string() + " --frames 1", kXvfb);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("camera.fov_y_deg"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace marble

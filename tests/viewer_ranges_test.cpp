@@ -1,0 +1,91 @@
+// The panel's slider ranges (src/app/viewer/param_ranges.h) against the preset format: both ends
+// of every slider are values a preset file accepts (so whatever the panel makes can be saved and
+// loaded), and every built-in preset sits inside its sliders. Section resets touch only their own
+// section (src/app/viewer/material_sections.h).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "../src/app/viewer/material_sections.h"
+#include "../src/app/viewer/param_ranges.h"
+#include "marble/scene/material_io.h"
+
+namespace marble {
+namespace {
+
+using viewer::kParamRanges;
+
+std::string num(float v) {
+  std::ostringstream s;
+  s.precision(9);
+  s << v;
+  return s.str();
+}
+
+bool isColourKey(const std::string& k) { return k == "sigma_t"; }
+
+TEST(ViewerRanges, BothEndsOfEverySliderAreAcceptedByPresetFiles) {
+  for (const auto& r : kParamRanges) {
+    ASSERT_LT(r.lo, r.hi) << r.key;
+    if (r.logarithmic) EXPECT_GT(r.hi, 0.0f) << r.key;
+    for (float v : {r.lo, r.hi}) {
+      Material m;
+      const std::string value = isColourKey(r.key) ? num(v) + "," + num(v) + "," + num(v) : num(v);
+      if (std::string(r.key) == "turb_size") m.resolution = 4096;  // turb_size may not exceed it
+      EXPECT_NO_THROW(setMaterialKey(m, r.key, value)) << r.key << " = " << value;
+      EXPECT_NO_THROW(validateMaterial(m, "panel", "")) << r.key << " = " << value;
+    }
+  }
+}
+
+TEST(ViewerRanges, EveryNumericMaterialKeyHasASlider) {
+  const nlohmann::json j = materialToJson(Material{});
+  for (const auto& key : materialKeys()) {
+    const auto& v = j[key];
+    const bool numeric = v.is_number() || (v.is_array() && key == "sigma_t");
+    if (numeric) EXPECT_NE(viewer::rangeOf(key).key, nullptr) << key << " has no slider range";
+  }
+}
+
+TEST(ViewerRanges, BuiltinPresetsSitInsideTheSliders) {
+  for (const auto& info : builtinPresets()) {
+    const nlohmann::json j = materialToJson(loadPreset(info.name));
+    for (const auto& r : kParamRanges) {
+      const auto& v = j[r.key];
+      std::vector<double> values;
+      if (v.is_array()) for (const auto& c : v) values.push_back(c.get<double>());
+      else values.push_back(v.get<double>());
+      for (double d : values) {
+        EXPECT_GE(d, r.lo) << info.name << ": " << r.key;
+        EXPECT_LE(d, r.hi) << info.name << ": " << r.key;
+      }
+    }
+  }
+}
+
+TEST(ViewerSections, ResetTouchesOnlyItsSection) {
+  const Material preset = loadPreset("nero-marquina");
+  const Material edited = [] {
+    Material m = loadPreset("carrara");
+    m.turb_power = 13;
+    return m;
+  }();
+  // Resetting every section gives back the preset's look (name and description are not sections).
+  Material all = edited;
+  for (auto s : {viewer::MaterialSection::Pattern, viewer::MaterialSection::Colour, viewer::MaterialSection::Subsurface,
+                 viewer::MaterialSection::Reflectance})
+    viewer::resetSection(all, preset, s);
+  all.name = preset.name;
+  all.description = preset.description;
+  EXPECT_EQ(materialToJson(all), materialToJson(preset));
+  // One section: its fields change, the others' do not.
+  Material colourOnly = edited;
+  viewer::resetSection(colourOnly, preset, viewer::MaterialSection::Colour);
+  EXPECT_EQ(colourOnly.base_color, preset.base_color);
+  EXPECT_EQ(colourOnly.turb_power, 13.0f);
+  EXPECT_EQ(colourOnly.sigma_t, edited.sigma_t);
+  EXPECT_EQ(colourOnly.k_schlick, edited.k_schlick);
+}
+
+}  // namespace
+}  // namespace marble

@@ -6,6 +6,9 @@
 
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
+// `marble` only: light that entered the stone (diffuse irradiance / PI, before albedo), for
+// the screen-space subsurface blur; o_color then holds what the surface reflects (specular).
+layout(location = 1) out vec4 o_diffuse;
 
 layout(binding = 0) uniform sampler2D u_albedo;
 layout(binding = 1) uniform sampler2D u_normal;
@@ -66,7 +69,7 @@ float thickness_at(vec3 p) {
 
 // The `marble` mode: linear HDR radiance. Light intensity 1 is scaled by PI so a white
 // Lambertian surface facing the light reflects 1.0, as in the paper's modes.
-vec3 marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, vec3 albedo) {
+void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3 reflected) {
   float NoL = dot(N, L);
   float NoV = max(dot(N, V), 1e-4);
   vec3 H = normalize(V + L);
@@ -81,8 +84,7 @@ vec3 marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, vec3 albedo) {
   // Energy split: light that is reflected at the surface, on the way in or out, does not
   // enter the stone (Shirley et al. 1997's coupled diffuse, in Schlick form).
   vec3 into = (1.0 - fresnel_schlick(F0, nl)) * (1.0 - fresnel_schlick(F0, NoV));
-  vec3 diffuse = albedo / PI * into;
-  vec3 direct = E * nl * visible * (diffuse + specular);
+  vec3 diffuse = into / PI;
 
   // Transmission: light that entered where the light's map says and crossed s millimetres of
   // stone to leave here, attenuated per channel by exp(-sigma_tr s) (Jensen et al. 2001's
@@ -91,19 +93,20 @@ vec3 marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, vec3 albedo) {
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
   float s_mm = thickness_at(P - N * (2.0 * u_light_texel_world)) * u_mm_per_unit;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  vec3 transmitted = E * albedo / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
+  vec3 transmitted = E / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
                      (1.0 - fresnel_schlick(F0, NoV));
 
-  vec3 ambient = vec3(0.0);
+  entering = E * nl * visible * diffuse + transmitted;
+  reflected = E * nl * visible * specular;
   if (u_env_intensity > 0.0) {
     vec3 R = reflect(-V, N);
-    ambient = u_env_intensity * (albedo * studio_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV)) +
-                                 studio_radiance(R, u_roughness * 1.2) * env_brdf_approx(F0, u_roughness, NoV));
+    entering += u_env_intensity * studio_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV));
+    reflected += u_env_intensity * studio_radiance(R, u_roughness * 1.2) * env_brdf_approx(F0, u_roughness, NoV);
   }
-  return direct + transmitted + ambient;
 }
 
 void main() {
+  o_diffuse = vec4(0.0);
   if (u_mode == MODE_LIGHT_DEPTH) {
     // The light's distance map itself, near = black, far (nothing hit) = white.
     float d = texture(u_light_distance, v_uv).r;
@@ -126,7 +129,9 @@ void main() {
 
   vec3 c;
   if (u_mode == MODE_MARBLE) {
-    c = marble_radiance(P, N, V, L, albedo);
+    vec3 entering;
+    marble_radiance(P, N, V, L, entering, c);
+    o_diffuse = vec4(entering, 1.0);
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;
     if (u_reflectance_first == 0) {

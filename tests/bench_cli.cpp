@@ -51,7 +51,7 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
   EXPECT_LE(j.value("frame_ms_min", 0.0), j.value("frame_ms_median", 0.0));
   EXPECT_LE(j.value("frame_ms_median", 0.0), j.value("frame_ms_max", 0.0));
   ASSERT_TRUE(j["passes"].is_object());
-  for (const char* pass : {"light_depth", "geometry", "lighting"}) {
+  for (const char* pass : {"light_depth", "geometry", "lighting", "post"}) {
     ASSERT_TRUE(j["passes"].contains(pass)) << pass;
     EXPECT_GE(j["passes"][pass].get<double>(), 0.0) << pass;
   }
@@ -72,7 +72,9 @@ TEST(CliBench, MotionsRunThePassesTheyChange) {
     EXPECT_EQ(j["pass_runs"].value("light_depth", -1), c.lightDepth) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("geometry", -1), c.geometry) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("lighting", -1), 3) << c.motion;
-    if (c.geometry == 0) EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";
+    if (c.geometry == 0) {
+      EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";
+    }
   }
 }
 
@@ -93,7 +95,7 @@ TEST(CliBench, TablePrintsSpreadPassesAndMemory) {
 }
 
 TEST(CliBench, BadInputIsOneLineAndExitTwo) {
-  for (const std::string args : {kSmall + " --motion wobble", kSmall + " --frames 0", kSmall + " --warmup -1",
+  for (const std::string& args : {kSmall + " --motion wobble", std::string("bench --width 64 --height 64 --frames 0"), std::string("bench --width 64 --height 64 --warmup -1"),
                                  kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj"}) {
     const auto r = runMarble(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;

@@ -7,6 +7,8 @@
 #include <random>
 #include <set>
 
+#include <unistd.h>
+
 #include "marble/core/error.h"
 #include "marble/scene/embedded_presets.h"
 #include "marble/scene/material_io.h"

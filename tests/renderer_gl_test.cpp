@@ -20,7 +20,7 @@ Scene smallScene(RenderMode mode, const std::string& mesh = "builtin:sculpture",
 }
 
 struct RendererFixture : ::testing::Test {
-  void SetUp() override { glContext(); }
+  HeadlessContext& context = glContext();  // before the renderer: it needs a current context
   Renderer renderer;
   void useMesh(const std::string& name) { renderer.setMesh(builtinMesh(name)); }
 };

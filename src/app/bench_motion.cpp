@@ -41,10 +41,13 @@ void turnLight(Light& light, int frame) {
 }
 
 void moveLightingParameter(Material& m, int frame) {
-  // k_schlick only feeds the lighting pass, so the G-buffer stays valid: this is the
-  // "re-shade from the G-buffer" case. A pattern parameter would force the geometry pass.
-  // sin of distinct integers never repeats, so every frame sees a new value.
-  m.k_schlick = std::clamp(m.k_schlick + 0.3f * std::sin(0.7f * static_cast<float>(frame)), 0.0f, 1.0f);
+  // Lighting-only parameters, so the G-buffer stays valid: the "re-shade from the G-buffer"
+  // case. k_schlick is what the paper's mode reads, roughness what `marble` reads; a pattern
+  // parameter would force the geometry pass. sin of distinct integers never repeats, so
+  // every frame sees new values.
+  const float wave = std::sin(0.7f * static_cast<float>(frame));
+  m.k_schlick = std::clamp(m.k_schlick + 0.3f * wave, 0.0f, 1.0f);
+  m.roughness = std::clamp(m.roughness * (1.0f + 0.5f * wave), 0.02f, 1.0f);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ double mib(size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0)
 
 void row(const char* label, const std::vector<double>& values, const std::string& ran = "") {
   const Spread s = spreadOf(values);
-  std::printf("%-20s %9.2f %9.2f %9.2f %9.2f  %s\n", label, s.median, s.min, s.max, s.p90, ran.c_str());
+  std::printf("%-24s %9.2f %9.2f %9.2f %9.2f  %s\n", label, s.median, s.min, s.max, s.p90, ran.c_str());
 }
 
 }  // namespace
@@ -29,7 +29,7 @@ void printBenchTable(const BenchResult& r) {
               r.height, r.mode.c_str(), r.motion.c_str(), r.frames, r.warmup);
   std::printf("GL: %s; %s\n", r.glRenderer.c_str(), r.glVersion.c_str());
   std::printf("triangles %zu, mesh load %.1f ms, upload %.1f ms\n\n", r.triangles, r.loadMs, r.uploadMs);
-  std::printf("%-20s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
+  std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
   row("frame (wall)", r.frameMs);
   for (const auto& p : r.passes) {
     const std::string label = "  " + p.name + " (GPU)";

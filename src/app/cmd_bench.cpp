@@ -31,18 +31,26 @@ std::string glString(GLenum name) {
   return s ? s : "";
 }
 
+// The passes a frame of `mode` runs, in order. The subsurface blur exists only for `marble`;
+// the floor mode is one pass and nothing else.
 std::vector<PassSeries> emptySeries(RenderMode mode) {
   if (mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
-  return {PassSeries{"light_depth", {}, 0, {}}, PassSeries{"geometry", {}, 0, {}}, PassSeries{"lighting", {}, 0, {}}};
+  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"lighting", {}, 0, {}}};
+  if (mode == RenderMode::Marble) s.push_back({"subsurface_blur", {}, 0, {}});
+  s.push_back({"post", {}, 0, {}});
+  return s;
 }
 
 // A cached pass did not run this frame: it costs 0, whatever its timer still remembers.
+// Passes without a "ran" flag run every frame of the modes that have them.
 void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
   for (auto& p : series) {
     double ms = 0;
     bool ran = true;
     if (p.name == "floor") ms = t.floorMs;
     if (p.name == "lighting") ms = t.lightingMs;
+    if (p.name == "subsurface_blur") ms = t.subsurfaceBlurMs;
+    if (p.name == "post") ms = t.postMs;
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
     p.ms.push_back(ran ? ms : 0.0);

@@ -42,8 +42,10 @@ int runRenderCommand(const RenderOptions& o) {
     }
     if (o.timings) {
       const PassTimes t = renderer.passTimes(true);
-      std::printf("pass          GPU ms\nlight-depth   %8.2f\ngeometry      %8.2f\nlighting      %8.2f\npost          %8.2f\n",
-                  t.lightDepthMs, t.geometryMs, t.lightingMs, t.postMs);
+      std::printf("pass             GPU ms\nlight-depth      %8.2f\ngeometry         %8.2f\nlighting         %8.2f\n"
+                  "subsurface-blur  %8.2f\npost             %8.2f\n",
+                  t.lightDepthMs, t.geometryMs, t.lightingMs,
+                  scene.render.mode == RenderMode::Marble ? t.subsurfaceBlurMs : 0.0, t.postMs);
       if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "

@@ -32,10 +32,15 @@ inline void resetSection(Material& m, const Material& preset, MaterialSection se
     case MaterialSection::Subsurface:
       m.sigma_t = preset.sigma_t;
       m.k_sss = preset.k_sss;
+      m.sigma_a_mm = preset.sigma_a_mm;
+      m.sigma_s_mm = preset.sigma_s_mm;
+      m.translucency = preset.translucency;
       break;
     case MaterialSection::Reflectance:  // with the comparison models' parameters
       m.k_schlick = preset.k_schlick;
       m.metalness = preset.metalness;
+      m.ior = preset.ior;
+      m.roughness = preset.roughness;
       m.order = preset.order;
       m.schlick_cos = preset.schlick_cos;
       m.shininess = preset.shininess;

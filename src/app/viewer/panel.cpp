@@ -24,7 +24,7 @@ void drawPanel(ViewerState& s) {
   ImGui::Begin("marble", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::PushItemWidth(-ImGui::CalcTextSize("turbulence size ").x);  // labels stay readable
+  ImGui::PushItemWidth(-ImGui::CalcTextSize("Oren-Nayar sigma ").x);  // labels stay readable
   drawTopBar(s);
   ImGui::Separator();
 
@@ -34,7 +34,7 @@ void drawPanel(ViewerState& s) {
     footer = ImGui::CalcTextSize(s.status.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x).y +
              ImGui::GetStyle().ItemSpacing.y * 3;
   ImGui::BeginChild("sections", ImVec2(0, -footer));
-  ImGui::PushItemWidth(-ImGui::CalcTextSize("turbulence size ").x);
+  ImGui::PushItemWidth(-ImGui::CalcTextSize("Oren-Nayar sigma ").x);
   drawPatternSection(s);
   drawColourSection(s);
   drawSubsurfaceSection(s);

@@ -80,6 +80,12 @@ void drawSubsurfaceSection(ViewerState& s) {
           "Low: translucent, glowing edges. High: opaque. Red travels further in marble than blue.\n"
           "(The object is 2 units across.)");
   slider("k_sss", "k_sss", m.k_sss, "Strength of the subsurface term: 0 = off, 1 = full.");
+  slider3("sigma_a 1/mm", "sigma_a_mm", m.sigma_a_mm,
+          "Measured absorption per millimetre, per channel: light lost inside the stone. Higher: darker, more coloured glow.");
+  slider3("sigma_s' 1/mm", "sigma_s_mm", m.sigma_s_mm,
+          "Reduced scattering per millimetre, per channel: how often light turns inside. Higher: milkier, shorter glow.");
+  slider("translucency", "translucency", m.translucency,
+         "Scales light transmitted through thin parts: 1 is physical, 0 opaque, above 1 exaggerated.");
 }
 
 void drawReflectanceSection(ViewerState& s) {
@@ -91,6 +97,9 @@ void drawReflectanceSection(ViewerState& s) {
   if (!open) return;
   slider("k_schlick", "k_schlick", m.k_schlick,
          "Opacity of the Fresnel-Schlick reflectance over the colour: the polish. Grazing angles reflect most.");
+  slider("ior", "ior", m.ior, "Index of refraction: sets F0 = ((n-1)/(n+1))^2. Calcite is 1.49-1.66 (F0 about 0.04-0.06).");
+  slider("roughness", "roughness", m.roughness,
+         "Microfacet roughness (GGX alpha = roughness^2): polished 0.05-0.15 gives a sharp highlight, honed 0.4-0.6 a broad sheen.");
   slider("metalness", "metalness", m.metalness, "F0 = mix(0.04, albedo, metalness). Calcite is a dielectric: keep 0.");
   enumCombo("order", m.order, {"subsurface first (paper)", "reflectance first"},
             "Which term is applied first (paper section 4). Changes how the polish tints the glow.");

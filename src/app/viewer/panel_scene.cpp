@@ -48,6 +48,12 @@ void drawTopBar(ViewerState& s) {
   ImGui::SameLine();
   if (ImGui::Button("Help")) s.showHelp = !s.showHelp;
   tooltip("F1 or ?: every shortcut.");
+  // The frame time at a glance, without scrolling to the Performance section.
+  if (!s.frameMs.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%.0f ms/frame", s.frameMs.back());
+    tooltip("Last frame's time; the Performance section has the graph and each pass's GPU time.");
+  }
 }
 
 void drawFilesSection(ViewerState& s) {

@@ -12,8 +12,8 @@ namespace marble::viewer {
 namespace {
 
 void passLine(const char* name, double ms, bool ran, const char* tip) {
-  if (ran) ImGui::Text("  %-10s %6.2f ms", name, ms);
-  else ImGui::TextDisabled("  %-10s cached", name);
+  if (ran) ImGui::Text("  %-12s %7.2f ms", name, ms);
+  else ImGui::TextDisabled("  %-12s  cached", name);
   tooltip(tip);
 }
 
@@ -39,6 +39,7 @@ void drawPerformanceSection(ViewerState& s) {
   passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
   passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer from the camera. Re-runs when the camera, mesh, size or pattern changes.");
   passLine("lighting", t.lightingMs, true, "Full-screen shading: subsurface and reflectance. Runs every frame.");
+  passLine("post", t.postMs, true, "Tone mapping and output to the view. Runs every frame.");
   if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The floor plane and its shadow.");
 }
 

@@ -22,6 +22,9 @@ inline constexpr ParamRange kParamRanges[] = {
     {"sigma_t", 0.0f, 10.0f, false},       {"k_sss", 0.0f, 1.0f, false},
     {"k_schlick", 0.0f, 1.0f, false},      {"metalness", 0.0f, 1.0f, false},
     {"shininess", 1.0f, 512.0f, true},     {"oren_nayar_sigma", 0.0f, 1.5707f, false},
+    {"sigma_a_mm", 0.0f, 2.0f, false},     {"sigma_s_mm", 0.0f, 10.0f, false},
+    {"translucency", 0.0f, 2.0f, false},   {"ior", 1.0f, 3.0f, false},
+    {"roughness", 0.0f, 1.0f, false},
     {"resolution", 16.0f, 1024.0f, true},  {"seed", 0.0f, 1.0e6f, false},
 };
 

@@ -11,11 +11,19 @@ void LightingPass::resize(int width, int height) {
   width_ = width;
   height_ = height;
   hdr_ = gl::Texture::create(GL_TEXTURE_2D);
+  entering_ = gl::Texture::create(GL_TEXTURE_2D);
   fbo_ = gl::Framebuffer::create();
-  glTextureStorage2D(hdr_.id(), 1, GL_RGBA16F, width, height);
-  glTextureParameteri(hdr_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(hdr_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (GLuint t : {hdr_.id(), entering_.id()}) {
+    glTextureStorage2D(t, 1, GL_RGBA16F, width, height);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
+  const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 2, bufs);
 }
 
 // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).

@@ -20,13 +20,14 @@ public:
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            const Material& material, const Scene& scene, float lightTexelWorld);
   GLuint hdrTexture() const { return hdr_.id(); }
+  GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
   GLuint fbo() const { return fbo_.id(); }
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
   PassTimer& timer() { return timer_; }
 
 private:
   gl::Program program_;
-  gl::Texture hdr_;
+  gl::Texture hdr_, entering_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws

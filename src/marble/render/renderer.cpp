@@ -6,10 +6,11 @@
 namespace marble {
 
 struct Renderer::Passes {
-  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), post(s), floor(s) {}
+  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), blur(s), post(s), floor(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   LightingPass lighting;
+  SubsurfaceBlurPass blur;
   PostPass post;
   FloorPass floor;
 };
@@ -79,8 +80,17 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   passes_->lighting.resize(width, height);
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
-  passes_->post.run(passes_->lighting.hdrTexture(), passes_->geometry.depthTexture(), scene.render, targetFbo, width,
-                    height);
+  GLuint finalHdr = passes_->lighting.hdrTexture();
+  finalHdrFbo_ = passes_->lighting.fbo();
+  if (scene.render.mode == RenderMode::Marble) {
+    passes_->blur.resize(width, height);
+    passes_->blur.run({passes_->lighting.enteringTexture(), passes_->lighting.hdrTexture(),
+                       passes_->geometry.albedoTexture(), passes_->geometry.depthTexture()},
+                      camera, scene, height);
+    finalHdr = passes_->blur.resultTexture();
+    finalHdrFbo_ = passes_->blur.resultFbo();
+  }
+  passes_->post.run(finalHdr, passes_->geometry.depthTexture(), scene.render, targetFbo, width, height);
 }
 
 PassTimes Renderer::passTimes(bool wait) {
@@ -88,21 +98,24 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.lightDepthMs = get(passes_->lightDepth.timer());
   times_.geometryMs = get(passes_->geometry.timer());
   times_.lightingMs = get(passes_->lighting.timer());
+  times_.subsurfaceBlurMs = get(passes_->blur.timer());
   times_.postMs = get(passes_->post.timer());
   times_.floorMs = get(passes_->floor.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
-  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() +
+  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() + passes_->blur.bytes() +
          (mesh_ ? mesh_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() const {
-  const GLuint fbo = passes_->lighting.fbo();
+  const GLuint fbo = finalHdrFbo_;
   GLint w = 0, h = 0;
-  glGetTextureLevelParameteriv(passes_->lighting.hdrTexture(), 0, GL_TEXTURE_WIDTH, &w);
-  glGetTextureLevelParameteriv(passes_->lighting.hdrTexture(), 0, GL_TEXTURE_HEIGHT, &h);
+  glGetNamedFramebufferAttachmentParameteriv(fbo, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &w);
+  const auto texture = static_cast<GLuint>(w);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   std::vector<float> rows(img.pixels.size());
   glNamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);

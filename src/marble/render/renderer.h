@@ -14,13 +14,14 @@
 #include "marble/render/light_depth_pass.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/post_pass.h"
+#include "marble/render/subsurface_blur_pass.h"
 #include "marble/core/image.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
 
 struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, postMs = 0, floorMs = 0;
+  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
   bool lightDepthRan = false, geometryRan = false;
 };
 
@@ -63,6 +64,7 @@ private:
   CameraMatrices lastCamera_{};
   glm::mat4 lastModel_{1.0f};
   Material lastMaterial_{};
+  GLuint finalHdrFbo_ = 0;  // where the last frame's linear HDR image is (for readHdr)
 };
 
 // Whether two materials give the same G-buffer albedo (pattern and colour fields).

@@ -137,7 +137,7 @@ const std::vector<std::string>& keyList() {
       "x_period",       "y_period",     "z_period",      "turb_power", "turb_size",   "pattern_scale",
       "base_color",     "vein_color",   "vein2_color",   "vein_sharpness", "vein2_amount", "sigma_t",
       "k_sss",          "k_schlick",    "metalness",     "order",      "schlick_cos", "shininess",
-      "oren_nayar_sigma"};
+      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency"};
   return keys;
 }
 
@@ -168,6 +168,11 @@ bool applyKey(Material& m, const std::string& key, const json& v, const std::str
   else if (key == "schlick_cos") m.schlick_cos = static_cast<SchlickCosine>(s.choice(kCos));
   else if (key == "shininess") m.shininess = s.number(0, 10000);
   else if (key == "oren_nayar_sigma") m.oren_nayar_sigma = s.number(0, 1.5708);
+  else if (key == "sigma_a_mm") m.sigma_a_mm = s.color(0, 1000);
+  else if (key == "sigma_s_mm") m.sigma_s_mm = s.color(0, 10000);
+  else if (key == "ior") m.ior = s.number(1.0, 3.0);
+  else if (key == "roughness") m.roughness = s.number(0.0, 1.0);
+  else if (key == "translucency") m.translucency = s.number(0.0, 10.0);
   else return false;
   return true;
 }
@@ -376,6 +381,11 @@ json materialToJson(const Material& m) {
   j["schlick_cos"] = enumName(kCos, static_cast<int>(m.schlick_cos));
   j["shininess"] = floatJson(m.shininess);
   j["oren_nayar_sigma"] = floatJson(m.oren_nayar_sigma);
+  j["sigma_a_mm"] = col(m.sigma_a_mm);
+  j["sigma_s_mm"] = col(m.sigma_s_mm);
+  j["ior"] = floatJson(m.ior);
+  j["roughness"] = floatJson(m.roughness);
+  j["translucency"] = floatJson(m.translucency);
   return j;
 }
 

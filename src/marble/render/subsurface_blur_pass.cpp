@@ -1,0 +1,69 @@
+#include "marble/render/subsurface_blur_pass.h"
+
+#include <cmath>
+
+namespace marble {
+
+glm::vec3 burleyShapeD(const Material& m) {
+  const glm::vec3 sigmaTr = glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
+  const float albedo = 0.8f;
+  const float s = 1.9f - albedo + 3.5f * (albedo - 0.8f) * (albedo - 0.8f);
+  return 1.0f / (glm::max(sigmaTr, glm::vec3(1e-4f)) * s);
+}
+
+SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
+    : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
+      emptyVao_(gl::VertexArray::create()) {}
+
+void SubsurfaceBlurPass::resize(int width, int height) {
+  if (width == width_ && height == height_ && resultFbo_) return;
+  width_ = width;
+  height_ = height;
+  horizontal_ = gl::Texture::create(GL_TEXTURE_2D);
+  result_ = gl::Texture::create(GL_TEXTURE_2D);
+  horizontalFbo_ = gl::Framebuffer::create();
+  resultFbo_ = gl::Framebuffer::create();
+  for (GLuint t : {horizontal_.id(), result_.id()}) {
+    glTextureStorage2D(t, 1, GL_RGBA16F, width, height);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
+  glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+}
+
+void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene,
+                             int height) {
+  timer_.begin();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glViewport(0, 0, width_, height_);
+  // Pixels per scene unit at view distance 1: proj[1][1] maps tan(fov/2) to 1 = height/2 px.
+  const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);
+  program_.set("u_d_mm", burleyShapeD(scene.material));
+  program_.set("u_pixels_per_mm_at_unit_depth", pxPerUnit / scene.mm_per_unit);
+  program_.set("u_near_far", glm::vec2(camera.near, camera.far));
+  program_.set("u_mm_per_unit", scene.mm_per_unit);
+  glUseProgram(program_.id());
+  glBindVertexArray(emptyVao_.id());
+
+  const GLuint first[] = {in.entering, in.depth, in.albedo, in.reflected};
+  glBindTextures(0, 4, first);
+  program_.set("u_direction", glm::vec2(1, 0));
+  program_.set("u_final", 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  const GLuint second[] = {horizontal_.id(), in.depth, in.albedo, in.reflected};
+  glBindTextures(0, 4, second);
+  program_.set("u_direction", glm::vec2(0, 1));
+  program_.set("u_final", 1);
+  glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  timer_.end();
+}
+
+}  // namespace marble

@@ -1,0 +1,40 @@
+#pragma once
+// Screen-space subsurface scattering for the `marble` mode: two separable passes over the
+// light that entered the stone (shaders/subsurface_blur.frag.glsl), the second multiplying
+// by the albedo and adding the reflected light, giving the final linear HDR image.
+#include "marble/gl/program.h"
+#include "marble/render/pass_timer.h"
+#include "marble/render/view_setup.h"
+#include "marble/scene/scene.h"
+
+namespace marble {
+
+struct SubsurfaceBlurInputs {
+  GLuint entering, reflected, albedo, depth;
+};
+
+class SubsurfaceBlurPass {
+public:
+  explicit SubsurfaceBlurPass(const ShaderLibrary& shaders);
+  void resize(int width, int height);
+  void run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene, int height);
+  GLuint resultTexture() const { return result_.id(); }
+  GLuint resultFbo() const { return resultFbo_.id(); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
+  PassTimer& timer() { return timer_; }
+
+private:
+  gl::Program program_;
+  gl::VertexArray emptyVao_;
+  gl::Texture horizontal_, result_;
+  gl::Framebuffer horizontalFbo_, resultFbo_;
+  int width_ = 0, height_ = 0;
+  PassTimer timer_;
+};
+
+// Burley's d per channel in mm from the measured coefficients (Christensen & Burley 2015):
+// d = l / s with l = 1 / sigma_tr the diffusion length and s = 1.9 - A + 3.5 (A - 0.8)^2,
+// A the multiple-scattering albedo (about 0.8 for marble).
+glm::vec3 burleyShapeD(const Material& m);
+
+}  // namespace marble

@@ -25,7 +25,6 @@ uniform vec3 u_light_dir;
 uniform int u_light_directional;
 uniform vec2 u_light_near_far;   // range of distances the light's map can hold
 uniform vec3 u_light_radiance;   // colour x intensity
-uniform vec3 u_background;
 
 uniform vec3 u_sigma_t;          // extinction per scene unit, per channel
 uniform float u_k_sss;
@@ -116,8 +115,9 @@ void main() {
   }
   float depth = texture(u_depth, v_uv).r;
   if (depth >= 1.0) {
-    // For `marble` the post pass paints the background after tone mapping.
-    o_color = vec4(u_background, 1.0);
+    // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
+    // paints the background colour.
+    o_color = vec4(0.0);
     return;
   }
   vec4 world = u_inv_view_proj * vec4(vec3(v_uv, depth) * 2.0 - 1.0, 1.0);

@@ -7,6 +7,7 @@ layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_hdr;
 layout(binding = 1) uniform sampler2D u_depth;
 uniform int u_tone_map;
+uniform int u_paint_background;   // 0 for views that are not of the camera's G-buffer
 uniform float u_exposure_scale;   // 2^exposure
 uniform vec3 u_background;
 
@@ -35,9 +36,8 @@ vec3 srgb_encode(vec3 c) {
 
 void main() {
   vec3 c = texture(u_hdr, v_uv).rgb;
-  if (u_tone_map == 1) {
-    // The background colour is a display colour: it is not tone mapped.
-    c = texture(u_depth, v_uv).r >= 1.0 ? u_background : srgb_encode(pbr_neutral(c * u_exposure_scale));
-  }
+  if (u_tone_map == 1) c = srgb_encode(pbr_neutral(c * u_exposure_scale));
+  // The background colour is a display colour: it is not tone mapped.
+  if (u_paint_background == 1 && texture(u_depth, v_uv).r >= 1.0) c = u_background;
   o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
 }

@@ -22,7 +22,7 @@ std::string num(float v) {
   return s.str();
 }
 
-bool isColourKey(const std::string& k) { return k == "sigma_t"; }
+bool isColourKey(const std::string& k) { return k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma"; }  // per-channel keys
 
 TEST(ViewerRanges, BothEndsOfEverySliderAreAcceptedByPresetFiles) {
   for (const auto& r : kParamRanges) {

@@ -52,7 +52,6 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_light_directional", lightM.directional ? 1 : 0);
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
   p.set("u_light_radiance", light.color * light.intensity);
-  p.set("u_background", settings.background);
   p.set("u_sigma_t", m.sigma_t);
   p.set("u_k_sss", m.k_sss);
   p.set("u_k_schlick", m.k_schlick);

@@ -20,6 +20,7 @@ void PostPass::run(GLuint hdrTexture, GLuint depthTexture, const RenderSettings&
   glBindTextures(0, 2, textures);
   program_.set("u_tone_map", settings.mode == RenderMode::Marble ? 1 : 0);
   program_.set("u_exposure_scale", std::exp2(settings.exposure));
+  program_.set("u_paint_background", settings.mode == RenderMode::LightDepth ? 0 : 1);
   program_.set("u_background", settings.background);
   glUseProgram(program_.id());
   glBindVertexArray(emptyVao_.id());

@@ -1,0 +1,47 @@
+#pragma once
+// Comparing a test render against a reference (issue 5, item 9): how well the silhouettes agree,
+// the exposure scale that best maps the test onto the reference, the relative error left after
+// that scale, and the structural similarity (SSIM) of what a viewer would see.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "marble/core/image.h"
+
+namespace marble {
+
+// An image and where the object covers it (1) or the background shows (0).
+struct CoveredImage {
+  ImageRGBF image;
+  std::vector<uint8_t> coverage;  // width * height, row 0 is the top row
+};
+
+struct ImageComparison {
+  double iou = 0.0;            // |A ∩ B| / |A ∪ B| of the two coverage masks (1 when both are empty)
+  double scale = 1.0;          // k minimising Σ (k·test − ref)² over A ∩ B, all three channels
+  double relative_rmse = 0.0;  // sqrt(Σ (k·test − ref)² / Σ ref²) over A ∩ B
+  double ssim = 1.0;           // mean SSIM of tone-mapped luma over A ∪ B
+  long long ref_pixels = 0, test_pixels = 0, joint_pixels = 0;
+};
+
+// Coverage from the values alone: a pixel is background when all three channels are exactly 0
+// (marble's --hdr and a Cycles render with a transparent film both leave exact zeros there).
+std::vector<uint8_t> coverageFromValues(const ImageRGBF& image);
+
+// Reads an OpenEXR file with its coverage: the alpha channel (> 0.5) when it carries any (some
+// pixel below 1), else coverageFromValues. Throws InputError naming the file.
+CoveredImage readExrWithCoverage(const std::filesystem::path& path);
+
+// The four figures. Sizes must match (throws std::invalid_argument otherwise).
+ImageComparison compareImages(const CoveredImage& ref, const CoveredImage& test);
+
+// The display transform of the `marble` mode (shaders/post.frag.glsl), on one linear colour:
+// Khronos PBR Neutral, then the sRGB transfer function; components in [0, 1].
+glm::vec3 toneMapForDisplay(glm::vec3 linear);
+
+// Mean SSIM (Wang et al. 2004) of two single-channel images in [0, 1], with an 11x11 Gaussian
+// window (σ = 1.5), averaged over the pixels where `where` is nonzero (all when it is empty).
+double meanSsim(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
+                const std::vector<uint8_t>& where);
+
+}  // namespace marble

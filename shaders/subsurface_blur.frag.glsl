@@ -13,21 +13,20 @@ layout(binding = 2) uniform sampler2D u_albedo;
 layout(binding = 3) uniform sampler2D u_reflected;  // specular, added in the final pass
 uniform vec2 u_direction;          // (1,0) then (0,1)
 uniform vec3 u_d_mm;               // Burley's d per channel, mm
+uniform float u_step_mm;           // spacing of the taps, mm (2 * widest d / TAPS)
+uniform vec3 u_weights[10];        // burley_1d(i * step) for i = 0..TAPS, computed once on the CPU
 uniform float u_pixels_per_mm_at_unit_depth;  // projection scale: px per mm at view distance 1 unit
 uniform vec2 u_near_far;
 uniform float u_mm_per_unit;
 uniform int u_final;               // second pass: multiply by albedo and add the reflected light
 
-const int TAPS = 9;                // per side
+const int TAPS = 9;                // per side; kTaps in subsurface_blur_pass.cpp
 
 float view_depth(float z) {  // linear distance along the view axis, in scene units
   float n = u_near_far.x, f = u_near_far.y;
   return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
 }
 
-vec3 burley_1d(float x, vec3 d) {
-  return exp(-x / d) + exp(-x / (3.0 * d));
-}
 
 void main() {
   float z = texture(u_depth, v_uv).r;
@@ -37,20 +36,18 @@ void main() {
     return;
   }
   float depth = view_depth(z);
-  // Taps out to 2 * the widest d, spaced evenly in mm.
-  float reach_mm = 2.0 * max(u_d_mm.r, max(u_d_mm.g, u_d_mm.b));
-  float step_mm = reach_mm / float(TAPS);
+  float step_mm = u_step_mm;
+  float reach_mm = step_mm * float(TAPS);
   vec2 texel = 1.0 / vec2(textureSize(u_entering, 0));
   float px_per_mm = u_pixels_per_mm_at_unit_depth / depth;
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -TAPS; i <= TAPS; ++i) {
-    float r_mm = abs(float(i)) * step_mm;
     vec2 uv = v_uv + u_direction * texel * (float(i) * step_mm * px_per_mm);
     float zi = texture(u_depth, uv).r;
     if (zi >= 1.0) continue;
     // Across a silhouette: the neighbour is more than the reach away in depth.
     if (abs(view_depth(zi) - depth) * u_mm_per_unit > reach_mm) continue;
-    vec3 w = burley_1d(r_mm, u_d_mm);
+    vec3 w = u_weights[abs(i)];
     sum += w * texture(u_entering, uv).rgb;
     weight += w;
   }

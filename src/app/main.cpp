@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cmd_bench.h"
+#include "cmd_compare.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
 #include "cmd_texture.h"
@@ -43,6 +44,12 @@ int main(int argc, char** argv) {
   auto* benchCmd = app.add_subcommand("bench", "Measure frame and pass times and memory while the camera, light or material changes");
   addBenchOptions(*benchCmd, bench);
 
+  CompareOptions compare;
+  auto* compareCmd = app.add_subcommand("compare", "Compare a render with a reference EXR: silhouette IoU, exposure scale, relative RMSE, SSIM");
+  compareCmd->add_option("reference", compare.reference, "Reference EXR (e.g. from tools/cycles_reference.py)")->required();
+  compareCmd->add_option("test", compare.test, "EXR to judge (e.g. marble render --hdr)")->required();
+  compareCmd->add_flag("--json", compare.json, "Print one JSON object");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -59,5 +66,6 @@ int main(int argc, char** argv) {
   if (textureCmd->parsed()) return runTextureCommand(texture);
   if (app.got_subcommand("presets")) return runPresetsCommand();
   if (benchCmd->parsed()) return runBenchCommand(bench);
+  if (compareCmd->parsed()) return runCompareCommand(compare);
   return 2;
 }

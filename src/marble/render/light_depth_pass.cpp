@@ -11,9 +11,11 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       depth_(gl::Texture::create(GL_TEXTURE_2D)),
       fbo_(gl::Framebuffer::create()) {
   glTextureStorage2D(distance_.id(), 1, GL_R32F, size, size);
-  // Linear filtering of distances softens the map's texel steps in the thickness.
-  glTextureParameteri(distance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(distance_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
+  // distance with the "nothing hit" clear value would invent huge entry distances, hence
+  // zero thickness and light leaking through past the terminator.
+  glTextureParameteri(distance_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(distance_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);

@@ -1,8 +1,13 @@
 #include "marble/render/subsurface_blur_pass.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace marble {
+
+namespace {
+constexpr int kTaps = 9;  // per side; keep in step with TAPS in subsurface_blur.frag.glsl
+}  // namespace
 
 glm::vec3 burleyShapeD(const Material& m) {
   const glm::vec3 sigmaTr = glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
@@ -43,7 +48,18 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   glViewport(0, 0, width_, height_);
   // Pixels per scene unit at view distance 1: proj[1][1] maps tan(fov/2) to 1 = height/2 px.
   const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);
-  program_.set("u_d_mm", burleyShapeD(scene.material));
+  // The taps' weights depend only on the material: the 1D Burley profile
+  // exp(-x/d) + exp(-x/(3d)) at x = i * step, taps out to 2 * the widest d.
+  const glm::vec3 d = burleyShapeD(scene.material);
+  const float stepMm = 2.0f * std::max(d.r, std::max(d.g, d.b)) / static_cast<float>(kTaps);
+  glm::vec3 weights[kTaps + 1];
+  for (int i = 0; i <= kTaps; ++i) {
+    const float x = static_cast<float>(i) * stepMm;
+    weights[i] = glm::exp(-x / d) + glm::exp(-x / (3.0f * d));
+  }
+  glProgramUniform3fv(program_.id(), program_.location("u_weights"), kTaps + 1, &weights[0].x);
+  program_.set("u_step_mm", stepMm);
+  program_.set("u_d_mm", d);
   program_.set("u_pixels_per_mm_at_unit_depth", pxPerUnit / scene.mm_per_unit);
   program_.set("u_near_far", glm::vec2(camera.near, camera.far));
   program_.set("u_mm_per_unit", scene.mm_per_unit);

@@ -1,0 +1,240 @@
+"""Render a marble scene JSON with Blender Cycles, as a reference for `marble compare` (issue 5, item 9).
+
+    blender -b --factory-startup -P tools/cycles_reference.py -- SCENE.json OUT.exr \
+        [--samples N] [--width W --height H] [--threads T] [--seed S]
+
+What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/render/view_setup.cpp):
+- Mesh: a file path relative to the scene (OBJ only, positions and faces; `builtin:` meshes exist
+  only inside marble, so they are refused). The scene's `up` turn (the same proper rotations as
+  src/marble/mesh/mesh.cpp), then normalization: bounding-box centre to the origin, largest extent
+  2.0. Smooth shading (marble computes smooth vertex normals).
+- Axes: marble is +Y up, Blender +Z up; every point goes through B(x, y, z) = (x, -z, y), a +90 deg
+  turn about X, so the picture is the same.
+- Camera: same position, target, up and vertical field of view (sensor_fit VERTICAL), same aspect.
+- Light: marble's light of intensity I and colour c gives irradiance E = pi * I * c at normal
+  incidence, with no distance falloff. A Cycles point light of power P watts gives
+  E = P / (4 pi d^2) at distance d (checked by rendering a white Lambertian plane: 0.6331 measured
+  for 0.6333 predicted). So P = 4 pi^2 d^2 I, with d the light's distance to the object centre
+  (the origin): equal irradiance there, inverse-square around it. Radius 0 (a true point).
+  A directional light becomes a sun of strength pi * I (a sun's strength is its irradiance).
+- World black (compare with marble scenes that say "render": {"environment": "none"}).
+- Material: Principled BSDF, subsurface method RANDOM_WALK, Subsurface 1 (Cycles 3.x then uses
+  the radius as given), base and subsurface colour = base_color (scenes set base/vein/vein2 equal:
+  a flat albedo), subsurface radius = 1/sigma_tr per channel in scene units with
+  sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) (Jensen et al. 2001, eq. 5) per mm, divided by
+  mm_per_unit; Subsurface IOR and IOR = ior; Specular = F0 / 0.08 with F0 = ((n-1)/(n+1))^2
+  (Blender's Principled convention); Roughness = roughness.
+- Output: linear OpenEXR, RGBA 32-bit float, transparent film (alpha 0 and RGB 0 on the
+  background), view transform Standard (EXR is written scene-linear regardless).
+"""
+import json
+import math
+import os
+import sys
+
+import bpy
+from mathutils import Matrix, Vector
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def fail(msg):
+    print("cycles_reference: " + msg, file=sys.stderr)
+    sys.exit(2)
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    opts = {"samples": 64, "width": None, "height": None, "threads": 2, "seed": 0}
+    pos = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ("--samples", "--width", "--height", "--threads", "--seed"):
+            if i + 1 >= len(argv):
+                fail(a + " needs a value")
+            opts[a[2:]] = int(argv[i + 1])
+            i += 2
+        else:
+            pos.append(a)
+            i += 1
+    if len(pos) != 2:
+        fail("usage: blender -b --factory-startup -P tools/cycles_reference.py -- SCENE.json OUT.exr "
+             "[--samples N] [--width W --height H] [--threads T] [--seed S]")
+    return pos[0], pos[1], opts
+
+
+def load_material(scene, scene_dir):
+    mat = dict(scene.get("material", {}))
+    preset = mat.pop("preset", "paper")
+    path = os.path.join(scene_dir, preset)
+    if not os.path.isfile(path):
+        path = os.path.join(REPO, "presets", preset + ".json")
+    if not os.path.isfile(path):
+        fail("material.preset: no preset or file '%s'" % preset)
+    with open(path) as f:
+        merged = json.load(f)
+    merged.update(mat)
+    return merged
+
+
+def rotate_up(v, up):
+    # Same proper rotations as rotateUp() in src/marble/mesh/mesh.cpp: the named file axis to +Y.
+    x, y, z = v
+    return {"y": (x, y, z), "z": (x, z, -y), "-z": (x, -z, y), "x": (-y, x, z),
+            "-x": (y, -x, z), "-y": (x, -y, -z)}[up]
+
+
+def to_blender(v):
+    return Vector((v[0], -v[2], v[1]))
+
+
+def load_obj(path, up):
+    verts, faces = [], []
+    with open(path) as f:
+        for line in f:
+            parts = line.split()
+            if not parts:
+                continue
+            if parts[0] == "v":
+                verts.append(rotate_up(tuple(float(c) for c in parts[1:4]), up))
+            elif parts[0] == "f":
+                idx = [int(p.split("/")[0]) for p in parts[1:]]
+                idx = [i - 1 if i > 0 else len(verts) + i for i in idx]
+                for k in range(1, len(idx) - 1):  # fan: marble triangulates polygons the same way
+                    faces.append((idx[0], idx[k], idx[k + 1]))
+    if not verts or not faces:
+        fail(path + ": no vertices or faces")
+    lo = [min(v[a] for v in verts) for a in range(3)]
+    hi = [max(v[a] for v in verts) for a in range(3)]
+    centre = [(lo[a] + hi[a]) * 0.5 for a in range(3)]
+    scale = 2.0 / max(hi[a] - lo[a] for a in range(3))
+    return [to_blender([(v[a] - centre[a]) * scale for a in range(3)]) for v in verts], faces
+
+
+def main():
+    scene_path, out_path, opts = parse_args()
+    with open(scene_path) as f:
+        scene = json.load(f)
+    scene_dir = os.path.dirname(os.path.abspath(scene_path))
+    mesh_ref = scene.get("mesh", "builtin:sculpture")
+    if mesh_ref.startswith("builtin:"):
+        fail("mesh: '%s' exists only inside marble; use a mesh file (e.g. export one as OBJ)" % mesh_ref)
+    mesh_path = os.path.join(scene_dir, mesh_ref)
+    if not mesh_path.lower().endswith(".obj"):
+        fail("mesh: only OBJ files are supported here, got " + mesh_ref)
+    cam = scene.get("camera", {})
+    light = scene.get("light", {})
+    render = scene.get("render", {})
+    mm_per_unit = float(scene.get("mm_per_unit", 100.0))
+    mat = load_material(scene, scene_dir)
+    if render.get("environment", "studio") != "none":
+        print("cycles_reference: warning: the scene uses marble's studio environment; "
+              "this reference has a black world", file=sys.stderr)
+    if mat.get("vein_color") != mat.get("base_color") or mat.get("vein2_color") != mat.get("base_color"):
+        print("cycles_reference: warning: base/vein/vein2 colours differ; the reference uses base_color "
+              "as a flat albedo", file=sys.stderr)
+
+    bs = bpy.context.scene
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o)
+
+    verts, faces = load_obj(mesh_path, scene.get("up", "y"))
+    me = bpy.data.meshes.new("marble_mesh")
+    me.from_pydata([tuple(v) for v in verts], [], faces)
+    me.update()
+    for p in me.polygons:
+        p.use_smooth = True
+    obj = bpy.data.objects.new("marble", me)
+    bs.collection.objects.link(obj)
+
+    # Material.
+    albedo = list(mat.get("base_color", [0.93, 0.89, 0.8]))
+    sa = mat.get("sigma_a_mm", [0.0021, 0.0041, 0.0071])
+    ss = mat.get("sigma_s_mm", [2.19, 2.62, 3.0])
+    sigma_tr = [math.sqrt(3.0 * a * (a + s)) for a, s in zip(sa, ss)]
+    radius = [1.0 / max(t, 1e-9) / mm_per_unit for t in sigma_tr]
+    ior = float(mat.get("ior", 1.55))
+    f0 = ((ior - 1.0) / (ior + 1.0)) ** 2
+    m = bpy.data.materials.new("marble")
+    m.use_nodes = True
+    bsdf = m.node_tree.nodes["Principled BSDF"]
+    bsdf.subsurface_method = "RANDOM_WALK"
+    bsdf.inputs["Base Color"].default_value = albedo + [1.0]
+    bsdf.inputs["Subsurface"].default_value = 1.0
+    bsdf.inputs["Subsurface Color"].default_value = albedo + [1.0]
+    bsdf.inputs["Subsurface Radius"].default_value = radius
+    bsdf.inputs["Subsurface IOR"].default_value = ior
+    bsdf.inputs["IOR"].default_value = ior
+    bsdf.inputs["Specular"].default_value = f0 / 0.08
+    bsdf.inputs["Specular Tint"].default_value = 0.0
+    bsdf.inputs["Roughness"].default_value = float(mat.get("roughness", 0.12))
+    me.materials.append(m)
+
+    # Camera.
+    pos = to_blender(cam.get("position", [0.0, 0.8, 4.2]))
+    target = to_blender(cam.get("target", [0.0, 0.0, 0.0]))
+    up = to_blender(cam.get("up", [0.0, 1.0, 0.0]))
+    fwd = (target - pos).normalized()
+    right = fwd.cross(up).normalized()
+    cup = right.cross(fwd)
+    rot = Matrix((right, cup, -fwd)).transposed()  # columns: camera x, y, z (looks down -z)
+    cd = bpy.data.cameras.new("camera")
+    cd.sensor_fit = "VERTICAL"
+    cd.sensor_height = 24.0
+    cd.angle_y = math.radians(float(cam.get("fov_y_deg", 40.0)))
+    cd.clip_start, cd.clip_end = 0.01, 1000.0
+    co = bpy.data.objects.new("camera", cd)
+    co.matrix_world = Matrix.Translation(pos) @ rot.to_4x4()
+    bs.collection.objects.link(co)
+    bs.camera = co
+
+    # Light.
+    intensity = float(light.get("intensity", 1.0))
+    color = list(light.get("color", [1.0, 1.0, 1.0]))
+    lpos = to_blender(light.get("position", [3.0, 3.0, 3.0]))
+    if light.get("type", "point") == "directional":
+        ld = bpy.data.lights.new("light", "SUN")
+        ld.energy = math.pi * intensity
+        ld.angle = 0.0
+        lo = bpy.data.objects.new("light", ld)
+        lo.rotation_euler = (-lpos).to_track_quat("-Z", "Y").to_euler()
+    else:
+        ld = bpy.data.lights.new("light", "POINT")
+        ld.energy = 4.0 * math.pi ** 2 * lpos.length_squared * intensity
+        ld.shadow_soft_size = 0.0
+        lo = bpy.data.objects.new("light", ld)
+        lo.location = lpos
+    ld.color = color
+    bs.collection.objects.link(lo)
+
+    # World, film, output.
+    bs.world = bpy.data.worlds.new("black")
+    bs.world.use_nodes = True
+    bs.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+    bs.render.engine = "CYCLES"
+    bs.cycles.device = "CPU"
+    bs.cycles.samples = opts["samples"]
+    bs.cycles.seed = opts["seed"]  # a second seed measures the reference's own noise
+    bs.cycles.use_denoising = False  # Debian's build has no OpenImageDenoise
+    bs.render.threads_mode = "FIXED"
+    bs.render.threads = opts["threads"]
+    bs.render.film_transparent = True
+    bs.render.resolution_x = opts["width"] or int(render.get("width", 800))
+    bs.render.resolution_y = opts["height"] or int(render.get("height", 800))
+    bs.render.resolution_percentage = 100
+    bs.view_settings.view_transform = "Standard"
+    bs.view_settings.look = "None"
+    bs.view_settings.exposure = 0.0
+    bs.view_settings.gamma = 1.0
+    s = bs.render.image_settings
+    s.file_format = "OPEN_EXR"
+    s.color_mode = "RGBA"
+    s.color_depth = "32"
+    bs.render.filepath = os.path.abspath(out_path)
+    bpy.ops.render.render(write_still=True)
+    print("cycles_reference: wrote %s (%dx%d, %d samples, point power %.2f W)" %
+          (out_path, bs.render.resolution_x, bs.render.resolution_y, opts["samples"], ld.energy))
+
+
+main()

@@ -159,6 +159,10 @@ public:
       size_t colon = what.find(": ");
       std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
       throw InputError(file_, byteAt(byteOffset + (e.byte > 0 ? e.byte - 1 : 0)), "invalid JSON: " + detail);
+    } catch (const json::exception& e) {  // out_of_range: a number such as 1e400 beyond double
+      std::string what = e.what();
+      const size_t bracket = what.find("] ");
+      throw InputError(file_, "json", "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
     }
     if (!doc_.is_object()) throw InputError(file_, "json", "the top level is not a JSON object");
   }

@@ -189,10 +189,11 @@ json parseJson(const std::string& text, const std::string& file) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
   try {
     return json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e400
     const std::string what = e.what();
-    const auto pos = what.find("parse error");
-    throw InputError(file, "", "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+    auto pos = what.find("parse error");
+    if (pos == std::string::npos) pos = what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2;
+    throw InputError(file, "", "invalid JSON: " + what.substr(pos));
   }
 }
 

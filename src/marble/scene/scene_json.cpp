@@ -174,11 +174,12 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e400
     // nlohmann's message carries line and column: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     std::string what = e.what();
-    const auto pos = what.find("parse error");
-    throw InputError(file, "", "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+    auto pos = what.find("parse error");
+    if (pos == std::string::npos) pos = what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2;
+    throw InputError(file, "", "invalid JSON: " + what.substr(pos));
   }
   if (!root.is_object()) throw InputError(file, "", "expected a JSON object at the top level");
 

@@ -163,11 +163,21 @@ TEST_F(RendererFixture, CachedPassesAreSkippedWhenTheirInputsDoNotChange) {
   PassTimes t = renderer.passTimes(true);
   EXPECT_TRUE(t.lightDepthRan);
   EXPECT_TRUE(t.geometryRan);
+  EXPECT_TRUE(t.lightingRan);
+  renderImage(renderer, s);  // nothing changed: only the post pass runs
+  t = renderer.passTimes(true);
+  EXPECT_FALSE(t.lightDepthRan);
+  EXPECT_FALSE(t.geometryRan);
+  EXPECT_FALSE(t.lightingRan);
+  s.render.exposure = 1.0f;  // post-only
+  renderImage(renderer, s);
+  EXPECT_FALSE(renderer.passTimes(true).lightingRan);
   s.material.k_schlick = 0.9f;  // a lighting-only parameter
   renderImage(renderer, s);
   t = renderer.passTimes(true);
   EXPECT_FALSE(t.lightDepthRan);
   EXPECT_FALSE(t.geometryRan);
+  EXPECT_TRUE(t.lightingRan);
   s.camera.position.x += 0.1f;
   renderImage(renderer, s);
   t = renderer.passTimes(true);

@@ -48,8 +48,8 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
     double ms = 0;
     bool ran = true;
     if (p.name == "floor") ms = t.floorMs;
-    if (p.name == "lighting") ms = t.lightingMs;
-    if (p.name == "subsurface_blur") ms = t.subsurfaceBlurMs;
+    if (p.name == "lighting") ran = t.lightingRan, ms = t.lightingMs;
+    if (p.name == "subsurface_blur") ran = t.lightingRan, ms = t.subsurfaceBlurMs;
     if (p.name == "post") ms = t.postMs;
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;

@@ -38,9 +38,11 @@ void drawPerformanceSection(ViewerState& s) {
   ImGui::TextUnformatted("GPU time per pass:");
   passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
   passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer from the camera. Re-runs when the camera, mesh, size or pattern changes.");
-  passLine("lighting", t.lightingMs, true, "Full-screen shading: subsurface and reflectance. Runs every frame.");
+  passLine("lighting", t.lightingMs, t.lightingRan, "Full-screen shading: subsurface and reflectance. Re-runs when anything but exposure and background changes.");
+  if (s.scene.render.mode == RenderMode::Marble)
+    passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode), with the lighting.");
   passLine("post", t.postMs, true, "Tone mapping and output to the view. Runs every frame.");
-  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The floor plane and its shadow.");
+  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
 }
 
 }  // namespace marble::viewer

@@ -24,6 +24,14 @@ bool samePattern(const Material& a, const Material& b) {
 }
 
 namespace {
+bool sameLightingInputs(const Scene& a, const Scene& b) {
+  return a.material == b.material && a.mm_per_unit == b.mm_per_unit && a.light.type == b.light.type &&
+         a.light.position == b.light.position && a.light.color == b.light.color &&
+         a.light.intensity == b.light.intensity && a.camera.position == b.camera.position &&
+         a.camera.target == b.camera.target && a.camera.up == b.camera.up && a.camera.fov_y_deg == b.camera.fov_y_deg &&
+         a.render.mode == b.render.mode && a.render.environment == b.render.environment &&
+         a.render.environment_intensity == b.render.environment_intensity;
+}
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
 
@@ -77,20 +85,33 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
                           passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
                           passes_->lightDepth.depthTexture()};
-  passes_->lighting.resize(width, height);
-  const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
-  passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
-  GLuint finalHdr = passes_->lighting.hdrTexture();
-  finalHdrFbo_ = passes_->lighting.fbo();
-  if (scene.render.mode == RenderMode::Marble) {
-    passes_->blur.resize(width, height);
-    passes_->blur.run({passes_->lighting.enteringTexture(), passes_->lighting.hdrTexture(),
-                       passes_->geometry.albedoTexture(), passes_->geometry.depthTexture()},
-                      camera, scene, height);
-    finalHdr = passes_->blur.resultTexture();
-    finalHdrFbo_ = passes_->blur.resultFbo();
+  // Lighting and blur depend on everything but the exposure and the background (post-only).
+  Scene lightingScene = scene;
+  lightingScene.render.exposure = 0.0f;
+  lightingScene.render.background = glm::vec3(0.0f);
+  const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !times_.geometryRan && width == lastWidth_ &&
+                               height == lastHeight_ && sameLightingInputs(lightingScene, lastLightingScene_);
+  times_.lightingRan = !lightingCurrent;
+  if (!lightingCurrent) {
+    passes_->lighting.resize(width, height);
+    const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
+    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
+    finalHdrTexture_ = passes_->lighting.hdrTexture();
+    finalHdrFbo_ = passes_->lighting.fbo();
+    if (scene.render.mode == RenderMode::Marble) {
+      passes_->blur.resize(width, height);
+      passes_->blur.run({passes_->lighting.enteringTexture(), passes_->lighting.hdrTexture(),
+                         passes_->geometry.albedoTexture(), passes_->geometry.depthTexture()},
+                        camera, scene, height);
+      finalHdrTexture_ = passes_->blur.resultTexture();
+      finalHdrFbo_ = passes_->blur.resultFbo();
+    }
+    lightingValid_ = true;
+    lastLightingScene_ = lightingScene;
+    lastWidth_ = width;
+    lastHeight_ = height;
   }
-  passes_->post.run(finalHdr, passes_->geometry.depthTexture(), scene.render, targetFbo, width, height);
+  passes_->post.run(finalHdrTexture_, passes_->geometry.depthTexture(), scene.render, targetFbo, width, height);
 }
 
 PassTimes Renderer::passTimes(bool wait) {

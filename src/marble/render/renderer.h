@@ -22,7 +22,7 @@ namespace marble {
 
 struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
-  bool lightDepthRan = false, geometryRan = false;
+  bool lightDepthRan = false, geometryRan = false, lightingRan = false;
 };
 
 class Renderer {
@@ -46,7 +46,7 @@ public:
   size_t glBytes() const;
 
   // Forget cached passes (the next frame runs all of them).
-  void invalidate() { lightValid_ = geometryValid_ = false; }
+  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = false; }
 
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
@@ -64,7 +64,12 @@ private:
   CameraMatrices lastCamera_{};
   glm::mat4 lastModel_{1.0f};
   Material lastMaterial_{};
-  GLuint finalHdrFbo_ = 0;  // where the last frame's linear HDR image is (for readHdr)
+  GLuint finalHdrFbo_ = 0;
+  GLuint finalHdrTexture_ = 0;
+  // The lighting (and blur) result is reused when none of its inputs changed.
+  bool lightingValid_ = false;
+  Scene lastLightingScene_{};
+  int lastWidth_ = 0, lastHeight_ = 0;  // where the last frame's linear HDR image is (for readHdr)
 };
 
 // Whether two materials give the same G-buffer albedo (pattern and colour fields).

@@ -60,6 +60,8 @@ struct Material {
   float ior = 1.55f;             // "ior": calcite is 1.486-1.658 (F0 about 0.04-0.06)
   float roughness = 0.12f;       // "roughness": perceptual; GGX alpha = roughness^2. Polished 0.05-0.15, honed 0.4-0.6
   float translucency = 1.0f;     // "translucency": scales light transmitted through thin parts (1 = physical)
+
+  bool operator==(const Material&) const = default;
 };
 
 }  // namespace marble

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct Row {
   // CLI11's usage errors add "Run with --help ..." as a second line (reported; see the doc).
   bool usageError = false;
 };
+
+// gtest prints a failing parameter with this instead of a byte dump.
+void PrintTo(const Row& row, std::ostream* os) { *os << row.name; }
 
 std::string u32le(uint32_t v) {
   std::string s(4, '\0');
@@ -200,11 +204,11 @@ const std::vector<Row>& rows() {
        "marble render: fovrange.json: camera.fov_y_deg: expected a number in [1, 179], got 500"},
       {"SceneObjectIsNumber", "number where an object belongs", "render camnumber.json" + kSmall, 2,
        "marble render: camnumber.json: camera: expected an object, got number 5"},
-      {"SceneAbsurdSize", "render width 100000 in the scene", "render wide.json", 2,
+      {"SceneAbsurdSize", "render width 100000 in the scene", "render wide.json -o out.png", 2,
        "marble render: wide.json: render.width: expected a whole number in [1, 8192], got 100000"},
-      {"SceneFractionalSize", "render width 64.5", "render halfpixel.json", 2,
+      {"SceneFractionalSize", "render width 64.5", "render halfpixel.json -o out.png", 2,
        "marble render: halfpixel.json: render.width: expected a whole number, got number 64.5"},
-      {"SceneNegativeSize", "render width -1", "render negwidth.json", 2,
+      {"SceneNegativeSize", "render width -1", "render negwidth.json -o out.png", 2,
        "marble render: negwidth.json: render.width: expected a whole number in [1, 8192], got -1"},
       {"SceneNanLiteral", "NaN in scene JSON (not JSON)", "render nanliteral.json" + kSmall, 2,
        "marble render: nanliteral.json: invalid JSON: parse error at line 1, column 26"},
@@ -261,7 +265,7 @@ const std::vector<Row>& rows() {
       {"ZeroWidth", "--width 0", "render -o out.png --width 0", 2, "--width: Value 0 not in range 1 to 8192", "", true},
       {"AbsurdWidth", "--width 100000", "render -o out.png --width 100000", 2, "--width: Value 100000 not in range 1 to 8192", "", true},
       {"NonNumericHeight", "--height abc", "render -o out.png --height abc", 2, "--height: Value abc not in range 1 to 8192", "", true},
-      {"NoOutput", "render without -o", "render", 2, "--output is required", "", true},
+      {"NoOutput", "render without -o", "render", 2, "marble render: -o: an output file is required (e.g. -o out.png)"},
       {"UnknownCommand", "unknown command", "frobnicate", 2, "A subcommand is required", "", true},
       {"ExtraArgument", "two inputs", "render a.obj b.obj" + kSmall, 2, "The following argument was not expected: b.obj", "", true},
       // Output paths.

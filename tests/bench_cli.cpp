@@ -62,16 +62,16 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
 TEST(CliBench, MotionsRunThePassesTheyChange) {
   struct Case {
     const char* motion;
-    int lightDepth, geometry;
+    int lightDepth, geometry, lighting;
   };
-  for (const Case& c : {Case{"none", 0, 0}, Case{"camera", 0, 3}, Case{"light", 3, 0}, Case{"both", 3, 3},
-                        Case{"params", 0, 0}}) {
+  for (const Case& c : {Case{"none", 0, 0, 0}, Case{"camera", 0, 3, 3}, Case{"light", 3, 0, 3}, Case{"both", 3, 3, 3},
+                        Case{"params", 0, 0, 3}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
     EXPECT_EQ(j.value("motion", ""), c.motion);
     EXPECT_EQ(j["pass_runs"].value("light_depth", -1), c.lightDepth) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("geometry", -1), c.geometry) << c.motion;
-    EXPECT_EQ(j["pass_runs"].value("lighting", -1), 3) << c.motion;
+    EXPECT_EQ(j["pass_runs"].value("lighting", -1), c.lighting) << c.motion;
     if (c.geometry == 0) {
       EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";
     }

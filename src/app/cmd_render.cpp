@@ -13,8 +13,9 @@ namespace marble {
 
 int runRenderCommand(const RenderOptions& o) {
   return reportErrors("render", [&] {
-    if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
+    // The scene is read first, so a broken scene is reported even when -o was forgotten.
     const Scene scene = buildScene(o.scene);
+    if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
     const Mesh mesh = loadSceneMesh(scene);
     HeadlessContext context;
     Renderer renderer;

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   RenderOptions render;
   auto* renderCmd = app.add_subcommand("render", "Render a scene or mesh headless (no display needed) to a PNG");
   addSceneOptions(*renderCmd, render.scene, true);
-  renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically)")->required();
+  renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically; required)");
   renderCmd->add_option("--hdr", render.hdr, "Also write the linear, not tone-mapped image as OpenEXR");
   renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
 

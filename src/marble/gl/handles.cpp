@@ -5,4 +5,29 @@ long& liveObjectCount() {
   static long count = 0;
   return count;
 }
+
+Texture makeTexture2D(GLenum internalFormat, int width, int height, GLenum filter) {
+  Texture t = Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, internalFormat, width, height);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void setMeshPassState() {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+}
+
+void setScreenPassState() {
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+}
+
 }  // namespace marble::gl

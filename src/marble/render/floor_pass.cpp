@@ -12,11 +12,7 @@ void FloorPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMat
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
   glViewport(0, 0, width, height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  gl::setMeshPassState();
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   program_.set("u_model", model);

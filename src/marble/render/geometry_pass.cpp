@@ -13,19 +13,10 @@ void GeometryPass::resize(int width, int height) {
   if (width == width_ && height == height_ && fbo_) return;
   width_ = width;
   height_ = height;
-  albedo_ = gl::Texture::create(GL_TEXTURE_2D);
-  normal_ = gl::Texture::create(GL_TEXTURE_2D);
-  depth_ = gl::Texture::create(GL_TEXTURE_2D);
+  albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
+  normal_ = gl::makeTexture2D(GL_RG16_SNORM, width, height, GL_NEAREST);
+  depth_ = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
-  glTextureStorage2D(albedo_.id(), 1, GL_RGBA8, width, height);
-  glTextureStorage2D(normal_.id(), 1, GL_RG16_SNORM, width, height);
-  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
-  for (GLuint t : {albedo_.id(), normal_.id(), depth_.id()}) {
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
@@ -38,11 +29,7 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  gl::setMeshPassState();
   const float zero[4] = {0, 0, 0, 0};
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);

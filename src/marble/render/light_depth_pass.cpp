@@ -7,25 +7,15 @@ namespace marble {
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
       program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
-      distance_(gl::Texture::create(GL_TEXTURE_2D)),
-      depth_(gl::Texture::create(GL_TEXTURE_2D)),
+      // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
+      // distance with the "nothing hit" clear value would invent huge entry distances, hence
+      // zero thickness and light leaking through past the terminator.
+      distance_(gl::makeTexture2D(GL_R32F, size, size, GL_NEAREST)),
+      depth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_LINEAR)),
       fbo_(gl::Framebuffer::create()) {
-  glTextureStorage2D(distance_.id(), 1, GL_R32F, size, size);
-  // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
-  // distance with the "nothing hit" clear value would invent huge entry distances, hence
-  // zero thickness and light leaking through past the terminator.
-  glTextureParameteri(distance_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(distance_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(distance_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, distance_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 }
@@ -34,12 +24,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size_, size_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  // Both faces: meshes with holes or inconsistent winding must still block the light.
-  glDisable(GL_CULL_FACE);
+  gl::setMeshPassState();  // both faces: meshes with holes must still block the light
   const float farValue = light.far + 1e3f;  // "nothing hit": a distance beyond every surface
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &farValue);
   const float one = 1.0f;

@@ -10,16 +10,9 @@ void LightingPass::resize(int width, int height) {
   if (width == width_ && height == height_ && fbo_) return;
   width_ = width;
   height_ = height;
-  hdr_ = gl::Texture::create(GL_TEXTURE_2D);
-  entering_ = gl::Texture::create(GL_TEXTURE_2D);
+  hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+  entering_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
   fbo_ = gl::Framebuffer::create();
-  for (GLuint t : {hdr_.id(), entering_.id()}) {
-    glTextureStorage2D(t, 1, GL_RGBA16F, width, height);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
   const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
@@ -37,9 +30,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  gl::setScreenPassState();
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(0, 5, textures);
   const auto& p = program_;

@@ -13,9 +13,7 @@ void PostPass::run(GLuint hdrTexture, GLuint depthTexture, const RenderSettings&
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
   glViewport(0, 0, width, height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  gl::setScreenPassState();
   const GLuint textures[] = {hdrTexture, depthTexture};
   glBindTextures(0, 2, textures);
   program_.set("u_tone_map", settings.mode == RenderMode::Marble ? 1 : 0);

@@ -24,17 +24,10 @@ void SubsurfaceBlurPass::resize(int width, int height) {
   if (width == width_ && height == height_ && resultFbo_) return;
   width_ = width;
   height_ = height;
-  horizontal_ = gl::Texture::create(GL_TEXTURE_2D);
-  result_ = gl::Texture::create(GL_TEXTURE_2D);
+  horizontal_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+  result_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
   horizontalFbo_ = gl::Framebuffer::create();
   resultFbo_ = gl::Framebuffer::create();
-  for (GLuint t : {horizontal_.id(), result_.id()}) {
-    glTextureStorage2D(t, 1, GL_RGBA16F, width, height);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
   glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
   glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
 }
@@ -42,9 +35,7 @@ void SubsurfaceBlurPass::resize(int width, int height) {
 void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene,
                              int height) {
   timer_.begin();
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  gl::setScreenPassState();
   glViewport(0, 0, width_, height_);
   // Pixels per scene unit at view distance 1: proj[1][1] maps tan(fov/2) to 1 = height/2 px.
   const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   ViewOptions view;
   auto* viewCmd = app.add_subcommand("view", "Open the interactive viewer (needs a display)");
   addSceneOptions(*viewCmd, view.scene, true);
-  viewCmd->add_option("--frames", view.frames, "Draw this many frames, then exit (0 = run until closed)")->check(CLI::NonNegativeNumber);
+  viewCmd->add_option("--frames", view.frames, "Draw this many frames, then exit (0 = run until closed)")->check(CLI::Range(0, 1000000000));
   viewCmd->add_option("--screenshot", view.screenshot, "After the last frame, save the whole window (panel included) as PNG");
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from the source tree's shaders/");
 
@@ -57,8 +57,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;  // bad usage: exit code 2, like bad input
+    // Bad usage: one line, exit code 2, like bad input.
+    std::cerr << "marble: " << e.what() << " (see marble --help)\n";
+    return 2;
   }
 
   if (renderCmd->parsed()) return runRenderCommand(render);

@@ -3,6 +3,7 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -55,11 +56,14 @@ std::vector<EGLDisplay> candidateDisplays() {
 }  // namespace
 
 HeadlessContext::HeadlessContext() {
+  // Mesa prints multi-line warnings of its own while probing; our one line says what failed.
+  setenv("EGL_LOG_LEVEL", "fatal", 0);
   std::string lastProblem = "no EGL display available (is libegl-mesa0 installed?)";
   for (EGLDisplay display : candidateDisplays()) {
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor)) {
-      lastProblem = "eglInitialize failed";
+      // Keep an earlier, more telling reason (e.g. "no OpenGL 4.5 core context").
+      if (lastProblem.rfind("no EGL display", 0) == 0) lastProblem = "eglInitialize failed";
       continue;
     }
     if (!eglBindAPI(EGL_OPENGL_API)) {

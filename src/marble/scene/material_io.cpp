@@ -18,6 +18,7 @@ namespace {
 using json = nlohmann::json;
 
 constexpr int kMaxPresetDepth = 8;
+constexpr std::uintmax_t kMaxJsonBytes = 64u << 20;
 
 std::string describe(const json& v) {
   std::string d = v.dump();
@@ -216,6 +217,9 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
                        looksLikePath ? "no such file" : "not a built-in preset (" + knownPresetNames() + ") nor a file");
     }
     if (std::filesystem::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a file");
+    // Not a device or a pipe (/dev/zero would never end), and not absurdly large.
+    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(file, "", "is not a regular file");
+    if (std::filesystem::file_size(path, ec) > kMaxJsonBytes) throw InputError(file, "", "is larger than 64 MiB; not a preset");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(file, "", "cannot open for reading");
     std::ostringstream ss;
@@ -309,7 +313,7 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
     for (const auto& k : keys) all += (all.empty() ? "" : ", ") + k;
     throw InputError("--set", key, "unknown key (known: " + all + ")");
   }
-  auto parseNumber = [](const std::string& s, json& out) {
+  auto parseNumber = [&key](const std::string& s, json& out) {
     const char* b = s.data();
     const char* e = s.data() + s.size();
     while (b < e && *b == ' ') ++b;
@@ -322,6 +326,8 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
     }
     double d = 0;
     if (auto r = std::from_chars(b, e, d); r.ec == std::errc() && r.ptr == e) {
+      // nan and inf parse, but JSON cannot hold them: they would arrive as null.
+      if (!std::isfinite(d)) throw InputError("--set", key, "expected a finite number, got " + std::string(b, e));
       out = d;
       return true;
     }

@@ -158,6 +158,9 @@ std::string readText(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "no such file");
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "", "is a directory, not a file");
+  // Not a device or a pipe (/dev/zero would never end), and not absurdly large.
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string(), "", "is not a regular file");
+  if (std::filesystem::file_size(path, ec) > (64u << 20)) throw InputError(path.string(), "", "is larger than 64 MiB; not a scene");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "", "cannot open for reading");
   std::stringstream ss;

@@ -10,10 +10,8 @@ constexpr int kTaps = 9;  // per side; keep in step with TAPS in subsurface_blur
 }  // namespace
 
 glm::vec3 burleyShapeD(const Material& m) {
-  const glm::vec3 sigmaTr = glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
   const float albedo = 0.8f;
-  const float s = 1.9f - albedo + 3.5f * (albedo - 0.8f) * (albedo - 0.8f);
-  return 1.0f / (glm::max(sigmaTr, glm::vec3(1e-4f)) * s);
+  return 1.0f / (glm::max(m.sigma_a_mm + m.sigma_s_mm, glm::vec3(1e-4f)) * (1.85f - albedo));
 }
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)

@@ -3,11 +3,13 @@
 // distance map and produces the render mode's picture.
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
+#include "deferred_common.glsl"
 
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 // `marble` only: light that entered the stone (diffuse irradiance / PI, before albedo), for
-// the screen-space subsurface blur; o_color then holds what the surface reflects (specular).
+// the screen-space subsurface blur; o_color is then not drawn (the post pass adds what the
+// surface reflects). The pass binds only the output its mode uses.
 layout(location = 1) out vec4 o_diffuse;
 
 layout(binding = 0) uniform sampler2D u_albedo;
@@ -16,15 +18,8 @@ layout(binding = 2) uniform sampler2D u_depth;
 layout(binding = 3) uniform sampler2D u_light_distance;
 layout(binding = 4) uniform sampler2DShadow u_light_shadow;
 
-uniform mat4 u_inv_view_proj;
-uniform vec3 u_camera_pos;
 uniform vec2 u_camera_near_far;
-uniform mat4 u_light_view_proj;
-uniform vec3 u_light_pos;
-uniform vec3 u_light_dir;
-uniform int u_light_directional;
 uniform vec2 u_light_near_far;   // range of distances the light's map can hold
-uniform vec3 u_light_radiance;   // colour x intensity
 
 uniform vec3 u_sigma_t;          // extinction per scene unit, per channel
 uniform float u_k_sss;
@@ -34,7 +29,13 @@ uniform int u_reflectance_first;
 uniform int u_schlick_hn;
 uniform float u_shininess;
 uniform float u_oren_nayar_sigma;
+// The render mode is a constant of the program (LIGHTING_MODE, defined by the lighting pass):
+// one specialized program per mode runs only that mode's code (gl/program_variants.h).
+#ifdef LIGHTING_MODE
+const int u_mode = LIGHTING_MODE;
+#else
 uniform int u_mode;
+#endif
 
 // Physically based marble (mode `marble`).
 uniform float u_mm_per_unit;     // millimetres per scene unit
@@ -43,7 +44,6 @@ uniform float u_ior;
 uniform float u_roughness;
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
-uniform float u_light_texel_world;  // world size of one light-map texel at the object
 
 // Keep in step with marble::RenderMode.
 const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
@@ -66,24 +66,18 @@ float thickness_at(vec3 p) {
 
 #include "marble_shading.glsl"
 
-// The `marble` mode: linear HDR radiance. Light intensity 1 is scaled by PI so a white
-// Lambertian surface facing the light reflects 1.0, as in the paper's modes.
-void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3 reflected) {
+// The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
+// albedo): through the surface from the light and the environment, and through the stone from
+// the light's far side. What the surface reflects is added by the post pass
+// (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
+// Light intensity 1 is scaled by PI so a white Lambertian surface facing the light reflects
+// 1.0, as in the paper's modes.
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   float NoL = dot(N, L);
-  float NoV = max(dot(N, V), 1e-4);
-  vec3 H = normalize(V + L);
-  float a = max(u_roughness * u_roughness, 0.002);
   vec3 F0 = f0_from_ior(u_ior);
   vec3 E = u_light_radiance * PI;
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
-
-  float nl = max(NoL, 0.0);
-  vec3 F = fresnel_schlick(F0, dot(H, V));
-  vec3 specular = ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F;
-  // Energy split: light that is reflected at the surface, on the way in or out, does not
-  // enter the stone (Shirley et al. 1997's coupled diffuse, in Schlick form).
-  vec3 into = (1.0 - fresnel_schlick(F0, nl)) * (1.0 - fresnel_schlick(F0, NoV));
-  vec3 diffuse = into / PI;
+  vec3 entering = marble_surface_entering(N, V, L, E, visible, F0, u_env_intensity);
 
   // Transmission: light that entered where the light's map says and crossed s millimetres of
   // stone to leave here, attenuated per channel by exp(-sigma_tr s) (Jensen et al. 2001's
@@ -92,16 +86,9 @@ void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
   float s_mm = thickness_at(P - N * (2.0 * u_light_texel_world)) * u_mm_per_unit;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  vec3 transmitted = E / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
-                     (1.0 - fresnel_schlick(F0, NoV));
-
-  entering = E * nl * visible * diffuse + transmitted;
-  reflected = E * nl * visible * specular;
-  if (u_env_intensity > 0.0) {
-    vec3 R = reflect(-V, N);
-    entering += u_env_intensity * studio_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV));
-    reflected += u_env_intensity * studio_radiance(R, u_roughness * 1.2) * env_brdf_approx(F0, u_roughness, NoV);
-  }
+  float NoV = max(dot(N, V), 1e-4);
+  return entering + E / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
+                        (1.0 - fresnel_schlick(F0, NoV));
 }
 
 void main() {
@@ -120,18 +107,17 @@ void main() {
     o_color = vec4(0.0);
     return;
   }
-  vec4 world = u_inv_view_proj * vec4(vec3(v_uv, depth) * 2.0 - 1.0, 1.0);
-  vec3 P = world.xyz / world.w;
+  vec3 P = surface_point(v_uv, depth);
   vec3 N = decode_normal(texture(u_normal, v_uv).xy);
   vec3 albedo = texture(u_albedo, v_uv).rgb;
   vec3 V = normalize(u_camera_pos - P);
-  vec3 L = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - P);
+  vec3 L = light_vector(P);
 
   vec3 c;
   if (u_mode == MODE_MARBLE) {
-    vec3 entering;
-    marble_radiance(P, N, V, L, entering, c);
-    o_diffuse = vec4(entering, 1.0);
+    // Alpha 1 marks the surface: the half-resolution blur averages it into coverage.
+    o_diffuse = vec4(marble_entering(P, N, V, L), 1.0);
+    return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;
     if (u_reflectance_first == 0) {

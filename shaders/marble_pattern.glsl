@@ -10,8 +10,18 @@
 
 uniform uint u_pat_seed;
 uniform float u_pat_resolution;
+// The basis and the mapping pick code paths: a program specialized for them (PAT_BASIS,
+// PAT_MAPPING defined by the geometry pass) runs only its own (see gl/program_variants.h).
+#ifdef PAT_BASIS
+const int u_pat_basis = PAT_BASIS;
+#else
 uniform int u_pat_basis;
+#endif
+#ifdef PAT_MAPPING
+const int u_pat_mapping = PAT_MAPPING;
+#else
 uniform int u_pat_mapping;
+#endif
 uniform vec3 u_pat_period;
 uniform float u_pat_turb_power;
 uniform float u_pat_turb_size;

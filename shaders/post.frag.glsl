@@ -1,15 +1,36 @@
 #version 450 core
-// Last pass: from the linear HDR lighting result to the display. For `marble`: exposure,
-// the Khronos PBR Neutral tone map, then the sRGB transfer function. The paper's modes and the
-// buffer views were never colour-managed: they pass through as they are.
+// Last pass: from linear HDR light to the display. For `marble` it first composes the frame:
+// the subsurface-blurred light that entered the stone (half resolution, upsampled) times the
+// albedo, plus what the surface reflects (GGX and the environment, computed here so that a
+// change of gloss re-runs this pass only); then exposure, the Khronos PBR Neutral tone map
+// and the sRGB transfer function. The paper's modes and the buffer views were never
+// colour-managed: they pass through as they are.
+#include "gbuffer.glsl"
+#include "paper_shading.glsl"
+#include "deferred_common.glsl"
+#include "subsurface_common.glsl"
+
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
-layout(binding = 0) uniform sampler2D u_hdr;
-layout(binding = 1) uniform sampler2D u_depth;
+layout(binding = 0) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
+layout(binding = 2) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
+layout(binding = 3) uniform sampler2D u_entering;  // marble: entering light, full resolution
+layout(binding = 4) uniform sampler2D u_albedo;
+layout(binding = 5) uniform sampler2D u_normal;
+layout(binding = 6) uniform sampler2DShadow u_light_shadow;
+// Composing `marble` or passing another mode through: a constant of the program
+// (COMPOSE_MARBLE 0 or 1, defined by the post pass; gl/program_variants.h).
+const int u_compose_marble = COMPOSE_MARBLE;
+uniform int u_output_linear;      // 1: the linear HDR image with coverage in alpha (--hdr)
 uniform int u_tone_map;
 uniform int u_paint_background;   // 0 for views that are not of the camera's G-buffer
 uniform float u_exposure_scale;   // 2^exposure
 uniform vec3 u_background;
+uniform float u_ior;
+uniform float u_roughness;
+uniform float u_env_intensity;
+
+#include "marble_shading.glsl"
 
 // Khronos PBR Neutral tone mapper (Khronos 3D Commerce, 2024): keeps base colours within
 // [0, 0.8] as they are, compresses highlights, desaturates the brightest toward white.
@@ -34,10 +55,34 @@ vec3 srgb_encode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
+// The `marble` frame at a surface pixel: diffused light x albedo + reflected light.
+vec3 marble_compose(float depth) {
+  vec3 P = surface_point(v_uv, depth);
+  vec3 N = decode_normal(texture(u_normal, v_uv).xy);
+  vec3 V = normalize(u_camera_pos - P);
+  vec3 L = light_vector(P);
+  vec3 E = u_light_radiance * PI;
+  float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
+  // Where no half-resolution neighbour on the same surface exists (thin slivers), the
+  // unblurred light.
+  vec4 b = upsample_blurred(u_blurred, ivec2(gl_FragCoord.xy), depth);
+  vec3 diffuse = b.a > 0.0 ? b.rgb : texture(u_entering, v_uv).rgb;
+  return diffuse * texture(u_albedo, v_uv).rgb +
+         marble_reflected(N, V, L, E, visible, f0_from_ior(u_ior), u_roughness, u_env_intensity);
+}
+
 void main() {
-  vec3 c = texture(u_hdr, v_uv).rgb;
+  float depth = texture(u_depth, v_uv).r;
+  bool surface = depth < 1.0;
+  vec3 c;
+  if (u_compose_marble == 1) c = surface ? marble_compose(depth) : vec3(0.0);
+  else c = texture(u_hdr, v_uv).rgb;
+  if (u_output_linear == 1) {
+    o_color = vec4(c, surface ? 1.0 : 0.0);
+    return;
+  }
   if (u_tone_map == 1) c = srgb_encode(pbr_neutral(c * u_exposure_scale));
   // The background colour is a display colour: it is not tone mapped.
-  if (u_paint_background == 1 && texture(u_depth, v_uv).r >= 1.0) c = u_background;
+  if (u_paint_background == 1 && !surface) c = u_background;
   o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
 }

@@ -65,7 +65,7 @@ TEST(CliBench, MotionsRunThePassesTheyChange) {
     int lightDepth, geometry, lighting;
   };
   for (const Case& c : {Case{"none", 0, 0, 0}, Case{"camera", 0, 3, 3}, Case{"light", 3, 0, 3}, Case{"both", 3, 3, 3},
-                        Case{"params", 0, 0, 3}}) {
+                        Case{"params", 0, 0, 0}, Case{"scattering", 0, 0, 3}, Case{"pattern", 0, 3, 0}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
     EXPECT_EQ(j.value("motion", ""), c.motion);

@@ -33,7 +33,7 @@ fi
 [[ -x "$MARBLE" ]] || { echo "render-reference: no marble binary at $MARBLE (build first, or set MARBLE=)" >&2; exit 1; }
 mkdir -p "$OUT"
 
-printf '%-14s %-7s %7s %7s %7s %7s\n' scene mode IoU k relRMSE SSIM
+printf '%-14s %-11s %7s %7s %7s %7s\n' scene mode IoU k relRMSE SSIM
 for scene in "$ROOT"/tools/reference-scenes/*.json; do
   name="$(basename "$scene" .json)"
   ref="$OUT/$name.cycles.exr"
@@ -41,13 +41,16 @@ for scene in "$ROOT"/tools/reference-scenes/*.json; do
     blender -b --factory-startup -P "$ROOT/tools/cycles_reference.py" -- "$scene" "$ref" --samples "$SAMPLES" \
       > "$OUT/$name.cycles.log" 2>&1 || { echo "render-reference: Cycles failed on $name, see $OUT/$name.cycles.log" >&2; exit 1; }
   fi
-  for mode in marble paper; do
-    "$MARBLE" render "$scene" --mode "$mode" -o "$OUT/$name.$mode.png" --hdr "$OUT/$name.$mode.exr" > /dev/null
+  # marble-full: the marble mode with its subsurface blur at full resolution (the default is half).
+  for mode in marble marble-full paper; do
+    args=(--mode "${mode%-full}")
+    [[ $mode == *-full ]] && args+=(--subsurface-resolution full)
+    "$MARBLE" render "$scene" "${args[@]}" -o "$OUT/$name.$mode.png" --hdr "$OUT/$name.$mode.exr" > /dev/null
     "$MARBLE" compare "$ref" "$OUT/$name.$mode.exr" --json > "$OUT/$name.$mode.json"
     python3 - "$OUT/$name.$mode.json" "$name" "$mode" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
-print("%-14s %-7s %7.4f %7.3f %7.4f %7.4f" % (sys.argv[2], sys.argv[3], j["iou"], j["scale"], j["relative_rmse"], j["ssim"]))
+print("%-14s %-11s %7.4f %7.3f %7.4f %7.4f" % (sys.argv[2], sys.argv[3], j["iou"], j["scale"], j["relative_rmse"], j["ssim"]))
 PY
   done
 done

@@ -25,7 +25,9 @@ constexpr Named kMotions[] = {{BenchMotion::None, "none"},
                               {BenchMotion::Camera, "camera"},
                               {BenchMotion::Light, "light"},
                               {BenchMotion::Both, "both"},
-                              {BenchMotion::Params, "params"}};
+                              {BenchMotion::Params, "params"},
+                              {BenchMotion::Scattering, "scattering"},
+                              {BenchMotion::Pattern, "pattern"}};
 
 void orbitCamera(Camera& camera, int frame) {
   Orbit orbit = Orbit::fromPosition(camera.position, camera.target);
@@ -40,14 +42,25 @@ void turnLight(Light& light, int frame) {
   light.position = glm::vec3(glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0)) * glm::vec4(light.position, 1.0f));
 }
 
-void moveLightingParameter(Material& m, int frame) {
+// sin of distinct integers never repeats, so every frame sees new values.
+float wave(int frame) { return std::sin(0.7f * static_cast<float>(frame)); }
+
+void moveGloss(Material& m, int frame) {
   // Lighting-only parameters, so the G-buffer stays valid: the "re-shade from the G-buffer"
-  // case. k_schlick is what the paper's mode reads, roughness what `marble` reads; a pattern
-  // parameter would force the geometry pass. sin of distinct integers never repeats, so
-  // every frame sees new values.
-  const float wave = std::sin(0.7f * static_cast<float>(frame));
-  m.k_schlick = std::clamp(m.k_schlick + 0.3f * wave, 0.0f, 1.0f);
-  m.roughness = std::clamp(m.roughness * (1.0f + 0.5f * wave), 0.02f, 1.0f);
+  // case. k_schlick is what the paper's mode reads, roughness what `marble` reads (in its
+  // post pass: the light entering the stone does not depend on it).
+  m.k_schlick = std::clamp(m.k_schlick + 0.3f * wave(frame), 0.0f, 1.0f);
+  m.roughness = std::clamp(m.roughness * (1.0f + 0.5f * wave(frame)), 0.02f, 1.0f);
+}
+
+void moveScattering(Material& m, int frame) {
+  // How far light spreads in the stone: the light entering it and its blur change.
+  m.sigma_s_mm *= 1.0f + 0.3f * wave(frame);
+}
+
+void movePattern(Material& m, int frame) {
+  // The veins' turbulence: the albedo in the G-buffer changes.
+  m.turb_power = std::max(0.0f, m.turb_power * (1.0f + 0.3f * wave(frame)));
 }
 
 }  // namespace
@@ -55,7 +68,7 @@ void moveLightingParameter(Material& m, int frame) {
 BenchMotion parseBenchMotion(const std::string& name) {
   for (const auto& m : kMotions)
     if (name == m.name) return m.motion;
-  throw InputError("--motion", "", "expected one of none, camera, light, both, params, got \"" + name + "\"");
+  throw InputError("--motion", "", "expected one of none, camera, light, both, params, scattering, pattern, got \"" + name + "\"");
 }
 
 const char* benchMotionName(BenchMotion motion) {
@@ -68,7 +81,9 @@ Scene sceneAtFrame(const Scene& base, BenchMotion motion, int frame) {
   Scene s = base;
   if (motion == BenchMotion::Camera || motion == BenchMotion::Both) orbitCamera(s.camera, frame);
   if (motion == BenchMotion::Light || motion == BenchMotion::Both) turnLight(s.light, frame);
-  if (motion == BenchMotion::Params) moveLightingParameter(s.material, frame);
+  if (motion == BenchMotion::Params) moveGloss(s.material, frame);
+  if (motion == BenchMotion::Scattering) moveScattering(s.material, frame);
+  if (motion == BenchMotion::Pattern) movePattern(s.material, frame);
   return s;
 }
 

@@ -8,7 +8,10 @@
 
 namespace marble {
 
-enum class BenchMotion { None, Camera, Light, Both, Params };
+// params: the gloss (k_schlick, roughness) -- the post pass re-shades;
+// scattering: sigma_s_mm -- the lighting and the subsurface blur re-run;
+// pattern: turb_power -- the geometry pass re-runs (the albedo).
+enum class BenchMotion { None, Camera, Light, Both, Params, Scattering, Pattern };
 
 // "none", "camera", "light", "both", "params"; throws InputError naming --motion otherwise.
 BenchMotion parseBenchMotion(const std::string& name);

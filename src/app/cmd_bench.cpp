@@ -67,7 +67,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   addSceneOptions(cmd, o.scene, true);
   cmd.add_option("--frames", o.frames, "Frames to measure (default 20)");
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
-  cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (default none)");
+  cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");
   cmd.add_flag("--json", o.json, "Print one JSON object instead of the table");
 }
 

@@ -20,6 +20,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--preset", o.preset, "Material preset by name (see `marble presets`) or a preset .json file");
   cmd.add_option("--set", o.sets, "Override one material parameter, key=value (repeatable; keys as in preset files)");
   cmd.add_option("--up", o.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
+  cmd.add_option("--subsurface-resolution", o.subsurfaceResolution,
+                 "marble mode's subsurface blur: half (default, fast) or full (crisper)");
 }
 
 Scene buildScene(const SceneOptions& o) {
@@ -42,6 +44,10 @@ Scene buildScene(const SceneOptions& o) {
       throw InputError("--up", "", "expected one of y, z, x, -y, -z, -x, got \"" + o.up + "\"");
     }
   }
+  if (o.subsurfaceResolution == "half") scene.render.subsurface_resolution = SubsurfaceResolution::Half;
+  else if (o.subsurfaceResolution == "full") scene.render.subsurface_resolution = SubsurfaceResolution::Full;
+  else if (!o.subsurfaceResolution.empty())
+    throw InputError("--subsurface-resolution", "", "expected half or full, got \"" + o.subsurfaceResolution + "\"");
   if (!o.preset.empty()) scene.material = loadPreset(o.preset);
   for (const auto& kv : o.sets) {
     const auto eq = kv.find('=');

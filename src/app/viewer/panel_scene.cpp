@@ -33,7 +33,14 @@ void drawTopBar(ViewerState& s) {
   if (ImGui::Combo("render mode", &mode, names.data(), static_cast<int>(names.size())))
     s.scene.render.mode = static_cast<RenderMode>(mode);
   tooltip("marble: our best. paper: the paper's combination. phong / oren-nayar: comparisons.\n"
-          "subsurface, reflectance: one term alone. albedo ... normal: the buffers. floor: with a floor.");
+          "subsurface, reflectance: one term alone. albedo ... normal: the buffers. floor: the mesh once, flat (the benchmarks' floor).");
+  if (s.scene.render.mode == RenderMode::Marble) {
+    bool fullBlur = s.scene.render.subsurface_resolution == SubsurfaceResolution::Full;
+    if (ImGui::Checkbox("full-resolution blur", &fullBlur))
+      s.scene.render.subsurface_resolution = fullBlur ? SubsurfaceResolution::Full : SubsurfaceResolution::Half;
+    tooltip("The subsurface blur at full resolution: slightly crisper shading, about 4x the blur's cost.\n"
+            "Off: half resolution, for fast interaction.");
+  }
   ImGui::BeginDisabled(!s.undo.canUndo());
   if (ImGui::Button("Undo")) s.requestUndo = true;
   ImGui::EndDisabled();

@@ -38,10 +38,10 @@ void drawPerformanceSection(ViewerState& s) {
   ImGui::TextUnformatted("GPU time per pass:");
   passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
   passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer from the camera. Re-runs when the camera, mesh, size or pattern changes.");
-  passLine("lighting", t.lightingMs, t.lightingRan, "Full-screen shading: subsurface and reflectance. Re-runs when anything but exposure and background changes.");
+  passLine("lighting", t.lightingMs, t.lightingRan, "Screen-space shading inside the object's rectangle. Marble mode: the light entering the stone; re-runs when the light, view, scattering, IOR or translucency changes. Other modes: when anything but exposure and background changes.");
   if (s.scene.render.mode == RenderMode::Marble)
-    passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode), with the lighting.");
-  passLine("post", t.postMs, true, "Tone mapping and output to the view. Runs every frame.");
+    passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");
+  passLine("post", t.postMs, true, "Marble mode: blurred light x albedo + reflections (gloss changes re-run only this), then tone mapping. Output to the view. Runs every frame.");
   if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
 }
 

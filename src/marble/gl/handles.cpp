@@ -22,12 +22,14 @@ void setMeshPassState() {
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void setScreenPassState() {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace marble::gl

@@ -7,7 +7,24 @@
 namespace marble {
 
 GeometryPass::GeometryPass(const ShaderLibrary& shaders)
-    : program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "geometry.frag.glsl"}}) {}
+    : programs_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "geometry.frag.glsl"}}) {
+  programs_.get(variantFor(Material{}));  // the default material's, so a broken shader shows at once
+}
+
+std::vector<std::string> GeometryPass::variantFor(const Material& m) {
+  return {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
+          "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+}
+
+void GeometryPass::compileAll() {
+  for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
+    for (PatternMapping p : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
+      Material m;
+      m.basis = b;
+      m.mapping = p;
+      programs_.get(variantFor(m));
+    }
+}
 
 void GeometryPass::resize(int width, int height) {
   if (width == width_ && height == height_ && fbo_) return;
@@ -35,11 +52,12 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
-  program_.set("u_model", model);
-  program_.set("u_view_proj", camera.viewProj);
-  program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  applyPatternUniforms(program_.id(), material);
-  glUseProgram(program_.id());
+  const gl::Program& program = programs_.get(variantFor(material));
+  program.set("u_model", model);
+  program.set("u_view_proj", camera.viewProj);
+  program.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  applyPatternUniforms(program.id(), material);
+  glUseProgram(program.id());
   mesh.draw();
   timer_.end();
 }

@@ -26,6 +26,13 @@ GpuMesh::GpuMesh(const Mesh& mesh)
   glVertexArrayAttribBinding(vao_.id(), 0, 0);
   glVertexArrayAttribBinding(vao_.id(), 1, 0);
   indexCount_ = static_cast<GLsizei>(mesh.indices.size());
+  if (!mesh.positions.empty()) {
+    boundsMin_ = boundsMax_ = mesh.positions.front();
+    for (const glm::vec3& p : mesh.positions) {
+      boundsMin_ = glm::min(boundsMin_, p);
+      boundsMax_ = glm::max(boundsMax_, p);
+    }
+  }
 }
 
 void GpuMesh::draw() const {

@@ -13,12 +13,16 @@ public:
   size_t triangleCount() const { return indexCount_ / 3; }
   size_t bytes() const { return bytes_; }
   bool empty() const { return indexCount_ == 0; }
+  // Object-space bounding box of the positions (for the screen passes' scissor rectangle).
+  const glm::vec3& boundsMin() const { return boundsMin_; }
+  const glm::vec3& boundsMax() const { return boundsMax_; }
 
 private:
   gl::Buffer vertices_, indices_;
   gl::VertexArray vao_;
   GLsizei indexCount_ = 0;
   size_t bytes_ = 0;
+  glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
 };
 
 }  // namespace marble

@@ -1,10 +1,23 @@
 #include "marble/render/lighting_pass.h"
 
+#include "marble/render/frame_uniforms.h"
+
 namespace marble {
 
 LightingPass::LightingPass(const ShaderLibrary& shaders)
-    : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
-      emptyVao_(gl::VertexArray::create()) {}
+    : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
+      emptyVao_(gl::VertexArray::create()) {
+  programs_.get(variantFor(RenderMode::Marble));  // the default mode's, so a broken shader shows at once
+}
+
+std::vector<std::string> LightingPass::variantFor(RenderMode mode) {
+  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode))};
+}
+
+void LightingPass::compileAll() {
+  for (size_t i = 0; i < renderModeNames().size(); ++i)
+    if (static_cast<RenderMode>(i) != RenderMode::Floor) programs_.get(variantFor(static_cast<RenderMode>(i)));
+}
 
 void LightingPass::resize(int width, int height) {
   if (width == width_ && height == height_ && fbo_) return;
@@ -12,11 +25,13 @@ void LightingPass::resize(int width, int height) {
   height_ = height;
   hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
   entering_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+  // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
-  const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 2, bufs);
+  enteringFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
+  const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(enteringFbo_.id(), 2, bufs);
 }
 
 // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).
@@ -25,24 +40,26 @@ static glm::vec3 transportCoefficient(const Material& m) {
 }
 
 void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
-                       const Light& light, const Material& m, const Scene& scene, float lightTexelWorld) {
+                       const Light& light, const Material& m, const Scene& scene, float lightTexelWorld,
+                       const ScreenRect& rect) {
   const RenderSettings& settings = scene.render;
+  const bool marble = settings.mode == RenderMode::Marble;
+  const GLuint fbo = marble ? enteringFbo_.id() : fbo_.id();
   timer_.begin();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, width_, height_);
   gl::setScreenPassState();
+  // Outside the rectangle there is no surface: zero light.
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
+  // The light's own map is shown whole; every other output only where the mesh can be.
+  if (settings.mode != RenderMode::LightDepth) scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(0, 5, textures);
-  const auto& p = program_;
-  p.set("u_inv_view_proj", camera.invViewProj);
-  p.set("u_camera_pos", camera.position);
+  const gl::Program& p = programs_.get(variantFor(settings.mode));
+  setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
-  p.set("u_light_view_proj", lightM.viewProj);
-  p.set("u_light_pos", lightM.position);
-  p.set("u_light_dir", lightM.direction);
-  p.set("u_light_directional", lightM.directional ? 1 : 0);
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
-  p.set("u_light_radiance", light.color * light.intensity);
   p.set("u_sigma_t", m.sigma_t);
   p.set("u_k_sss", m.k_sss);
   p.set("u_k_schlick", m.k_schlick);
@@ -51,18 +68,21 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_schlick_hn", m.schlick_cos == SchlickCosine::HdotN ? 1 : 0);
   p.set("u_shininess", m.shininess);
   p.set("u_oren_nayar_sigma", m.oren_nayar_sigma);
-  p.set("u_mode", static_cast<int>(settings.mode));
   p.set("u_mm_per_unit", scene.mm_per_unit);
   p.set("u_sigma_tr_mm", transportCoefficient(m));
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);
-  p.set("u_env_intensity", settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f);
-  p.set("u_light_texel_world", lightTexelWorld);
+  p.set("u_env_intensity", environmentIntensity(settings));
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  scissorOff();
   timer_.end();
+}
+
+float environmentIntensity(const RenderSettings& settings) {
+  return settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f;
 }
 
 }  // namespace marble

@@ -1,9 +1,11 @@
 #pragma once
-// Pass 3: full screen. Reads the G-buffer and the light's distance map; writes the render
+// Pass 3: screen space. Reads the G-buffer and the light's distance map; writes the render
 // mode's picture, linear and unclamped, into its own RGBA16F target (read by PostPass and by
-// `--hdr`).
-#include "marble/gl/program.h"
+// `--hdr`) -- or, for `marble`, the light entering the stone (read by the subsurface blur and
+// the post pass, which adds the reflected light).
+#include "marble/gl/program_variants.h"
 #include "marble/render/pass_timer.h"
+#include "marble/render/screen_rect.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
 
@@ -17,21 +19,28 @@ class LightingPass {
 public:
   explicit LightingPass(const ShaderLibrary& shaders);
   void resize(int width, int height);
+  // Draws inside `rect` only (everything else is cleared to zero), except the light-depth view.
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           const Material& material, const Scene& scene, float lightTexelWorld);
-  GLuint hdrTexture() const { return hdr_.id(); }
+           const Material& material, const Scene& scene, float lightTexelWorld, const ScreenRect& rect);
+  GLuint hdrTexture() const { return hdr_.id(); }  // every mode but `marble`: the picture
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
-  GLuint fbo() const { return fbo_.id(); }
+  GLuint fbo() const { return fbo_.id(); }  // hdrTexture's
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
   PassTimer& timer() { return timer_; }
+  // Compiles the program of every mode now (after a shader reload).
+  void compileAll();
 
 private:
-  gl::Program program_;
+  static std::vector<std::string> variantFor(RenderMode mode);
+  gl::ProgramVariants programs_;
   gl::Texture hdr_, entering_;
-  gl::Framebuffer fbo_;
+  gl::Framebuffer fbo_, enteringFbo_;
   int width_ = 0, height_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
 };
+
+// The environment's strength as the shaders take it: 0 = no environment light.
+float environmentIntensity(const RenderSettings& settings);
 
 }  // namespace marble

@@ -2,9 +2,9 @@
 
 namespace marble {
 
-OffscreenTarget::OffscreenTarget(int width, int height)
+OffscreenTarget::OffscreenTarget(int width, int height, GLenum internalFormat)
     : width_(width), height_(height), color_(gl::Texture::create(GL_TEXTURE_2D)), fbo_(gl::Framebuffer::create()) {
-  glTextureStorage2D(color_.id(), 1, GL_RGBA8, width, height);
+  glTextureStorage2D(color_.id(), 1, internalFormat, width, height);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// An RGBA8 colour framebuffer of a fixed size for headless rendering, with read-back.
+// A colour framebuffer of a fixed size for headless rendering (RGBA8 unless told), with
+// read-back of the RGBA8 kind.
 #include "marble/core/image.h"
 #include "marble/gl/handles.h"
 
@@ -7,11 +8,11 @@ namespace marble {
 
 class OffscreenTarget {
 public:
-  OffscreenTarget(int width, int height);
+  OffscreenTarget(int width, int height, GLenum internalFormat = GL_RGBA8);
   GLuint fbo() const { return fbo_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
-  ImageRGBA8 read() const;  // top row first
+  ImageRGBA8 read() const;  // top row first; RGBA8 targets only
 
 private:
   int width_, height_;

@@ -2,27 +2,56 @@
 
 #include <cmath>
 
+#include "marble/render/frame_uniforms.h"
+#include "marble/render/lighting_pass.h"
+#include "marble/render/subsurface_blur_pass.h"
+
 namespace marble {
 
 PostPass::PostPass(const ShaderLibrary& shaders)
-    : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
-      emptyVao_(gl::VertexArray::create()) {}
+    : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
+      emptyVao_(gl::VertexArray::create()) {
+  compileAll();  // two small programs
+}
 
-void PostPass::run(GLuint hdrTexture, GLuint depthTexture, const RenderSettings& settings, GLuint targetFbo, int width,
-                   int height) {
+void PostPass::compileAll() { programs_.compile({{"COMPOSE_MARBLE 0"}, {"COMPOSE_MARBLE 1"}}); }
+
+void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width,
+                   int height, const ScreenRect& rect, bool linearOutput) {
+  const RenderSettings& settings = scene.render;
+  const bool marble = settings.mode == RenderMode::Marble;
+  const bool wholeFrame = settings.mode == RenderMode::LightDepth;  // not a view of the G-buffer
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
   glViewport(0, 0, width, height);
   gl::setScreenPassState();
-  const GLuint textures[] = {hdrTexture, depthTexture};
-  glBindTextures(0, 2, textures);
-  program_.set("u_tone_map", settings.mode == RenderMode::Marble ? 1 : 0);
-  program_.set("u_exposure_scale", std::exp2(settings.exposure));
-  program_.set("u_paint_background", settings.mode == RenderMode::LightDepth ? 0 : 1);
-  program_.set("u_background", settings.background);
-  glUseProgram(program_.id());
+  if (!wholeFrame) {
+    // Where the mesh cannot be: the background colour (a display colour, as the shader
+    // paints it), or zero light and zero coverage for the linear picture.
+    const glm::vec4 clear = linearOutput ? glm::vec4(0.0f) : glm::vec4(glm::clamp(settings.background, 0.0f, 1.0f), 1.0f);
+    scissorTo({0, 0, width, height});  // the target may be larger than the frame
+    glClearBufferfv(GL_COLOR, 0, &clear.x);
+    scissorTo(rect);
+  }
+  const GLuint textures[] = {in.hdr, in.depth, in.blurred, in.entering, in.albedo, in.normal, in.lightShadow};
+  glBindTextures(0, 7, textures);
+  const gl::Program& p = programs_.get({marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0"});
+  p.set("u_output_linear", linearOutput ? 1 : 0);
+  p.set("u_tone_map", marble ? 1 : 0);
+  p.set("u_exposure_scale", std::exp2(settings.exposure));
+  p.set("u_paint_background", wholeFrame ? 0 : 1);
+  p.set("u_background", settings.background);
+  if (marble) {
+    setFrameUniforms(p, view.camera, view.light, scene.light, view.lightTexelWorld);
+    p.set("u_ior", scene.material.ior);
+    p.set("u_roughness", scene.material.roughness);
+    p.set("u_env_intensity", environmentIntensity(settings));
+    setSubsurfaceUniforms(p, view.camera, scene, height);
+  }
+  glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  scissorOff();
   timer_.end();
 }
 

@@ -1,21 +1,43 @@
 #pragma once
-// Last pass: the lighting pass's linear HDR image to the target framebuffer. The `marble`
-// mode is exposed, tone mapped (Khronos PBR Neutral) and sRGB-encoded; the paper's modes and
-// the buffer views pass through unchanged.
-#include "marble/gl/program.h"
+// Last pass: linear HDR light to the target framebuffer. For `marble` it also composes the
+// frame (the subsurface-blurred light times the albedo, plus the reflected light: GGX and the
+// environment), then exposes, tone maps (Khronos PBR Neutral) and sRGB-encodes it; the
+// paper's modes and the buffer views pass through unchanged. It draws only inside the mesh's
+// screen rectangle; the rest of the target is cleared to the background colour.
+#include "marble/gl/program_variants.h"
 #include "marble/render/pass_timer.h"
+#include "marble/render/screen_rect.h"
+#include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
 
+struct PostInputs {
+  GLuint hdr = 0;    // every mode but `marble`: the lighting pass's picture
+  GLuint depth = 0;  // the G-buffer's depth (where the background is)
+  // `marble` only:
+  GLuint blurred = 0, entering = 0, albedo = 0, normal = 0, lightShadow = 0;
+};
+
+// The frame's camera and light (the `marble` composition needs them).
+struct PostView {
+  const CameraMatrices& camera;
+  const LightMatrices& light;
+  float lightTexelWorld;
+};
+
 class PostPass {
 public:
   explicit PostPass(const ShaderLibrary& shaders);
-  void run(GLuint hdrTexture, GLuint depthTexture, const RenderSettings& settings, GLuint targetFbo, int width, int height);
+  // linearOutput: write the linear HDR picture (coverage in alpha) instead of the display
+  // picture -- what `--hdr` saves, composed by the same code as what is shown.
+  void run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width, int height,
+           const ScreenRect& rect, bool linearOutput = false);
   PassTimer& timer() { return timer_; }
+  void compileAll();
 
 private:
-  gl::Program program_;
+  gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
   PassTimer timer_;
 };

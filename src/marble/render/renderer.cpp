@@ -24,13 +24,27 @@ bool samePattern(const Material& a, const Material& b) {
 }
 
 namespace {
-bool sameLightingInputs(const Scene& a, const Scene& b) {
-  return a.material == b.material && a.mm_per_unit == b.mm_per_unit && a.light.type == b.light.type &&
-         a.light.position == b.light.position && a.light.color == b.light.color &&
+bool sameView(const Scene& a, const Scene& b) {
+  return a.light.type == b.light.type && a.light.position == b.light.position && a.light.color == b.light.color &&
          a.light.intensity == b.light.intensity && a.camera.position == b.camera.position &&
-         a.camera.target == b.camera.target && a.camera.up == b.camera.up && a.camera.fov_y_deg == b.camera.fov_y_deg &&
-         a.render.mode == b.render.mode && a.render.environment == b.render.environment &&
-         a.render.environment_intensity == b.render.environment_intensity;
+         a.camera.target == b.camera.target && a.camera.up == b.camera.up &&
+         a.camera.fov_y_deg == b.camera.fov_y_deg && a.render.mode == b.render.mode &&
+         a.render.environment == b.render.environment &&
+         a.render.environment_intensity == b.render.environment_intensity &&
+         a.render.subsurface_resolution == b.render.subsurface_resolution;
+}
+// What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer
+// and the light's map. For `marble` that is the light entering the stone: the scattering
+// coefficients, the index of refraction (the energy split), the translucency and the scale --
+// not the albedo or the gloss, which the post pass applies. The other modes read the whole
+// material.
+bool sameLightingInputs(const Scene& a, const Scene& b) {
+  if (!sameView(a, b)) return false;
+  if (a.render.mode != RenderMode::Marble) return a.material == b.material;
+  const Material& m = a.material;
+  const Material& n = b.material;
+  return a.mm_per_unit == b.mm_per_unit && m.sigma_a_mm == n.sigma_a_mm && m.sigma_s_mm == n.sigma_s_mm &&
+         m.ior == n.ior && m.translucency == n.translucency;
 }
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
@@ -52,6 +66,10 @@ void Renderer::setMesh(const Mesh& mesh) {
 
 void Renderer::reloadShaders() {
   auto fresh = std::make_unique<Passes>(shaders_);  // throws on error; old passes stay
+  // Every specialized program now, not at its first use: an error must show here, while
+  // the previous programs are still in use.
+  fresh->geometry.compileAll();
+  fresh->lighting.compileAll();
   passes_ = std::move(fresh);
   invalidate();
 }
@@ -59,21 +77,23 @@ void Renderer::reloadShaders() {
 void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
-  times_.lightDepthRan = times_.geometryRan = false;
+  times_.lightDepthRan = times_.geometryRan = times_.lightingRan = false;
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
     return;
   }
   const LightMatrices light = lightMatrices(scene.light);
-  if (!lightValid_ || !sameMatrix(light.viewProj, lastLight_.viewProj) || !sameMatrix(model, lastModel_)) {
+  const bool modelMoved = !sameMatrix(model, lastModel_);
+  if (!lightValid_ || !sameMatrix(light.viewProj, lastLight_.viewProj) || modelMoved) {
     passes_->lightDepth.run(*mesh_, model, light);
     lightValid_ = true;
     times_.lightDepthRan = true;
   }
   passes_->geometry.resize(width, height);
-  if (!geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || !sameMatrix(model, lastModel_) ||
-      !samePattern(scene.material, lastMaterial_)) {
+  const bool viewMoved = !geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || modelMoved ||
+                         width != lastWidth_ || height != lastHeight_;
+  if (viewMoved || !samePattern(scene.material, lastMaterial_)) {
     passes_->geometry.run(*mesh_, model, camera, scene.material);
     geometryValid_ = true;
     times_.geometryRan = true;
@@ -82,36 +102,42 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastCamera_ = camera;
   lastModel_ = model;
   lastMaterial_ = scene.material;
-  const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
-                          passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
-                          passes_->lightDepth.depthTexture()};
-  // Lighting and blur depend on everything but the exposure and the background (post-only).
-  Scene lightingScene = scene;
-  lightingScene.render.exposure = 0.0f;
-  lightingScene.render.background = glm::vec3(0.0f);
-  const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !times_.geometryRan && width == lastWidth_ &&
-                               height == lastHeight_ && sameLightingInputs(lightingScene, lastLightingScene_);
-  times_.lightingRan = !lightingCurrent;
+  const ScreenRect rect =
+      projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
+  const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
+  // Lighting and blur depend on neither the exposure nor the background (post-only), nor --
+  // for `marble` -- on the albedo (so a pattern change that re-ran the geometry pass alone
+  // does not re-run them).
+  const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !viewMoved &&
+                               sameLightingInputs(scene, lastLightingScene_);
+  const bool marble = scene.render.mode == RenderMode::Marble;
   if (!lightingCurrent) {
+    const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
+                            passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
+                            passes_->lightDepth.depthTexture()};
     passes_->lighting.resize(width, height);
-    const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
-    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
-    finalHdrTexture_ = passes_->lighting.hdrTexture();
-    finalHdrFbo_ = passes_->lighting.fbo();
-    if (scene.render.mode == RenderMode::Marble) {
-      passes_->blur.resize(width, height);
-      passes_->blur.run({passes_->lighting.enteringTexture(), passes_->lighting.hdrTexture(),
-                         passes_->geometry.albedoTexture(), passes_->geometry.depthTexture()},
-                        camera, scene, height);
-      finalHdrTexture_ = passes_->blur.resultTexture();
-      finalHdrFbo_ = passes_->blur.resultFbo();
+    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect);
+    if (marble) {
+      passes_->blur.resize(width, height, subsurfaceScale(scene.render));
+      passes_->blur.run({passes_->lighting.enteringTexture(), passes_->geometry.depthTexture()}, camera, scene, height,
+                        rect);
     }
+    times_.lightingRan = true;
     lightingValid_ = true;
-    lastLightingScene_ = lightingScene;
-    lastWidth_ = width;
-    lastHeight_ = height;
+    lastLightingScene_ = scene;
   }
-  passes_->post.run(finalHdrTexture_, passes_->geometry.depthTexture(), scene.render, targetFbo, width, height);
+  lastWidth_ = width;
+  lastHeight_ = height;
+  lastScene_ = scene;
+  lastRect_ = rect;
+  lastLightTexelWorld_ = lightTexelWorld;
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld}, targetFbo, width, height, rect);
+}
+
+PostInputs Renderer::postInputs() const {
+  return {passes_->lighting.hdrTexture(),      passes_->geometry.depthTexture(), passes_->blur.resultTexture(),
+          passes_->lighting.enteringTexture(), passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
+          passes_->lightDepth.depthTexture()};
 }
 
 PassTimes Renderer::passTimes(bool wait) {
@@ -130,17 +156,17 @@ size_t Renderer::glBytes() const {
          (mesh_ ? mesh_->bytes() : 0);
 }
 
-ImageRGBF Renderer::readHdr() const {
-  const GLuint fbo = finalHdrFbo_;
-  GLint w = 0, h = 0;
-  glGetNamedFramebufferAttachmentParameteriv(fbo, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &w);
-  const auto texture = static_cast<GLuint>(w);
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
+ImageRGBF Renderer::readHdr() {
+  const int w = lastWidth_, h = lastHeight_;
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
+  if (!geometryValid_ || w <= 0 || h <= 0) return img;
+  // The last frame once more, through the same post pass, into a float target, linear.
+  if (!hdrReadback_ || hdrReadback_->width() != w || hdrReadback_->height() != h)
+    hdrReadback_.emplace(w, h, GL_RGBA32F);
+  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_}, hdrReadback_->fbo(), w,
+                    h, lastRect_, /*linearOutput=*/true);
   std::vector<float> rows(img.pixels.size());
-  glNamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, hdrReadback_->fbo());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rows.data());
   const size_t row = static_cast<size_t>(w) * 3;

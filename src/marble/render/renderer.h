@@ -1,8 +1,11 @@
 #pragma once
-// The renderer owns the passes and runs them in order:
-//   1 light depth  -> only when the light, the mesh or the model transform changed
-//   2 geometry     -> only when the camera, the mesh, the size or the pattern changed
-//   3 lighting     -> every frame (cheap, full screen)
+// The renderer owns the passes and runs them in order, each only when its inputs changed:
+//   1 light depth      -> the light, the mesh or the model transform changed
+//   2 geometry         -> the camera, the mesh, the size or the pattern changed
+//   3 lighting         -> 1 or the view ran, or what it reads of the material changed
+//   4 subsurface blur  -> with 3 (`marble` only; half resolution)
+//   5 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
+// The screen passes (3-5) draw only inside the mesh's screen rectangle.
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
@@ -12,6 +15,7 @@
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_depth_pass.h"
+#include "marble/render/offscreen_target.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
@@ -38,7 +42,8 @@ public:
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
   // The last frame's linear HDR image (before tone mapping), top row first. Not for `floor`.
-  ImageRGBF readHdr() const;
+  // Re-runs the last frame's post pass into a float target.
+  ImageRGBF readHdr();
 
   // GPU times of the last frame's passes; `wait` blocks until they are known.
   PassTimes passTimes(bool wait = false);
@@ -64,12 +69,17 @@ private:
   CameraMatrices lastCamera_{};
   glm::mat4 lastModel_{1.0f};
   Material lastMaterial_{};
-  GLuint finalHdrFbo_ = 0;
-  GLuint finalHdrTexture_ = 0;
   // The lighting (and blur) result is reused when none of its inputs changed.
   bool lightingValid_ = false;
   Scene lastLightingScene_{};
-  int lastWidth_ = 0, lastHeight_ = 0;  // where the last frame's linear HDR image is (for readHdr)
+  // The last frame, for readHdr.
+  int lastWidth_ = 0, lastHeight_ = 0;
+  Scene lastScene_{};
+  ScreenRect lastRect_{};
+  float lastLightTexelWorld_ = 0.0f;
+  std::optional<OffscreenTarget> hdrReadback_;
+
+  PostInputs postInputs() const;
 };
 
 // Whether two materials give the same G-buffer albedo (pattern and colour fields).

@@ -18,29 +18,48 @@ SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
-void SubsurfaceBlurPass::resize(int width, int height) {
-  if (width == width_ && height == height_ && resultFbo_) return;
-  width_ = width;
-  height_ = height;
-  horizontal_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
-  result_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+int subsurfaceScale(const RenderSettings& settings) {
+  return settings.subsurface_resolution == SubsurfaceResolution::Half ? 2 : 1;
+}
+
+void SubsurfaceBlurPass::resize(int width, int height, int scale) {
+  const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;  // rounded up
+  if (w == width_ && h == height_ && resultFbo_) return;
+  width_ = w;
+  height_ = h;
+  horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+  result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
   horizontalFbo_ = gl::Framebuffer::create();
   resultFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
   glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
 }
 
+float subsurfaceStepMm(const Material& m) {
+  const glm::vec3 d = burleyShapeD(m);
+  return 2.0f * std::max(d.r, std::max(d.g, d.b)) / static_cast<float>(kTaps);
+}
+
+void setSubsurfaceUniforms(const gl::Program& p, const CameraMatrices& camera, const Scene& scene, int height) {
+  // Pixels per scene unit at view distance 1 (full resolution): proj[1][1] maps tan(fov/2)
+  // to 1 = height/2 px.
+  const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);
+  p.set("u_near_far", glm::vec2(camera.near, camera.far));
+  p.set("u_mm_per_unit", scene.mm_per_unit);
+  p.set("u_pixels_per_mm_at_unit_depth", pxPerUnit / scene.mm_per_unit);
+  p.set("u_reach_mm", subsurfaceStepMm(scene.material) * static_cast<float>(kTaps));
+  p.set("u_scale", subsurfaceScale(scene.render));
+}
+
 void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene,
-                             int height) {
+                             int height, const ScreenRect& rect) {
   timer_.begin();
   gl::setScreenPassState();
   glViewport(0, 0, width_, height_);
-  // Pixels per scene unit at view distance 1: proj[1][1] maps tan(fov/2) to 1 = height/2 px.
-  const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);
   // The taps' weights depend only on the material: the 1D Burley profile
   // exp(-x/d) + exp(-x/(3d)) at x = i * step, taps out to 2 * the widest d.
   const glm::vec3 d = burleyShapeD(scene.material);
-  const float stepMm = 2.0f * std::max(d.r, std::max(d.g, d.b)) / static_cast<float>(kTaps);
+  const float stepMm = subsurfaceStepMm(scene.material);
   glm::vec3 weights[kTaps + 1];
   for (int i = 0; i <= kTaps; ++i) {
     const float x = static_cast<float>(i) * stepMm;
@@ -48,26 +67,29 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   }
   glProgramUniform3fv(program_.id(), program_.location("u_weights"), kTaps + 1, &weights[0].x);
   program_.set("u_step_mm", stepMm);
-  program_.set("u_d_mm", d);
-  program_.set("u_pixels_per_mm_at_unit_depth", pxPerUnit / scene.mm_per_unit);
-  program_.set("u_near_far", glm::vec2(camera.near, camera.far));
-  program_.set("u_mm_per_unit", scene.mm_per_unit);
+  setSubsurfaceUniforms(program_, camera, scene, height);
   glUseProgram(program_.id());
   glBindVertexArray(emptyVao_.id());
 
-  const GLuint first[] = {in.entering, in.depth, in.albedo, in.reflected};
-  glBindTextures(0, 4, first);
+  // Outside the (half-resolution) rectangle: no surface, zero light and zero coverage.
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(horizontalFbo_.id(), GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(resultFbo_.id(), GL_COLOR, 0, zero);
+  scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
+  const GLuint first[] = {in.entering, in.depth};
+  glBindTextures(0, 2, first);
   program_.set("u_direction", glm::vec2(1, 0));
-  program_.set("u_final", 0);
+  program_.set("u_input_full", 1);
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
-  const GLuint second[] = {horizontal_.id(), in.depth, in.albedo, in.reflected};
-  glBindTextures(0, 4, second);
+  const GLuint second[] = {horizontal_.id(), in.depth};
+  glBindTextures(0, 2, second);
   program_.set("u_direction", glm::vec2(0, 1));
-  program_.set("u_final", 1);
+  program_.set("u_input_full", 0);
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  scissorOff();
   timer_.end();
 }
 

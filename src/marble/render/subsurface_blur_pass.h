@@ -1,23 +1,28 @@
 #pragma once
 // Screen-space subsurface scattering for the `marble` mode: two separable passes over the
-// light that entered the stone (shaders/subsurface_blur.frag.glsl), the second multiplying
-// by the albedo and adding the reflected light, giving the final linear HDR image.
+// light that entered the stone (shaders/subsurface_blur.frag.glsl), at half resolution, inside
+// the mesh's screen rectangle; alpha is coverage. The post pass upsamples it (depth-aware),
+// multiplies by the albedo and adds the reflected light.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
+#include "marble/render/screen_rect.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
 
 struct SubsurfaceBlurInputs {
-  GLuint entering, reflected, albedo, depth;
+  GLuint entering, depth;  // full resolution
 };
 
 class SubsurfaceBlurPass {
 public:
   explicit SubsurfaceBlurPass(const ShaderLibrary& shaders);
-  void resize(int width, int height);
-  void run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene, int height);
+  // The frame's size; the pass's targets are 1/scale of it (subsurfaceScale).
+  void resize(int width, int height, int scale);
+  // `height`: the frame's (full-resolution) height; `rect`: the mesh's full-resolution rectangle.
+  void run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene, int height,
+           const ScreenRect& rect);
   GLuint resultTexture() const { return result_.id(); }
   GLuint resultFbo() const { return resultFbo_.id(); }
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
@@ -38,5 +43,15 @@ private:
 // (The diffusion length 1/sigma_tr, about 8 mm, blurred far more than Cycles' random walk
 // does: SSIM against it rose from 0.28-0.72 to 0.54-0.83 with this choice; docs/quality.md.)
 glm::vec3 burleyShapeD(const Material& m);
+
+// 2 when the blur runs at half resolution, 1 at full.
+int subsurfaceScale(const RenderSettings& settings);
+
+// Spacing of the blur's taps in mm (they reach kTaps steps = 2 x the widest d each way).
+float subsurfaceStepMm(const Material& m);
+
+// The uniforms of shaders/subsurface_common.glsl: depth range, millimetre scale on screen
+// (`height`: the full-resolution frame's) and the blur's reach.
+void setSubsurfaceUniforms(const gl::Program& program, const CameraMatrices& camera, const Scene& scene, int height);
 
 }  // namespace marble

@@ -38,6 +38,9 @@ RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_arg
 const std::string& renderModeName(RenderMode mode);
 
 enum class Environment { Studio, None };
+// Where the `marble` mode's subsurface blur runs: at half resolution (a quarter of the pixels;
+// fast, for interaction) or at full resolution (slightly crisper, for final images).
+enum class SubsurfaceResolution { Half, Full };  // "half" | "full"
 
 struct RenderSettings {
   int width = 800;
@@ -47,6 +50,7 @@ struct RenderSettings {
   float exposure = 0.0f;                      // stops, for the `marble` mode's tone mapping
   Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
   float environment_intensity = 0.6f;
+  SubsurfaceResolution subsurface_resolution = SubsurfaceResolution::Half;
 };
 
 struct Scene {

@@ -59,7 +59,9 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
   j["render"] = {{"width", scene.render.width},
                  {"height", scene.render.height},
                  {"background", vec3(scene.render.background)},
-                 {"mode", renderModeName(scene.render.mode)}};
+                 {"mode", renderModeName(scene.render.mode)},
+                 {"subsurface_resolution",
+                  scene.render.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"}};
   return j.dump(2) + "\n";
 }
 

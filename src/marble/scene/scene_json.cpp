@@ -143,6 +143,12 @@ void readRender(const json& j, const std::string& file, RenderSettings& rs, std:
     else r.fail("environment", "expected \"studio\" or \"none\", got \"" + env + "\"");
   }
   r.number("environment_intensity", rs.environment_intensity, 0.0f, 100.0f);
+  std::string sssRes;
+  if (r.string("subsurface_resolution", sssRes)) {
+    if (sssRes == "half") rs.subsurface_resolution = SubsurfaceResolution::Half;
+    else if (sssRes == "full") rs.subsurface_resolution = SubsurfaceResolution::Full;
+    else r.fail("subsurface_resolution", "expected \"half\" or \"full\", got \"" + sssRes + "\"");
+  }
   std::string mode;
   if (r.string("mode", mode)) {
     try {

@@ -1,0 +1,17 @@
+#include "marble/render/frame_uniforms.h"
+
+namespace marble {
+
+void setFrameUniforms(const gl::Program& p, const CameraMatrices& camera, const LightMatrices& lightM,
+                      const Light& light, float lightTexelWorld) {
+  p.set("u_inv_view_proj", camera.invViewProj);
+  p.set("u_camera_pos", camera.position);
+  p.set("u_light_view_proj", lightM.viewProj);
+  p.set("u_light_pos", lightM.position);
+  p.set("u_light_dir", lightM.direction);
+  p.set("u_light_directional", lightM.directional ? 1 : 0);
+  p.set("u_light_radiance", light.color * light.intensity);
+  p.set("u_light_texel_world", lightTexelWorld);
+}
+
+}  // namespace marble

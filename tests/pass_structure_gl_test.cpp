@@ -1,0 +1,157 @@
+// How the `marble` frame is split over passes (issue 8): which pass re-runs for which change,
+// the screen passes' rectangle, the half-resolution subsurface blur, and the specialized
+// programs. Checked on pictures and on Renderer::passTimes' "ran" flags.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "gl_support.h"
+#include "marble/gl/program_variants.h"
+#include "marble/render/screen_rect.h"
+
+using namespace marble;
+using namespace marble::test;
+
+namespace {
+
+Scene marbleScene(const std::string& mesh, int size) {
+  Scene s;
+  s.mesh = "builtin:" + mesh;
+  s.render.width = s.render.height = size;
+  s.render.mode = RenderMode::Marble;
+  return s;
+}
+
+struct PassFixture : ::testing::Test {
+  HeadlessContext& context = glContext();
+  Renderer renderer;
+};
+
+}  // namespace
+
+TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 64);
+  const ImageRGBA8 before = renderImage(renderer, s);
+  s.material.roughness = 0.6f;
+  const ImageRGBA8 after = renderImage(renderer, s);
+  const PassTimes t = renderer.passTimes(true);
+  EXPECT_FALSE(t.lightDepthRan);
+  EXPECT_FALSE(t.geometryRan);
+  EXPECT_FALSE(t.lightingRan);
+  EXPECT_GT(meanAbsDiff(before, after), 0.2) << "the highlight must change";
+}
+
+TEST_F(PassFixture, ScatteringChangeReRunsLightingAndBlurButNotGeometry) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 64);
+  renderImage(renderer, s);
+  s.material.sigma_s_mm *= 0.1f;
+  renderImage(renderer, s);
+  const PassTimes t = renderer.passTimes(true);
+  EXPECT_FALSE(t.geometryRan);
+  EXPECT_TRUE(t.lightingRan);
+}
+
+TEST_F(PassFixture, PatternChangeReRunsGeometryButNotLightingAndMatchesAFreshRender) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 64);
+  renderImage(renderer, s);
+  s.material.vein_color = glm::vec3(0.1f, 0.3f, 0.6f);
+  const ImageRGBA8 cached = renderImage(renderer, s);
+  const PassTimes t = renderer.passTimes(true);
+  EXPECT_TRUE(t.geometryRan);
+  EXPECT_FALSE(t.lightingRan) << "the light entering the stone does not depend on its albedo";
+  Renderer fresh;
+  fresh.setMesh(builtinMesh("sphere"));
+  EXPECT_EQ(meanAbsDiff(cached, renderImage(fresh, s)), 0.0);
+}
+
+TEST_F(PassFixture, ScreenRectangleHoldsEveryPixelOfTheObject) {
+  // In the `normal` view every covered pixel differs from the background; all of them must lie
+  // inside the rectangle the screen passes are scissored to (else the object would be cut).
+  for (const char* mesh : {"sculpture", "torus", "slab"}) {
+    const Mesh m = builtinMesh(mesh);
+    renderer.setMesh(m);
+    Scene s = marbleScene(mesh, 120);
+    s.render.mode = RenderMode::Normal;
+    s.camera.position = glm::vec3(1.2f, 0.8f, 2.6f);  // close: the object fills much of the frame
+    const ImageRGBA8 img = renderImage(renderer, s);
+    glm::vec3 lo = m.positions.front(), hi = lo;
+    for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const CameraMatrices cam = cameraMatrices(s.camera, 1.0f);
+    const ScreenRect r = projectedBounds(lo, hi, cam.viewProj, 120, 120);
+    int covered = 0;
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 120; ++x) {
+        if (glm::length(pixel(img, x, y) - s.render.background) < 0.02f) continue;
+        ++covered;
+        const int glY = 119 - y;  // the image is top row first, GL's rectangle bottom-up
+        EXPECT_TRUE(x >= r.x && x < r.x + r.width && glY >= r.y && glY < r.y + r.height) << mesh << " " << x << "," << y;
+      }
+    EXPECT_GT(covered, 500) << mesh;
+  }
+}
+
+TEST_F(PassFixture, HalfResolutionBlurIsCloseToFullResolution) {
+  renderer.setMesh(builtinMesh("sculpture"));
+  Scene s = marbleScene("sculpture", 128);
+  s.render.subsurface_resolution = SubsurfaceResolution::Full;
+  const ImageRGBA8 full = renderImage(renderer, s);
+  s.render.subsurface_resolution = SubsurfaceResolution::Half;
+  const ImageRGBA8 half = renderImage(renderer, s);
+  EXPECT_TRUE(renderer.passTimes(true).lightingRan) << "the resolution is an input of the blur";
+  const double diff = meanAbsDiff(full, half);
+  EXPECT_GT(diff, 0.0) << "they are different computations";
+  EXPECT_LT(diff, 1.0) << "mean difference in 8-bit levels";
+  // Silhouettes: no rim of pixels turns dark or light where the half-resolution blur has no
+  // coverage (the outline alone is about 800 pixels here); isolated pixels at shadow edges
+  // and depth jumps may differ.
+  int changed = 0;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x)
+      if (glm::length(pixel(full, x, y) - pixel(half, x, y)) > 0.25f) ++changed;
+  EXPECT_LT(changed, 128 * 128 / 100);
+}
+
+TEST_F(PassFixture, HdrReadbackIsTheLastFrameLinear) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 48);
+  renderImage(renderer, s);
+  const ImageRGBF hdr = renderer.readHdr();
+  ASSERT_EQ(hdr.width, 48);
+  ASSERT_EQ(hdr.height, 48);
+  // Centre: lit stone, linear and positive; corner: background, zero light.
+  const size_t centre = (24 * 48 + 24) * 3, corner = 0;
+  EXPECT_GT(hdr.pixels[centre + 1], 0.05f);
+  EXPECT_EQ(hdr.pixels[corner], 0.0f);
+  // Reading does not disturb the next frame's caching.
+  renderImage(renderer, s);
+  EXPECT_FALSE(renderer.passTimes(true).lightingRan);
+}
+
+TEST(ProgramVariants, CompilesEachSetOfDefinesOnceAndReportsErrorsByFile) {
+  glContext();
+  const auto dir = std::filesystem::temp_directory_path() / "marble_variants_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "variant_test.frag.glsl") << "#version 450 core\nout vec4 c;\nvoid main() {\n"
+                                                   "#ifdef BROKEN\n  c = undefined_name;\n#else\n  c = vec4(VALUE);\n#endif\n}\n";
+  std::ofstream(dir / "variant_test.vert.glsl") << "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
+  ShaderLibrary library(dir.string());
+  gl::ProgramVariants variants(library, {{GL_VERTEX_SHADER, "variant_test.vert.glsl"},
+                                         {GL_FRAGMENT_SHADER, "variant_test.frag.glsl"}});
+  const GLuint a = variants.get({"VALUE 1.0"}).id();
+  const GLuint b = variants.get({"VALUE 0.5"}).id();
+  EXPECT_NE(a, b);
+  EXPECT_EQ(variants.get({"VALUE 1.0"}).id(), a) << "kept, not rebuilt";
+  EXPECT_EQ(variants.compiledCount(), 2u);
+  try {
+    variants.get({"BROKEN 1"});
+    FAIL() << "a broken variant must throw";
+  } catch (const gl::ShaderError& e) {
+    EXPECT_NE(std::string(e.what()).find("variant_test.frag.glsl"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(variants.compiledCount(), 2u);
+  std::filesystem::remove_all(dir);
+}

@@ -51,7 +51,7 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
   EXPECT_LE(j.value("frame_ms_min", 0.0), j.value("frame_ms_median", 0.0));
   EXPECT_LE(j.value("frame_ms_median", 0.0), j.value("frame_ms_max", 0.0));
   ASSERT_TRUE(j["passes"].is_object());
-  for (const char* pass : {"light_depth", "geometry", "lighting", "post"}) {
+  for (const char* pass : {"light_depth", "geometry", "albedo", "lighting", "post"}) {
     ASSERT_TRUE(j["passes"].contains(pass)) << pass;
     EXPECT_GE(j["passes"][pass].get<double>(), 0.0) << pass;
   }
@@ -62,15 +62,17 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
 TEST(CliBench, MotionsRunThePassesTheyChange) {
   struct Case {
     const char* motion;
-    int lightDepth, geometry, lighting;
+    int lightDepth, geometry, albedo, lighting;
   };
-  for (const Case& c : {Case{"none", 0, 0, 0}, Case{"camera", 0, 3, 3}, Case{"light", 3, 0, 3}, Case{"both", 3, 3, 3},
-                        Case{"params", 0, 0, 0}, Case{"scattering", 0, 0, 3}, Case{"pattern", 0, 3, 0}}) {
+  for (const Case& c : {Case{"none", 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3}, Case{"light", 3, 0, 0, 3},
+                        Case{"both", 3, 3, 3, 3}, Case{"params", 0, 0, 0, 0}, Case{"scattering", 0, 0, 0, 3},
+                        Case{"pattern", 0, 0, 3, 0}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
     EXPECT_EQ(j.value("motion", ""), c.motion);
     EXPECT_EQ(j["pass_runs"].value("light_depth", -1), c.lightDepth) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("geometry", -1), c.geometry) << c.motion;
+    EXPECT_EQ(j["pass_runs"].value("albedo", -1), c.albedo) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("lighting", -1), c.lighting) << c.motion;
     if (c.geometry == 0) {
       EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";

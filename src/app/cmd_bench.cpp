@@ -35,7 +35,8 @@ std::string glString(GLenum name) {
 // the floor mode is one pass and nothing else.
 std::vector<PassSeries> emptySeries(RenderMode mode) {
   if (mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
-  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"lighting", {}, 0, {}}};
+  std::vector<PassSeries> s = {
+      {"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"albedo", {}, 0, {}}, {"lighting", {}, 0, {}}};
   if (mode == RenderMode::Marble) s.push_back({"subsurface_blur", {}, 0, {}});
   s.push_back({"post", {}, 0, {}});
   return s;
@@ -53,6 +54,7 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
     if (p.name == "post") ms = t.postMs;
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
+    if (p.name == "albedo") ran = t.albedoRan, ms = t.albedoMs;
     p.ms.push_back(ran ? ms : 0.0);
     if (ran) {
       ++p.runs;

@@ -37,7 +37,8 @@ void drawPerformanceSection(ViewerState& s) {
   const PassTimes& t = s.passTimes;
   ImGui::TextUnformatted("GPU time per pass:");
   passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
-  passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer from the camera. Re-runs when the camera, mesh, size or pattern changes.");
+  passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer (normal, depth) from the camera. Re-runs when the camera, mesh or size changes.");
+  passLine("albedo", t.albedoMs, t.albedoRan, "The marble pattern, once per visible pixel. Re-runs with the geometry or when the pattern changes.");
   passLine("lighting", t.lightingMs, t.lightingRan, "Screen-space shading inside the object's rectangle. Marble mode: the light entering the stone; re-runs when the light, view, scattering, IOR or translucency changes. Other modes: when anything but exposure and background changes.");
   if (s.scene.render.mode == RenderMode::Marble)
     passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");

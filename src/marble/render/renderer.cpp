@@ -6,9 +6,11 @@
 namespace marble {
 
 struct Renderer::Passes {
-  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), blur(s), post(s), floor(s) {}
+  explicit Passes(const ShaderLibrary& s)
+      : lightDepth(s), geometry(s), albedo(s), lighting(s), blur(s), post(s), floor(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
+  AlbedoPass albedo;
   LightingPass lighting;
   SubsurfaceBlurPass blur;
   PostPass post;
@@ -68,7 +70,7 @@ void Renderer::reloadShaders() {
   auto fresh = std::make_unique<Passes>(shaders_);  // throws on error; old passes stay
   // Every specialized program now, not at its first use: an error must show here, while
   // the previous programs are still in use.
-  fresh->geometry.compileAll();
+  fresh->albedo.compileAll();
   fresh->lighting.compileAll();
   passes_ = std::move(fresh);
   invalidate();
@@ -77,7 +79,7 @@ void Renderer::reloadShaders() {
 void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
-  times_.lightDepthRan = times_.geometryRan = times_.lightingRan = false;
+  times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = false;
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
@@ -93,26 +95,33 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   passes_->geometry.resize(width, height);
   const bool viewMoved = !geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || modelMoved ||
                          width != lastWidth_ || height != lastHeight_;
-  if (viewMoved || !samePattern(scene.material, lastMaterial_)) {
-    passes_->geometry.run(*mesh_, model, camera, scene.material);
+  if (viewMoved) {
+    passes_->geometry.run(*mesh_, model, camera);
     geometryValid_ = true;
     times_.geometryRan = true;
+  }
+  const ScreenRect rect =
+      projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
+  if (viewMoved || !samePattern(scene.material, lastMaterial_)) {
+    passes_->albedo.resize(width, height);
+    passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
+                        scene.material, rect);
+    times_.albedoRan = true;
   }
   lastLight_ = light;
   lastCamera_ = camera;
   lastModel_ = model;
   lastMaterial_ = scene.material;
-  const ScreenRect rect =
-      projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   // Lighting and blur depend on neither the exposure nor the background (post-only), nor --
-  // for `marble` -- on the albedo (so a pattern change that re-ran the geometry pass alone
-  // does not re-run them).
+  // for `marble` -- on the albedo (a pattern change re-runs the albedo pass alone). The
+  // other modes read the albedo in the lighting pass.
   const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !viewMoved &&
-                               sameLightingInputs(scene, lastLightingScene_);
+                               sameLightingInputs(scene, lastLightingScene_) &&
+                               (scene.render.mode == RenderMode::Marble || !times_.albedoRan);
   const bool marble = scene.render.mode == RenderMode::Marble;
   if (!lightingCurrent) {
-    const LightingInputs in{passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
+    const LightingInputs in{passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
                             passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture()};
     passes_->lighting.resize(width, height);
@@ -136,7 +145,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
 
 PostInputs Renderer::postInputs() const {
   return {passes_->lighting.hdrTexture(),      passes_->geometry.depthTexture(), passes_->blur.resultTexture(),
-          passes_->lighting.enteringTexture(), passes_->geometry.albedoTexture(), passes_->geometry.normalTexture(),
+          passes_->lighting.enteringTexture(), passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
           passes_->lightDepth.depthTexture()};
 }
 
@@ -144,6 +153,7 @@ PassTimes Renderer::passTimes(bool wait) {
   auto get = [wait](PassTimer& t) { return wait ? t.waitMilliseconds() : t.milliseconds(); };
   times_.lightDepthMs = get(passes_->lightDepth.timer());
   times_.geometryMs = get(passes_->geometry.timer());
+  times_.albedoMs = get(passes_->albedo.timer());
   times_.lightingMs = get(passes_->lighting.timer());
   times_.subsurfaceBlurMs = get(passes_->blur.timer());
   times_.postMs = get(passes_->post.timer());
@@ -152,7 +162,8 @@ PassTimes Renderer::passTimes(bool wait) {
 }
 
 size_t Renderer::glBytes() const {
-  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() + passes_->blur.bytes() +
+  return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
+         passes_->lighting.bytes() + passes_->blur.bytes() +
          (mesh_ ? mesh_->bytes() : 0);
 }
 

@@ -1,16 +1,18 @@
 #pragma once
 // The renderer owns the passes and runs them in order, each only when its inputs changed:
 //   1 light depth      -> the light, the mesh or the model transform changed
-//   2 geometry         -> the camera, the mesh, the size or the pattern changed
-//   3 lighting         -> 1 or the view ran, or what it reads of the material changed
-//   4 subsurface blur  -> with 3 (`marble` only; half resolution)
-//   5 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
-// The screen passes (3-5) draw only inside the mesh's screen rectangle.
+//   2 geometry         -> the camera, the mesh or the size changed (normal and depth)
+//   3 albedo           -> with 2, or the pattern changed (the marble pattern per pixel)
+//   4 lighting         -> 1 or 2 ran, or what it reads of the material changed
+//   5 subsurface blur  -> with 4 (`marble` only; half resolution by default)
+//   6 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
+// The screen passes (3-6) draw only inside the mesh's screen rectangle.
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
 
 #include "marble/gl/shader_library.h"
+#include "marble/render/albedo_pass.h"
 #include "marble/render/floor_pass.h"
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
@@ -25,8 +27,8 @@
 namespace marble {
 
 struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
-  bool lightDepthRan = false, geometryRan = false, lightingRan = false;
+  double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
+  bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false;
 };
 
 class Renderer {

@@ -1,0 +1,59 @@
+#include "marble/render/albedo_pass.h"
+
+#include "marble/noise/pattern_uniforms.h"
+
+namespace marble {
+
+AlbedoPass::AlbedoPass(const ShaderLibrary& shaders)
+    : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "albedo.frag.glsl"}}),
+      emptyVao_(gl::VertexArray::create()) {
+  programs_.get(variantFor(Material{}));  // the default material's, so a broken shader shows at once
+}
+
+std::vector<std::string> AlbedoPass::variantFor(const Material& m) {
+  return {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
+          "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+}
+
+void AlbedoPass::compileAll() {
+  for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
+    for (PatternMapping p : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
+      Material m;
+      m.basis = b;
+      m.mapping = p;
+      programs_.get(variantFor(m));
+    }
+}
+
+void AlbedoPass::resize(int width, int height) {
+  if (width == width_ && height == height_ && fbo_) return;
+  width_ = width;
+  height_ = height;
+  albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
+  fbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+}
+
+void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
+                     const Material& material, const ScreenRect& rect) {
+  timer_.begin();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
+  gl::setScreenPassState();
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+  scissorTo(rect);
+  const GLuint textures[] = {depthTexture, normalTexture};
+  glBindTextures(0, 2, textures);
+  const gl::Program& p = programs_.get(variantFor(material));
+  p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
+  p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
+  applyPatternUniforms(p.id(), material);
+  glUseProgram(p.id());
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  scissorOff();
+  timer_.end();
+}
+
+}  // namespace marble

@@ -1,0 +1,37 @@
+#pragma once
+// The albedo pass: the marble pattern evaluated once per visible pixel from the G-buffer's
+// depth and normal (shaders/albedo.frag.glsl), into an RGBA8 texture -- the G-buffer's
+// diffuse colour. Runs after the geometry pass, or alone when only the pattern changed.
+// Programs are specialized per noise basis and mapping (gl/program_variants.h).
+#include "marble/gl/program_variants.h"
+#include "marble/render/pass_timer.h"
+#include "marble/render/screen_rect.h"
+#include "marble/render/view_setup.h"
+#include "marble/scene/material.h"
+
+namespace marble {
+
+class AlbedoPass {
+public:
+  explicit AlbedoPass(const ShaderLibrary& shaders);
+  void resize(int width, int height);
+  // Draws inside `rect` (the mesh's screen rectangle); the rest is cleared to zero.
+  void run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
+           const Material& material, const ScreenRect& rect);
+  GLuint albedoTexture() const { return albedo_.id(); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 4; }
+  PassTimer& timer() { return timer_; }
+  // Compiles the programs of every basis and mapping now (after a shader reload).
+  void compileAll();
+
+private:
+  static std::vector<std::string> variantFor(const Material& m);
+  gl::ProgramVariants programs_;
+  gl::VertexArray emptyVao_;
+  gl::Texture albedo_;
+  gl::Framebuffer fbo_;
+  int width_ = 0, height_ = 0;
+  PassTimer timer_;
+};
+
+}  // namespace marble

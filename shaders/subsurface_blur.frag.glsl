@@ -9,8 +9,9 @@
 // Both passes run at half resolution by default: the profile is smooth, so a quarter of the
 // pixels carry it (render.subsurface_resolution "full" runs them at full resolution). Blur
 // texel h stands for the full-resolution pixel h * scale: its depth decides whether it is
-// stone and which taps are on the same surface. Alpha is coverage: 1 on stone, 0 on the
-// background. The post pass upsamples with depth-aware weights (subsurface_common.glsl).
+// stone and which taps are on the same surface. Alpha is coverage (1 on stone, 0 on the
+// background) between the passes and the view depth after them, for the post pass's
+// depth-aware upsample (subsurface_common.glsl).
 #include "subsurface_common.glsl"
 
 layout(location = 0) out vec4 o_color;
@@ -51,5 +52,7 @@ void main() {
     sum += w * e.rgb;  // premultiplied by coverage
     weight += w * e.a;
   }
-  o_color = vec4(sum / max(weight, vec3(1e-8)), 1.0);
+  // Alpha: coverage (1) between the passes; after the second, the texel's view depth, which
+  // the post pass's depth-aware upsample compares (0 = background).
+  o_color = vec4(sum / max(weight, vec3(1e-8)), u_input_full == 1 ? 1.0 : depth);
 }

@@ -17,9 +17,10 @@ float view_depth(float z) {  // linear distance along the view axis, in scene un
 float representative_depth(ivec2 h) { return texelFetch(u_depth, u_scale * h, 0).r; }
 
 // The blurred light at full-resolution pixel `px` (depth-buffer value z there): the up to
-// four blur texels around it, weighted bilinearly (at full resolution: the one texel), keeping only those on stone at
-// about the same depth (a joint bilateral upsample, Kopf et al. 2007). Returns alpha 0 when
-// none qualifies (thin slivers): the caller then takes the unblurred light.
+// four blur texels around it, weighted bilinearly (at full resolution: the one texel),
+// keeping only those on stone at about the same depth (a joint bilateral upsample, Kopf et
+// al. 2007; each texel's alpha holds its view depth, 0 on the background). Returns alpha 0
+// when none qualifies (thin slivers): the caller then takes the unblurred light.
 vec4 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
   vec2 t = vec2(px) / float(u_scale);  // texel h stands for pixel h * scale
   ivec2 i0 = ivec2(floor(t));
@@ -35,10 +36,9 @@ vec4 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
     ivec2 h = min(i0 + c, last);
     float w = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
     vec4 b = texelFetch(blurred, h, 0);
-    float zh = representative_depth(h);
-    if (abs(view_depth(zh) - depth) * u_mm_per_unit > tolerance_mm) w = 0.0;
-    sum += w * b.a * b.rgb;
-    weight += w * b.a;
+    if (b.a <= 0.0 || abs(b.a - depth) * u_mm_per_unit > tolerance_mm) w = 0.0;
+    sum += w * b.rgb;
+    weight += w;
   }
   return weight > 1e-4 ? vec4(sum / weight, 1.0) : vec4(0.0);
 }

@@ -76,7 +76,7 @@ Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSour
 }
 
 GLint Program::location(const char* name) const {
-  auto it = locations_.find(name);
+  auto it = locations_.find(std::string_view(name));
   if (it != locations_.end()) return it->second;
   const GLint loc = glGetUniformLocation(program_.id(), name);
   locations_.emplace(name, loc);

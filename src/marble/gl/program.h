@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -42,7 +43,13 @@ public:
 
 private:
   ProgramId program_;
-  mutable std::unordered_map<std::string, GLint> locations_;
+  // Looked up by string_view (transparent hash): a name longer than the small-string buffer
+  // would otherwise allocate a std::string on every set() of every frame.
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  mutable std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
 };
 
 class ShaderError : public std::runtime_error {

@@ -1,6 +1,7 @@
 #pragma once
-// The floor of a frame (issue 8, `--mode floor`): the mesh drawn once, flat-shaded, straight
-// into the target. What a changing view cannot cost less than.
+// The floor of a frame (issue 8, `--mode floor`): the mesh drawn once, flat-shaded, with a
+// depth test, into the pass's own colour and depth buffers, then copied to the target (which
+// need not have a depth buffer). What a changing view cannot cost less than.
 #include "marble/gl/program.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/pass_timer.h"
@@ -16,7 +17,11 @@ public:
   PassTimer& timer() { return timer_; }
 
 private:
+  void resize(int width, int height);
   gl::Program program_;
+  gl::Texture color_, depth_;
+  gl::Framebuffer fbo_;
+  int width_ = 0, height_ = 0;
   PassTimer timer_;
 };
 

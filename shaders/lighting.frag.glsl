@@ -44,6 +44,7 @@ uniform float u_roughness;
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 uniform float u_light_texel_world;  // world size of one light-map texel at the object
+uniform float u_light_ref_distance; // d0: the point light's distance to the scene centre
 
 // Keep in step with marble::RenderMode.
 const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
@@ -66,15 +67,25 @@ float thickness_at(vec3 p) {
 
 #include "marble_shading.glsl"
 
-// The `marble` mode: linear HDR radiance. Light intensity 1 is scaled by PI so a white
-// Lambertian surface facing the light reflects 1.0, as in the paper's modes.
+// The `marble` mode's irradiance at normal incidence, at distance d from the light. Intensity I
+// gives PI * I at d0 (so a white Lambertian surface facing the light there reflects I, as in the
+// paper's modes, and a scene keeps its exposure); a point light falls off by the inverse-square
+// law around it, E = PI I (d0 / d)^2, exactly as Cycles' point light of power 4 PI^2 d0^2 I does
+// (tools/cycles_reference.py). A directional light has no falloff.
+vec3 light_irradiance(float d) {
+  if (u_light_directional == 1) return u_light_radiance * PI;
+  float r = u_light_ref_distance / max(d, 1e-4);
+  return u_light_radiance * PI * r * r;
+}
+
+// The `marble` mode: linear HDR radiance.
 void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3 reflected) {
   float NoL = dot(N, L);
   float NoV = max(dot(N, V), 1e-4);
   vec3 H = normalize(V + L);
   float a = max(u_roughness * u_roughness, 0.002);
   vec3 F0 = f0_from_ior(u_ior);
-  vec3 E = u_light_radiance * PI;
+  vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
 
   float nl = max(NoL, 0.0);
@@ -90,10 +101,13 @@ void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3
   // diffusion decay). An inward offset keeps the surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
-  float s_mm = thickness_at(P - N * (2.0 * u_light_texel_world)) * u_mm_per_unit;
+  // The light's falloff is taken where it entered, s before the (offset) exit point.
+  vec3 P_in = P - N * (2.0 * u_light_texel_world);
+  float s = transmission_thickness(P_in);
+  float s_mm = s * u_mm_per_unit;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  vec3 transmitted = E / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
-                     (1.0 - fresnel_schlick(F0, NoV));
+  vec3 transmitted = light_irradiance(light_distance_of(P_in) - s) / PI * exp(-u_sigma_tr_mm * s_mm) * away *
+                     away * u_translucency * (1.0 - fresnel_schlick(F0, NoV));
 
   entering = E * nl * visible * diffuse + transmitted;
   reflected = E * nl * visible * specular;

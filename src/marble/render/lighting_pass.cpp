@@ -59,6 +59,10 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_translucency", m.translucency);
   p.set("u_env_intensity", settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f);
   p.set("u_light_texel_world", lightTexelWorld);
+  // `marble` mode: the point light's intensity is the irradiance (/ pi) at the scene centre, the
+  // origin (meshes are centred there; the light's map aims there), and falls off as 1/d^2 around
+  // it. The same d0 sets the Cycles reference's light power (tools/cycles_reference.py).
+  p.set("u_light_ref_distance", glm::length(light.position));
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -132,6 +132,7 @@ size_t Renderer::glBytes() const {
 
 ImageRGBF Renderer::readHdr() const {
   const GLuint fbo = finalHdrFbo_;
+  if (fbo == 0) return {};  // nothing rendered yet
   GLint w = 0, h = 0;
   glGetNamedFramebufferAttachmentParameteriv(fbo, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &w);
   const auto texture = static_cast<GLuint>(w);
@@ -146,7 +147,25 @@ ImageRGBF Renderer::readHdr() const {
   const size_t row = static_cast<size_t>(w) * 3;
   for (int y = 0; y < h; ++y)
     std::copy_n(rows.begin() + static_cast<ptrdiff_t>((h - 1 - y) * row), row, img.pixels.begin() + static_cast<ptrdiff_t>(y * row));
+  img.alpha = readCoverage(w, h);
   return img;
+}
+
+std::vector<float> Renderer::readCoverage(int w, int h) const {
+  // Coverage is where the geometry pass wrote depth (cleared to 1, the far plane). It is read
+  // from the G-buffer rather than from the radiance, which is 0 on unlit object pixels too (the
+  // dark side of a back-lit statue). The light-depth view shows the light's map, not the
+  // camera's picture: all of it is content.
+  std::vector<float> alpha(static_cast<size_t>(w) * h, 1.0f);
+  if (lastLightingScene_.render.mode == RenderMode::LightDepth) return alpha;
+  std::vector<float> depth(alpha.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(passes_->geometry.depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      alpha[static_cast<size_t>(y) * w + x] = depth[static_cast<size_t>(h - 1 - y) * w + x] < 1.0f ? 1.0f : 0.0f;
+  return alpha;
 }
 
 }  // namespace marble

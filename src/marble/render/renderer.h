@@ -37,7 +37,8 @@ public:
   // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
-  // The last frame's linear HDR image (before tone mapping), top row first. Not for `floor`.
+  // The last frame's linear HDR image (before tone mapping), top row first, with coverage as
+  // alpha (1 on the object, 0 on the background). Not for `floor`.
   ImageRGBF readHdr() const;
 
   // GPU times of the last frame's passes; `wait` blocks until they are known.
@@ -53,6 +54,7 @@ public:
   void reloadShaders();
 
 private:
+  std::vector<float> readCoverage(int width, int height) const;  // top row first
   struct Passes;
   ShaderLibrary shaders_;
   std::unique_ptr<Passes> passes_;

@@ -9,6 +9,7 @@ uniform vec3 u_light_dir;
 uniform int u_light_directional;
 uniform vec3 u_light_radiance;      // colour x intensity
 uniform float u_light_texel_world;  // world size of one light-map texel at the object
+uniform float u_light_ref_distance; // d0: the point light's distance to the scene centre
 
 // World-space point of the surface seen at uv with depth-buffer value `depth`.
 vec3 surface_point(vec2 uv, float depth) {
@@ -19,4 +20,20 @@ vec3 surface_point(vec2 uv, float depth) {
 // Unit vector from P toward the light.
 vec3 light_vector(vec3 P) {
   return u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - P);
+}
+
+// Distance along the light's path: from a point light, or along a directional light.
+float light_distance_of(vec3 p) {
+  return u_light_directional == 1 ? dot(p, u_light_dir) : distance(p, u_light_pos);
+}
+
+// The `marble` mode's irradiance at normal incidence, at distance d from the light (needs PI).
+// Intensity I gives PI * I at d0 (so a white Lambertian surface facing the light there
+// reflects I, as in the paper's modes, and a scene keeps its exposure); a point light falls
+// off by the inverse-square law around it, E = PI I (d0 / d)^2, exactly as Cycles' point light
+// of power 4 PI^2 d0^2 I does (tools/cycles_reference.py). A directional light has no falloff.
+vec3 light_irradiance(float d) {
+  if (u_light_directional == 1) return u_light_radiance * PI;
+  float r = u_light_ref_distance / max(d, 1e-4);
+  return u_light_radiance * PI * r * r;
 }

@@ -50,10 +50,6 @@ const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, 
           MODE_REFLECTANCE = 5, MODE_ALBEDO = 6, MODE_LIGHT_DEPTH = 7, MODE_THICKNESS = 8,
           MODE_DEPTH = 9, MODE_POSITION = 10, MODE_NORMAL = 11;
 
-float light_distance_of(vec3 p) {
-  return u_light_directional == 1 ? dot(p, u_light_dir) : distance(p, u_light_pos);
-}
-
 // Distance the light travelled inside the object before leaving at p (GPU Gems 1, 16.3):
 // the light's map holds where it entered; p is where it leaves.
 float thickness_at(vec3 p) {
@@ -66,16 +62,46 @@ float thickness_at(vec3 p) {
 
 #include "marble_shading.glsl"
 
+// The thickness the transmission uses: as thickness_at(), but the light's distance map is
+// interpolated bilinearly between the four texels around p instead of read at the nearest one.
+// Within one texel the true entry distance changes by a texel times the surface's slope seen
+// from the light; read nearest, those steps (several texels' worth at grazing light, where the
+// inward offset cannot hide them) come out of exp(-sigma_tr s) as speckle on the lit side and as
+// jagged edges where the glow fades (seen on the built-in torus at 100 mm per unit). Texels that
+// saw nothing are left out (blending in their "nothing hit" distance would invent huge entry
+// distances: the reason the map itself is sampled nearest); where none of the four saw the
+// object, nothing is in the way and s = 0, as in thickness_at().
+float transmission_thickness(vec3 p) {
+  vec4 clip = u_light_view_proj * vec4(p, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
+  ivec2 size = textureSize(u_light_distance, 0);
+  vec2 t = (ndc.xy * 0.5 + 0.5) * vec2(size) - 0.5;  // texel centres at integers
+  ivec2 base = ivec2(floor(t));
+  vec2 f = t - vec2(base);
+  float sum = 0.0, weight = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    float entered = texelFetch(u_light_distance, clamp(base + o, ivec2(0), size - 1), 0).r;
+    float w = mix(1.0 - f.x, f.x, float(o.x)) * mix(1.0 - f.y, f.y, float(o.y));
+    // "Nothing hit" is stored as far + 1000 (LightDepthPass).
+    if (entered < u_light_near_far.y + 1.0) {
+      sum += w * entered;
+      weight += w;
+    }
+  }
+  if (weight <= 0.0) return 0.0;
+  return max(light_distance_of(p) - sum / weight, 0.0);
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-// Light intensity 1 is scaled by PI so a white Lambertian surface facing the light reflects
-// 1.0, as in the paper's modes.
 vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   float NoL = dot(N, L);
   vec3 F0 = f0_from_ior(u_ior);
-  vec3 E = u_light_radiance * PI;
+  vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
   vec3 entering = marble_surface_entering(N, V, L, E, visible, F0, u_env_intensity);
 
@@ -84,11 +110,14 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   // diffusion decay). An inward offset keeps the surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
-  float s_mm = thickness_at(P - N * (2.0 * u_light_texel_world)) * u_mm_per_unit;
+  // The light's falloff is taken where it entered, s before the (offset) exit point.
+  vec3 P_in = P - N * (2.0 * u_light_texel_world);
+  float s = transmission_thickness(P_in);
+  float s_mm = s * u_mm_per_unit;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float NoV = max(dot(N, V), 1e-4);
-  return entering + E / PI * exp(-u_sigma_tr_mm * s_mm) * away * away * u_translucency *
-                        (1.0 - fresnel_schlick(F0, NoV));
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * exp(-u_sigma_tr_mm * s_mm) * away * away *
+                        u_translucency * (1.0 - fresnel_schlick(F0, NoV));
 }
 
 void main() {

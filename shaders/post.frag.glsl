@@ -61,7 +61,7 @@ vec3 marble_compose(float depth) {
   vec3 N = decode_normal(texture(u_normal, v_uv).xy);
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
-  vec3 E = u_light_radiance * PI;
+  vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
   // Where no half-resolution neighbour on the same surface exists (thin slivers), the
   // unblurred light.
@@ -78,7 +78,9 @@ void main() {
   if (u_compose_marble == 1) c = surface ? marble_compose(depth) : vec3(0.0);
   else c = texture(u_hdr, v_uv).rgb;
   if (u_output_linear == 1) {
-    o_color = vec4(c, surface ? 1.0 : 0.0);
+    // Coverage: where the camera saw the object. The light-depth view (no background to
+    // paint) shows the light's map: all of it is content.
+    o_color = vec4(c, surface || u_paint_background == 0 ? 1.0 : 0.0);
     return;
   }
   if (u_tone_map == 1) c = srgb_encode(pbr_neutral(c * u_exposure_scale));

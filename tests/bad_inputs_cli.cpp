@@ -126,6 +126,11 @@ void writeInputs(const fs::path& dir) {
   put("preset_type.json", R"({"turb_power": [1, 2]})");
   put("preset_cycle.json", R"({"preset": "preset_cycle.json"})");
   put("preset_overflow.json", R"({"turb_power": 1e400})");
+  // Shader folders for MARBLE_SHADER_DIR: one file each, the rest stays built in.
+  fs::create_directories(dir / "brokenshaders");
+  put("brokenshaders/lighting.frag.glsl", "#version 450 core\nout vec4 o;\nvoid main() { o = vec4(undeclared_thing); }\n");
+  fs::create_directories(dir / "brokeninclude");
+  put("brokeninclude/post.frag.glsl", "#version 450 core\n#include \"nothere.glsl\"\nvoid main() {}\n");
 }
 
 const std::string kSmall = " -o out.png --width 16 --height 16";
@@ -287,6 +292,12 @@ const std::vector<Row>& rows() {
        "marble render: headless OpenGL: no EGL display available (is libegl-mesa0 installed?)", "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json"},
       {"GlBelow45", "OpenGL below 4.5 (Mesa capped at 3.3)", "render" + kSmall, 1, "marble render: headless OpenGL: ",
        "MESA_GL_VERSION_OVERRIDE=3.3 EGL_LOG_LEVEL=fatal"},
+      {"ShaderCompileError", "a shader that fails to compile (a folder with a broken lighting.frag.glsl)", "render" + kSmall, 1,
+       "marble render: brokenshaders/lighting.frag.glsl:3: error: `undeclared_thing' undeclared", "MARBLE_SHADER_DIR=brokenshaders"},
+      {"ShaderIncludeMissing", "a shader that includes a file that does not exist", "render" + kSmall, 1,
+       "marble render: brokeninclude/post.frag.glsl:2: error: #include \"nothere.glsl\": no such shader", "MARBLE_SHADER_DIR=brokeninclude"},
+      {"ShaderDirMissing", "MARBLE_SHADER_DIR naming no folder", "render" + kSmall, 2,
+       "marble render: MARBLE_SHADER_DIR: 'nothere' is not a folder", "MARBLE_SHADER_DIR=nothere"},
       {"ViewerNoDisplay", "viewer without DISPLAY", "view --frames 1", 1,
        "marble view: no display (DISPLAY is not set); use `marble render [INPUT] -o out.png` to render without one", "env -u DISPLAY -u WAYLAND_DISPLAY"},
       {"ViewerDeadDisplay", "viewer with DISPLAY naming no X server", "view --frames 1", 1, "marble view: cannot open a window: X11: Failed to open display :8765",
@@ -332,6 +343,12 @@ std::string markdownCell(std::string s) {
   return s;
 }
 
+// A code span around s; GLSL compilers quote names as `name', so a span holding a backtick is
+// opened and closed with two (CommonMark, "code spans").
+std::string code(const std::string& s) {
+  return s.find('`') == std::string::npos ? "`" + s + "`" : "`` " + s + " ``";
+}
+
 class BadInputs : public ::testing::TestWithParam<Row> {
 protected:
   static void SetUpTestSuite() {
@@ -359,7 +376,7 @@ TEST_P(BadInputs, OneLineAndTheRightExitCode) {
     std::ofstream out(table, std::ios::app);
     out << "| " << markdownCell(row.what) << " | `marble " << markdownCell(row.args) << "`"
         << (*row.env ? std::string(" with `") + row.env + "`" : "") << " | " << c.exitCode << " | "
-        << (got.empty() ? "(nothing; stdout says `wrote out.png ...`)" : "`" + markdownCell(got[0]) + "`") << " |\n";
+        << (got.empty() ? "(nothing; stdout says `wrote out.png ...`)" : code(markdownCell(got[0]))) << " |\n";
   }
 }
 

@@ -50,6 +50,41 @@ TEST(CompareCli, ScaledCopyGivesItsScale) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CompareCli, SaysWhichSilhouetteRuleItUsed) {
+  const auto dir = tempDir("compare-alpha");
+  ImageRGBF covered = square(32, 0.25f);
+  covered.alpha.assign(32 * 32, 0.0f);
+  for (int y = 8; y < 24; ++y)
+    for (int x = 8; x < 24; ++x) covered.alpha[static_cast<size_t>(y) * 32 + x] = 1.0f;
+  writeExr(dir / "alpha.exr", covered);
+  writeExr(dir / "plain.exr", square(32, 0.25f));  // alpha 1 everywhere, unmarked: no coverage
+  const auto both = runMarble("compare " + (dir / "alpha.exr").string() + " " + (dir / "alpha.exr").string());
+  EXPECT_EQ(both.exitCode, 0) << both.output;
+  EXPECT_NE(both.output.find("silhouettes      from alpha in both files"), std::string::npos) << both.output;
+  const auto mixed = runMarble("compare --json " + (dir / "alpha.exr").string() + " " + (dir / "plain.exr").string());
+  EXPECT_EQ(mixed.exitCode, 0) << mixed.output;
+  EXPECT_NE(mixed.output.find("\"ref_coverage\": \"alpha\", \"test_coverage\": \"values\""), std::string::npos)
+      << mixed.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CompareCli, RenderHdrCarriesCoverage) {
+  // marble's own --hdr, compared with itself: both silhouettes come from alpha, and with the light
+  // off (every pixel exactly 0) the object still covers the picture.
+  const auto dir = tempDir("compare-render");
+  const auto scene = dir / "dark.json";
+  std::ofstream(scene) << R"({"mesh": "builtin:sphere", "light": {"intensity": 0},
+                             "render": {"width": 48, "height": 48, "environment": "none"}})";
+  const auto hdr = dir / "dark.exr";
+  const auto r = runMarble("render " + scene.string() + " -o " + (dir / "dark.png").string() + " --hdr " + hdr.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto c = runMarble("compare --json " + hdr.string() + " " + hdr.string());
+  EXPECT_EQ(c.exitCode, 0) << c.output;
+  EXPECT_NE(c.output.find("\"ref_coverage\": \"alpha\", \"test_coverage\": \"alpha\""), std::string::npos) << c.output;
+  EXPECT_EQ(c.output.find("\"ref_pixels\": 0,"), std::string::npos) << "the unlit sphere must count as covered: " << c.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CompareCli, BadFilesAreOneLineAndExitTwo) {
   const auto dir = tempDir("compare-bad");
   writeExr(dir / "ref.exr", square(32, 0.25f));

@@ -148,3 +148,20 @@ TEST(CliView, UnderXvfbDrawsFramesAndSavesScreenshotWithMeshAndPanel) {
   EXPECT_GT(panel, 500) << "the ImGui panel should be drawn at the top left";
   std::filesystem::remove_all(dir);
 }
+
+TEST(CliRender, ShaderFolderOverridesTheBuiltInShaders) {
+  // MARBLE_SHADER_DIR: a file there replaces the built-in one of the same name (here the last
+  // pass, painting everything magenta); the others stay built in.
+  const auto dir = tempDir("shader-dir");
+  std::filesystem::create_directories(dir / "shaders");
+  writeFile(dir / "shaders" / "post.frag.glsl",
+            "#version 450 core\nlayout(location = 0) out vec4 o_color;\nvoid main() { o_color = vec4(1, 0, 1, 1); }\n");
+  const auto out = dir / "magenta.png";
+  const auto r = runMarble("render -o " + out.string() + " --width 16 --height 16",
+                           "MARBLE_SHADER_DIR=" + (dir / "shaders").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 img = readPng(out);
+  EXPECT_EQ(img.at(0, 0), glm::u8vec4(255, 0, 255, 255));
+  EXPECT_EQ(img.at(8, 8), glm::u8vec4(255, 0, 255, 255));
+  std::filesystem::remove_all(dir);
+}

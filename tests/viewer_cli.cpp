@@ -28,6 +28,22 @@ int lineCount(const std::string& s) {
   return n + (!s.empty() && s.back() != '\n');
 }
 
+TEST(ViewerCli, ABrokenShaderIsOneLineAndExitOne) {
+  // Issue 7: a shader that fails to compile when the viewer starts: one line naming file and
+  // line, exit code 1 (there is no last good shader yet to keep; `--dev` reloads keep it).
+  const auto dir = tempDir("viewer-shader");
+  std::filesystem::create_directories(dir / "shaders");
+  std::ofstream(dir / "shaders" / "lighting.frag.glsl") << "#version 450 core\nvoid main() { nonsense; }\n";
+  const auto r = runMarble("view --frames 2 --width 320 --height 240",
+                           std::string(kXvfb) + " env MARBLE_SHADER_DIR=" + (dir / "shaders").string());
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("marble view: " + (dir / "shaders" / "lighting.frag.glsl").string() + ":2: error"),
+            std::string::npos)
+      << r.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
   const auto dir = tempDir("viewer-shot");
   const auto shot = dir / "shot.png";

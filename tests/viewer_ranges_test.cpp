@@ -4,6 +4,10 @@
 // section (src/app/viewer/material_sections.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 #include "../src/app/viewer/material_sections.h"
@@ -64,6 +68,48 @@ TEST(ViewerRanges, BuiltinPresetsSitInsideTheSliders) {
       for (double d : values) {
         EXPECT_GE(d, r.lo) << info.name << ": " << r.key;
         EXPECT_LE(d, r.hi) << info.name << ": " << r.key;
+      }
+    }
+  }
+}
+
+// The digits after the '.' of a printf format ("%.4g" -> 4), as ImGui 1.86's
+// ImParseFormatPrecision reads them; 3 (its default) without a '.'.
+int formatPrecision(const char* format) {
+  const char* dot = std::strchr(format, '.');
+  return dot ? std::atoi(dot + 1) : 3;
+}
+
+TEST(ViewerRanges, ScatteringCoefficientSlidersAreLogarithmic) {
+  // Issue: sigma_a of measured marble is 0.0021 /mm, a dark stone's 0.6; a linear slider over
+  // [0, 2] gives the whole of marble's range a few pixels.
+  EXPECT_TRUE(viewer::rangeOf("sigma_a_mm").logarithmic);
+  EXPECT_TRUE(viewer::rangeOf("sigma_s_mm").logarithmic);
+}
+
+TEST(ViewerRanges, LogarithmicSlidersReachTheirLowerEnd) {
+  // ImGui's logarithmic slider treats |v| < 10^-precision as zero: below that the slider's left
+  // end would be stuck at the fudged epsilon, not at lo.
+  for (const auto& r : kParamRanges) {
+    if (!r.logarithmic) continue;
+    EXPECT_GE(r.lo, std::pow(10.0f, -static_cast<float>(formatPrecision(r.format))) * 0.999f) << r.key << " " << r.format;
+  }
+}
+
+TEST(ViewerRanges, SlidersShowEveryPresetValueToOnePercent) {
+  // What the slider prints must read back as the value: "%.2f" showed sigma_a 0.0021 as "0.00".
+  for (const auto& info : builtinPresets()) {
+    const nlohmann::json j = materialToJson(loadPreset(info.name));
+    for (const auto& r : kParamRanges) {
+      const auto& v = j[r.key];
+      std::vector<double> values;
+      if (v.is_array()) for (const auto& c : v) values.push_back(c.get<double>());
+      else values.push_back(v.get<double>());
+      for (double d : values) {
+        char shown[64];
+        std::snprintf(shown, sizeof shown, r.format, static_cast<float>(d));
+        const double back = std::strtod(shown, nullptr);
+        EXPECT_NEAR(back, d, 0.01 * std::abs(d)) << info.name << ": " << r.key << " = " << d << " shows as " << shown;
       }
     }
   }

@@ -11,12 +11,15 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
 - Axes: marble is +Y up, Blender +Z up; every point goes through B(x, y, z) = (x, -z, y), a +90 deg
   turn about X, so the picture is the same.
 - Camera: same position, target, up and vertical field of view (sensor_fit VERTICAL), same aspect.
-- Light: marble's light of intensity I and colour c gives irradiance E = pi * I * c at normal
-  incidence, with no distance falloff. A Cycles point light of power P watts gives
-  E = P / (4 pi d^2) at distance d (checked by rendering a white Lambertian plane: 0.6331 measured
-  for 0.6333 predicted). So P = 4 pi^2 d^2 I, with d the light's distance to the object centre
-  (the origin): equal irradiance there, inverse-square around it. Radius 0 (a true point).
-  A directional light becomes a sun of strength pi * I (a sun's strength is its irradiance).
+- Light: marble's point light of intensity I and colour c gives irradiance E = pi I c (d0 / d)^2
+  at normal incidence at distance d, where d0 is the light's distance to the scene centre (the
+  origin, where the normalized mesh is centred): pi I c at d0, inverse-square around it
+  (light_irradiance() in shaders/lighting.frag.glsl; u_light_ref_distance is set in
+  src/marble/render/lighting_pass.cpp). A Cycles point light of power P watts gives
+  E = P / (4 pi d^2) (checked by rendering a white Lambertian plane: 0.6331 measured for 0.6333
+  predicted). So P = 4 pi^2 d0^2 I makes the two equal at every distance, not only at d0.
+  Radius 0 (a true point). A directional light has no falloff in either: it becomes a sun of
+  strength pi I (a sun's strength is its irradiance).
 - World black (compare with marble scenes that say "render": {"environment": "none"}).
 - Material: Principled BSDF, subsurface method RANDOM_WALK, Subsurface 1 (Cycles 3.x then uses
   the radius as given), base and subsurface colour = base_color (scenes set base/vein/vein2 equal:
@@ -201,6 +204,7 @@ def main():
         lo.rotation_euler = (-lpos).to_track_quat("-Z", "Y").to_euler()
     else:
         ld = bpy.data.lights.new("light", "POINT")
+        # E = P / (4 pi d^2) = pi I (d0 / d)^2 for every d: marble's falloff (docstring).
         ld.energy = 4.0 * math.pi ** 2 * lpos.length_squared * intensity
         ld.shadow_soft_size = 0.0
         lo = bpy.data.objects.new("light", ld)

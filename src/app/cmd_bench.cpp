@@ -10,6 +10,7 @@
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
+#include "shader_source.h"
 
 namespace marble {
 
@@ -92,10 +93,11 @@ int runBenchCommand(const BenchOptions& o) {
     const Mesh mesh = loadSceneMesh(base);
     r.loadMs = wallMs() - t0;
 
+    ShaderLibrary shaders = shaderLibraryFor(false);
     HeadlessContext context;
     r.glRenderer = context.renderer();
     r.glVersion = glString(GL_VERSION);
-    Renderer renderer;
+    Renderer renderer(std::move(shaders));
     t0 = wallMs();
     renderer.setMesh(mesh);
     glFinish();

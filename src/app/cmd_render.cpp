@@ -8,6 +8,7 @@
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
+#include "shader_source.h"
 
 namespace marble {
 
@@ -17,8 +18,9 @@ int runRenderCommand(const RenderOptions& o) {
     const Scene scene = buildScene(o.scene);
     if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
     const Mesh mesh = loadSceneMesh(scene);
+    ShaderLibrary shaders = shaderLibraryFor(false);
     HeadlessContext context;
-    Renderer renderer;
+    Renderer renderer(std::move(shaders));
     renderer.setMesh(mesh);
     OffscreenTarget target(scene.render.width, scene.render.height);
     if (o.timings) {

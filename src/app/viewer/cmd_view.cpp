@@ -21,6 +21,7 @@
 #include "marble/core/image.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
+#include "../shader_source.h"
 #include "viewer_actions.h"
 #include "viewer_input.h"
 #include "viewer_state.h"
@@ -106,6 +107,7 @@ int runViewCommand(const ViewOptions& o) {
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
+    ShaderLibrary shaders = shaderLibraryFor(o.dev);  // a bad MARBLE_SHADER_DIR: the same
     if (!GlfwWindow::displayAvailable())
       throw EnvironmentError("no display (DISPLAY is not set); use `marble render [INPUT] -o out.png` to render without one");
     const int winW = o.scene.width > 0 ? o.scene.width : 1280, winH = o.scene.height > 0 ? o.scene.height : 800;
@@ -115,7 +117,7 @@ int runViewCommand(const ViewOptions& o) {
     glfwSwapInterval(s.vsync ? 1 : 0);
     bool vsyncApplied = s.vsync;
 
-    Renderer renderer(ShaderLibrary(o.dev ? std::string(MARBLE_SOURCE_DIR) + "/shaders" : std::string()));
+    Renderer renderer(std::move(shaders));
     adoptMesh(renderer, s, firstMesh, s.scene.mesh);
     s.meshPathInput = s.scene.mesh.rfind("builtin:", 0) == 0 ? "" : s.scene.mesh;
 

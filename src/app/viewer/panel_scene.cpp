@@ -123,7 +123,7 @@ void drawLightSection(ViewerState& s) {
   tooltip("Height above the horizon; negative lights from below.");
   ImGui::SliderFloat("distance", &s.light.distance, 2.0f, 20.0f, "%.1f");
   tooltip("Distance from the object's centre in scene units (the object is 2 units across).\n"
-          "Closer: stronger falloff across the object.");
+          "Closer: stronger falloff across the object (marble mode); the brightness at the centre stays.");
   ImGui::PopItemWidth();
   if (ImGui::Button("behind")) s.light = Orbit::fromPosition(-s.camera.position() * 1.2f + glm::vec3(0, 0.5f, 0));
   tooltip("Put the light behind the object as seen from the camera: shows the subsurface glow.");
@@ -135,7 +135,8 @@ void drawLightSection(ViewerState& s) {
             "Point: light from a position, with falloff. Directional: parallel light from that direction (the sun).");
   colour("colour##light", s.scene.light.color, "Colour of the light (linear RGB).");
   ImGui::SliderFloat("intensity", &s.scene.light.intensity, 0.0f, 4.0f, "%.2f");
-  tooltip("Brightness multiplier of the light.");
+  tooltip("Brightness of the light: a white surface facing it, as far from it as the object's centre, reflects this much.\n"
+          "In the marble mode a point light falls off as 1/d^2 around that distance.");
 }
 
 void drawViewSection(ViewerState& s) {

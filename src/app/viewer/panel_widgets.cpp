@@ -18,7 +18,7 @@ bool inputText(const char* label, std::string& value, const char* hint) {
 
 bool slider(const char* label, const char* key, float& value, const char* tip) {
   const ParamRange r = rangeOf(key);
-  const bool changed = ImGui::SliderFloat(label, &value, r.lo, r.hi, "%.3g",
+  const bool changed = ImGui::SliderFloat(label, &value, r.lo, r.hi, r.format,
                                           r.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
   tooltip(tip);
   return changed;
@@ -26,7 +26,8 @@ bool slider(const char* label, const char* key, float& value, const char* tip) {
 
 bool slider3(const char* label, const char* key, glm::vec3& value, const char* tip) {
   const ParamRange r = rangeOf(key);
-  const bool changed = ImGui::SliderFloat3(label, &value.x, r.lo, r.hi, "%.2f");
+  const bool changed = ImGui::SliderFloat3(label, &value.x, r.lo, r.hi, r.format,
+                                           r.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
   tooltip(tip);
   return changed;
 }

@@ -11,7 +11,11 @@ namespace marble::viewer {
 struct ParamRange {
   const char* key;
   float lo, hi;
-  bool logarithmic;  // for parameters whose useful values span decades (sizes, exponents)
+  bool logarithmic;  // for parameters whose useful values span decades (sizes, exponents, coefficients)
+  // printf format of the slider's number. ImGui also rounds dragged values to it, and its
+  // logarithmic slider (1.86, SliderBehaviorT) treats values below 10^-p as 0, p being the
+  // digits after the '.': a logarithmic range needs lo >= 10^-p (tests/viewer_ranges_test.cpp).
+  const char* format = "%.3g";
 };
 
 inline constexpr ParamRange kParamRanges[] = {
@@ -22,7 +26,9 @@ inline constexpr ParamRange kParamRanges[] = {
     {"sigma_t", 0.0f, 10.0f, false},       {"k_sss", 0.0f, 1.0f, false},
     {"k_schlick", 0.0f, 1.0f, false},      {"metalness", 0.0f, 1.0f, false},
     {"shininess", 1.0f, 512.0f, true},     {"oren_nayar_sigma", 0.0f, 1.5707f, false},
-    {"sigma_a_mm", 0.0f, 2.0f, false},     {"sigma_s_mm", 0.0f, 10.0f, false},
+    // Measured coefficients span decades (marble's sigma_a is 0.002-0.007 /mm, a dark stone's 0.6):
+    // logarithmic, with four significant digits so 0.0021 does not read 0.00.
+    {"sigma_a_mm", 1.0e-4f, 2.0f, true, "%.4g"}, {"sigma_s_mm", 0.01f, 10.0f, true, "%.4g"},
     {"translucency", 0.0f, 2.0f, false},   {"ior", 1.0f, 3.0f, false},
     {"roughness", 0.0f, 1.0f, false},
     {"resolution", 16.0f, 1024.0f, true},  {"seed", 0.0f, 1.0e6f, false},

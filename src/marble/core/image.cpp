@@ -4,9 +4,12 @@
 #include <stb_image_write.h>
 
 #include <ImfArray.h>
+#include <ImfHeader.h>
 #include <ImfRgbaFile.h>
+#include <ImfStringAttribute.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <unistd.h>
 
@@ -14,6 +17,14 @@
 #include "marble/core/error.h"
 
 namespace marble {
+
+namespace {
+// OpenEXR's messages can run over several lines; a marble error is one.
+std::string firstLine(std::string what) {
+  if (auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
+  return what;
+}
+}  // namespace
 
 void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
   std::string bytes;
@@ -42,21 +53,28 @@ void flipRows(ImageRGBA8& image) {
 }
 
 void writeExr(const std::filesystem::path& path, const ImageRGBF& image) {
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  if (!image.alpha.empty() && image.alpha.size() != n)
+    throw std::invalid_argument("writeExr: alpha has " + std::to_string(image.alpha.size()) + " values for " +
+                                std::to_string(n) + " pixels");
   // OpenEXR writes to a named file: write a temporary beside the target, then rename.
   const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-exr");
   try {
     Imf::Array2D<Imf::Rgba> px(image.height, image.width);
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x) {
-        const float* p = &image.pixels[(static_cast<size_t>(y) * image.width + x) * 3];
-        px[y][x] = Imf::Rgba(p[0], p[1], p[2], 1.0f);
+        const size_t i = static_cast<size_t>(y) * image.width + x;
+        const float* p = &image.pixels[i * 3];
+        px[y][x] = Imf::Rgba(p[0], p[1], p[2], image.alpha.empty() ? 1.0f : image.alpha[i]);
       }
-    Imf::RgbaOutputFile file(tmp.c_str(), image.width, image.height, Imf::WRITE_RGBA);
+    Imf::Header header(image.width, image.height);
+    if (!image.alpha.empty()) header.insert(kExrCoverageAttribute, Imf::StringAttribute("coverage"));
+    Imf::RgbaOutputFile file(tmp.c_str(), header, Imf::WRITE_RGBA);
     file.setFrameBuffer(&px[0][0], 1, static_cast<size_t>(image.width));
     file.writePixels(image.height);
   } catch (const std::exception& e) {
     ::unlink(tmp.c_str());
-    throw InputError(path.string(), "", std::string("cannot write EXR: ") + e.what());
+    throw InputError(path.string(), "", std::string("cannot write EXR: ") + firstLine(e.what()));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     ::unlink(tmp.c_str());
@@ -64,23 +82,34 @@ void writeExr(const std::filesystem::path& path, const ImageRGBF& image) {
   }
 }
 
-ImageRGBF readExr(const std::filesystem::path& path) {
+ImageRGBF readExr(const std::filesystem::path& path, bool* markedCoverage) {
   try {
+    if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("no such file");
     Imf::RgbaInputFile file(path.c_str());
     const auto dw = file.dataWindow();
     const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    if (w <= 0 || h <= 0) throw std::runtime_error("empty data window");
     Imf::Array2D<Imf::Rgba> px(h, w);
     file.setFrameBuffer(&px[0][0] - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * w, 1, static_cast<size_t>(w));
     file.readPixels(dw.min.y, dw.max.y);
+    // Without an A channel OpenEXR reads alpha as 1; say "no alpha" instead.
+    const bool hasAlpha = (file.channels() & Imf::WRITE_A) != 0;
     ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
+    if (hasAlpha) img.alpha.resize(static_cast<size_t>(w) * h);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        float* p = &img.pixels[(static_cast<size_t>(y) * w + x) * 3];
+        const size_t i = static_cast<size_t>(y) * w + x;
+        float* p = &img.pixels[i * 3];
         p[0] = px[y][x].r; p[1] = px[y][x].g; p[2] = px[y][x].b;
+        if (hasAlpha) img.alpha[i] = px[y][x].a;
       }
+    if (markedCoverage) {
+      const auto* mark = file.header().findTypedAttribute<Imf::StringAttribute>(kExrCoverageAttribute);
+      *markedCoverage = hasAlpha && mark && mark->value() == "coverage";
+    }
     return img;
   } catch (const std::exception& e) {
-    throw InputError(path.string(), "", std::string("cannot read EXR: ") + e.what());
+    throw InputError(path.string(), "", std::string("cannot read EXR: ") + firstLine(e.what()));
   }
 }
 

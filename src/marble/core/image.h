@@ -21,12 +21,21 @@ struct ImageRGBA8 {
 struct ImageRGBF {
   int width = 0, height = 0;
   std::vector<float> pixels;  // RGB, linear, row 0 is the top row
+  // Coverage, width * height values in [0, 1] (1: the object, 0: background), row 0 the top
+  // row; empty when the image has no alpha channel.
+  std::vector<float> alpha = {};
 };
 
 void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
 ImageRGBA8 readPng(const std::filesystem::path& path);                     // throws InputError
-void writeExr(const std::filesystem::path& path, const ImageRGBF& image);  // linear half-float RGB
-ImageRGBF readExr(const std::filesystem::path& path);
+// Linear half-float RGBA; A is image.alpha (1 everywhere when it is empty). A file written with
+// alpha says so in its header (kExrCoverageAttribute), so that a reader can tell coverage that
+// happens to be 1 everywhere from an alpha channel that means nothing.
+void writeExr(const std::filesystem::path& path, const ImageRGBF& image);
+// Reads RGB and, when the file has an A channel, alpha; `markedCoverage` (if given) is set to
+// whether the header carries the mark. Throws InputError naming the file.
+ImageRGBF readExr(const std::filesystem::path& path, bool* markedCoverage = nullptr);
+inline constexpr const char* kExrCoverageAttribute = "marbleAlpha";  // its value: "coverage"
 
 // Flips rows (GL reads bottom-up).
 void flipRows(ImageRGBA8& image);

@@ -1,8 +1,5 @@
 #include "marble/core/image_compare.h"
 
-#include <ImfArray.h>
-#include <ImfRgbaFile.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,44 +19,37 @@ std::vector<uint8_t> coverageFromValues(const ImageRGBF& image) {
   return mask;
 }
 
-CoveredImage readExrWithCoverage(const std::filesystem::path& path) {
-  // Read here rather than through readExr, which drops alpha: the reference's alpha is the
-  // only coverage that survives pixels that are lit by nothing (exactly 0 inside the object).
-  try {
-    if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("no such file");
-    Imf::RgbaInputFile file(path.c_str());
-    const auto dw = file.dataWindow();
-    const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
-    if (w <= 0 || h <= 0) throw std::runtime_error("empty data window");
-    Imf::Array2D<Imf::Rgba> px(h, w);
-    file.setFrameBuffer(&px[0][0] - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * w, 1, static_cast<size_t>(w));
-    file.readPixels(dw.min.y, dw.max.y);
-    CoveredImage out;
-    out.image = ImageRGBF{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
-    out.coverage.resize(static_cast<size_t>(w) * h);
-    bool alphaCarriesCoverage = false;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const size_t i = static_cast<size_t>(y) * w + x;
-        const Imf::Rgba& p = px[y][x];
-        out.image.pixels[i * 3 + 0] = p.r;
-        out.image.pixels[i * 3 + 1] = p.g;
-        out.image.pixels[i * 3 + 2] = p.b;
-        out.coverage[i] = static_cast<float>(p.a) > 0.5f ? 1 : 0;
-        if (static_cast<float>(p.a) < 1.0f) alphaCarriesCoverage = true;
-      }
-    // An alpha of 1 everywhere (or none: OpenEXR then reads 1) says nothing about coverage.
-    if (!alphaCarriesCoverage) out.coverage = coverageFromValues(out.image);
-    for (float v : out.image.pixels)
-      if (!std::isfinite(v)) throw std::runtime_error("a pixel is NaN or infinite");
-    return out;
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    std::string what = e.what();
-    if (auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
-    throw InputError(path.string(), "", "cannot read EXR: " + what);
+const char* coverageSourceName(CoverageSource s) { return s == CoverageSource::Alpha ? "alpha" : "values"; }
+
+std::optional<std::vector<uint8_t>> coverageFromAlpha(const ImageRGBF& image, bool markedCoverage) {
+  if (image.alpha.empty()) return std::nullopt;
+  std::vector<uint8_t> mask(image.alpha.size());
+  bool belowOne = false;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    mask[i] = image.alpha[i] > 0.5f ? 1 : 0;
+    belowOne = belowOne || image.alpha[i] < 1.0f;
   }
+  // An unmarked alpha of 1 everywhere is what writers put when they have no coverage.
+  if (!belowOne && !markedCoverage) return std::nullopt;
+  return mask;
+}
+
+CoveredImage readExrWithCoverage(const std::filesystem::path& path) {
+  // Alpha is the only coverage that survives pixels lit by nothing (exactly 0 inside the object,
+  // e.g. the dark side of a back-lit statue).
+  bool marked = false;
+  CoveredImage out;
+  out.image = readExr(path, &marked);
+  for (float v : out.image.pixels)
+    if (!std::isfinite(v)) throw InputError(path.string(), "", "cannot read EXR: a pixel is NaN or infinite");
+  if (auto mask = coverageFromAlpha(out.image, marked)) {
+    out.coverage = std::move(*mask);
+    out.source = CoverageSource::Alpha;
+  } else {
+    out.coverage = coverageFromValues(out.image);
+    out.source = CoverageSource::Values;
+  }
+  return out;
 }
 
 glm::vec3 toneMapForDisplay(glm::vec3 color) {

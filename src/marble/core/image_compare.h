@@ -4,16 +4,25 @@
 // that scale, and the structural similarity (SSIM) of what a viewer would see.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "marble/core/image.h"
 
 namespace marble {
 
+// Where a coverage mask came from.
+enum class CoverageSource {
+  Alpha,   // the file's alpha channel (> 0.5)
+  Values,  // "not exactly 0 in all three channels": the fallback for files without coverage alpha
+};
+const char* coverageSourceName(CoverageSource s);  // "alpha" or "values"
+
 // An image and where the object covers it (1) or the background shows (0).
 struct CoveredImage {
   ImageRGBF image;
   std::vector<uint8_t> coverage;  // width * height, row 0 is the top row
+  CoverageSource source = CoverageSource::Values;
 };
 
 struct ImageComparison {
@@ -28,8 +37,14 @@ struct ImageComparison {
 // (marble's --hdr and a Cycles render with a transparent film both leave exact zeros there).
 std::vector<uint8_t> coverageFromValues(const ImageRGBF& image);
 
-// Reads an OpenEXR file with its coverage: the alpha channel (> 0.5) when it carries any (some
-// pixel below 1), else coverageFromValues. Throws InputError naming the file.
+// Coverage from the alpha channel, or nothing (nullopt) when the alpha says nothing about it:
+// no alpha channel, or an alpha of 1 everywhere that the file does not mark as coverage (marble's
+// --hdr before it wrote coverage; a file marble writes with coverage is marked, see writeExr).
+std::optional<std::vector<uint8_t>> coverageFromAlpha(const ImageRGBF& image, bool markedCoverage);
+
+// Reads an OpenEXR file with its coverage: from alpha when it carries coverage (a Cycles render
+// with a transparent film, marble's --hdr), else from the values (coverageFromValues), which
+// calls covered-but-unlit pixels background. Throws InputError naming the file.
 CoveredImage readExrWithCoverage(const std::filesystem::path& path);
 
 // The four figures. Sizes must match (throws std::invalid_argument otherwise).

@@ -7,22 +7,43 @@ namespace marble::gl {
 namespace {
 
 // Driver logs say "0:12(5): error ..." (Mesa) or "0(12) : error ..." (NVIDIA), where the
-// first number is the #line file index set by ShaderLibrary; map it back to the file name.
-std::string mapLog(const std::string& log, const std::vector<std::string>& files) {
+// first number is the #line file index set by ShaderLibrary; map it back to the file name, in
+// the compilers' usual "file:line: message" form.
+std::vector<std::string> mapLog(const std::string& log, const std::vector<std::string>& files) {
   static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\))");
   static const std::regex nv(R"(^(\d+)\((\d+)\))");
   std::istringstream in(log);
-  std::string line, out;
+  std::string line;
+  std::vector<std::string> out;
   while (std::getline(in, line)) {
     std::smatch m;
-    if (std::regex_search(line, m, mesa) || std::regex_search(line, m, nv)) {
+    const bool isMesa = std::regex_search(line, m, mesa);
+    if (isMesa || std::regex_search(line, m, nv)) {
       const size_t idx = std::stoul(m[1]);
       const std::string file = idx < files.size() ? files[idx] : "shader" + m[1].str();
-      line = file + ":" + m[2].str() + ":" + line.substr(static_cast<size_t>(m[0].length()));
+      std::string rest = line.substr(static_cast<size_t>(m[0].length()));
+      rest.erase(0, rest.find_first_not_of(" :"));
+      line = file + ":" + m[2].str() + ": " + rest;
     }
-    if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
+    if (line.find_first_not_of(" \t\r") != std::string::npos) out.push_back(line);
   }
   return out;
+}
+
+// A marble error is one line: the first error the compiler gave (the others usually follow
+// from it), and how many more lines the log had.
+std::string oneLine(const std::vector<std::string>& lines, const std::string& fallback) {
+  if (lines.empty()) return fallback;
+  size_t first = 0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].find("error") != std::string::npos) {
+      first = i;
+      break;
+    }
+  std::string s = lines[first];
+  if (lines.size() > 1)
+    s += " (" + std::to_string(lines.size() - 1) + " more compiler message" + (lines.size() > 2 ? "s" : "") + ")";
+  return s;
 }
 
 }  // namespace
@@ -56,7 +77,7 @@ Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSour
       std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
       glGetShaderInfoLog(s, len, nullptr, log.data());
       cleanup();
-      throw ShaderError("shader compile failed: " + mapLog(log.c_str(), files));
+      throw ShaderError(oneLine(mapLog(log.c_str(), files), st.file + ": shader compile failed (no log)"));
     }
     glAttachShader(program_.id(), s);
   }
@@ -71,7 +92,7 @@ Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSour
     glGetProgramInfoLog(program_.id(), len, nullptr, log.data());
     std::string names;
     for (const auto& st : stages) names += (names.empty() ? "" : " + ") + st.file;
-    throw ShaderError("shader link failed (" + names + "): " + std::string(log.c_str()));
+    throw ShaderError(names + ": shader link failed: " + oneLine(mapLog(log.c_str(), {}), "(no log)"));
   }
 }
 

@@ -21,12 +21,16 @@ public:
   std::string assemble(const std::string& name, const std::vector<std::string>& defines = {}) const;
 
   // File names in include order for the last assemble() call, so "0(12)" in a driver
-  // message can be mapped back to a file.
+  // message can be mapped back to a file. A file read from the source directory is named by
+  // its path there (what the user can open), an embedded one by its name.
   const std::vector<std::string>& lastFiles() const { return files_; }
 
   std::string source(const std::string& name) const;
+  const std::string& sourceDir() const { return sourceDir_; }
 
 private:
+  std::string displayName(const std::string& name) const;
+  bool exists(const std::string& name) const;
   void expand(const std::string& name, std::string& out, int depth) const;
   std::string sourceDir_;
   mutable std::vector<std::string> files_;

@@ -12,6 +12,10 @@ void setFrameUniforms(const gl::Program& p, const CameraMatrices& camera, const 
   p.set("u_light_directional", lightM.directional ? 1 : 0);
   p.set("u_light_radiance", light.color * light.intensity);
   p.set("u_light_texel_world", lightTexelWorld);
+  // `marble` mode: the point light's intensity is the irradiance (/ pi) at the scene centre, the
+  // origin (meshes are centred there; the light's map aims there), and falls off as 1/d^2 around
+  // it. The same d0 sets the Cycles reference's light power (tools/cycles_reference.py).
+  p.set("u_light_ref_distance", glm::length(light.position));
 }
 
 }  // namespace marble

@@ -176,13 +176,18 @@ ImageRGBF Renderer::readHdr() {
     hdrReadback_.emplace(w, h, GL_RGBA32F);
   passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_}, hdrReadback_->fbo(), w,
                     h, lastRect_, /*linearOutput=*/true);
-  std::vector<float> rows(img.pixels.size());
+  // RGB: linear light; A: coverage (the post pass writes 1 on the object, 0 elsewhere).
+  std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, hdrReadback_->fbo());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rows.data());
-  const size_t row = static_cast<size_t>(w) * 3;
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+  img.alpha.resize(static_cast<size_t>(w) * h);
   for (int y = 0; y < h; ++y)
-    std::copy_n(rows.begin() + static_cast<ptrdiff_t>((h - 1 - y) * row), row, img.pixels.begin() + static_cast<ptrdiff_t>(y * row));
+    for (int x = 0; x < w; ++x) {
+      const size_t from = (static_cast<size_t>(h - 1 - y) * w + x) * 4, to = static_cast<size_t>(y) * w + x;
+      std::copy_n(rgba.begin() + static_cast<ptrdiff_t>(from), 3, img.pixels.begin() + static_cast<ptrdiff_t>(to * 3));
+      img.alpha[to] = rgba[from + 3];
+    }
   return img;
 }
 

@@ -43,8 +43,9 @@ public:
   // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
-  // The last frame's linear HDR image (before tone mapping), top row first. Not for `floor`.
-  // Re-runs the last frame's post pass into a float target.
+  // The last frame's linear HDR image (before tone mapping), top row first, with coverage as
+  // alpha (1 on the object, 0 on the background). Not for `floor`. Re-runs the last frame's
+  // post pass into a float target.
   ImageRGBF readHdr();
 
   // GPU times of the last frame's passes; `wait` blocks until they are known.

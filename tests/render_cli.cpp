@@ -68,6 +68,18 @@ TEST(CliRender, DefaultSceneRendersCentredObject) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliRender, AntialiasOption) {
+  const auto dir = tempDir("render-antialias");
+  const auto none = dir / "none.png", fxaa = dir / "fxaa.png";
+  ASSERT_EQ(runMarble("render -o " + none.string() + " --width 64 --height 64 --antialias none").exitCode, 0);
+  ASSERT_EQ(runMarble("render -o " + fxaa.string() + " --width 64 --height 64 --antialias fxaa").exitCode, 0);
+  EXPECT_NE(readPng(none).pixels, readPng(fxaa).pixels) << "FXAA changes the silhouette's pixels";
+  const auto bad = runMarble("render -o " + none.string() + " --width 16 --height 16 --antialias msaa");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--antialias: expected \"fxaa\" or \"none\", got \"msaa\""), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliRender, BadMeshFilesGiveOneLineAndExitTwo) {
   const auto dir = tempDir("render-bad");
   struct Case {

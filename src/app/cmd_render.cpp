@@ -48,6 +48,7 @@ int runRenderCommand(const RenderOptions& o) {
                   t.lightDepthMs, t.geometryMs, t.lightingMs,
                   scene.render.mode == RenderMode::Marble ? t.subsurfaceBlurMs : 0.0, t.postMs);
       if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
+      else if (scene.render.antialias == Antialias::Fxaa) std::printf("fxaa             %8.2f\n", t.fxaaMs);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "
               << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles)\n";

@@ -20,6 +20,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--preset", o.preset, "Material preset by name (see `marble presets`) or a preset .json file");
   cmd.add_option("--set", o.sets, "Override one material parameter, key=value (repeatable; keys as in preset files)");
   cmd.add_option("--up", o.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
+  cmd.add_option("--antialias", o.antialias, "Antialiasing of the picture: fxaa (default) or none");
 }
 
 Scene buildScene(const SceneOptions& o) {
@@ -33,6 +34,13 @@ Scene buildScene(const SceneOptions& o) {
       scene.render.mode = parseRenderMode(o.mode);
     } catch (const std::invalid_argument& e) {
       throw InputError("--mode", "", e.what());
+    }
+  }
+  if (!o.antialias.empty()) {
+    try {
+      scene.render.antialias = parseAntialias(o.antialias);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--antialias", "", e.what());
     }
   }
   if (!o.up.empty()) {

@@ -17,6 +17,7 @@ struct SceneOptions {
   std::string preset;              // material preset, empty = the scene's
   std::vector<std::string> sets;   // key=value material overrides
   std::string up;                  // up axis of the mesh file
+  std::string antialias;           // "fxaa" or "none", empty = the scene's
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);

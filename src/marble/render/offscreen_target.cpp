@@ -3,8 +3,8 @@
 namespace marble {
 
 OffscreenTarget::OffscreenTarget(int width, int height)
-    : width_(width), height_(height), color_(gl::Texture::create(GL_TEXTURE_2D)), fbo_(gl::Framebuffer::create()) {
-  glTextureStorage2D(color_.id(), 1, GL_RGBA8, width, height);
+    : width_(width), height_(height), color_(gl::makeTexture2D(GL_RGBA8, width, height, GL_LINEAR)),
+      fbo_(gl::Framebuffer::create()) {
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// An RGBA8 colour framebuffer of a fixed size for headless rendering, with read-back.
+// An RGBA8 colour framebuffer of a fixed size for headless rendering, with read-back. Its
+// texture is filtered GL_LINEAR and clamped, so a later pass can sample it (FXAA does).
 #include "marble/core/image.h"
 #include "marble/gl/handles.h"
 
@@ -9,6 +10,8 @@ class OffscreenTarget {
 public:
   OffscreenTarget(int width, int height);
   GLuint fbo() const { return fbo_.id(); }
+  GLuint texture() const { return color_.id(); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 4; }
   int width() const { return width_; }
   int height() const { return height_; }
   ImageRGBA8 read() const;  // top row first

@@ -6,13 +6,15 @@
 namespace marble {
 
 struct Renderer::Passes {
-  explicit Passes(const ShaderLibrary& s) : lightDepth(s), geometry(s), lighting(s), blur(s), post(s), floor(s) {}
+  explicit Passes(const ShaderLibrary& s)
+      : lightDepth(s), geometry(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   LightingPass lighting;
   SubsurfaceBlurPass blur;
   PostPass post;
   FloorPass floor;
+  FxaaPass fxaa;
 };
 
 bool samePattern(const Material& a, const Material& b) {
@@ -111,7 +113,16 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
     lastWidth_ = width;
     lastHeight_ = height;
   }
-  passes_->post.run(finalHdrTexture_, passes_->geometry.depthTexture(), scene.render, targetFbo, width, height);
+
+  // Antialiasing: the post pass writes the display image (resized with the frame), FXAA takes it to the target.
+  const bool fxaa = scene.render.antialias == Antialias::Fxaa;
+  if (fxaa && (!displayImage_ || displayImage_->width() != width || displayImage_->height() != height))
+    displayImage_.emplace(width, height);
+  if (!fxaa) displayImage_.reset();
+  const GLuint postTarget = fxaa ? displayImage_->fbo() : targetFbo;
+
+  passes_->post.run(finalHdrTexture_, passes_->geometry.depthTexture(), scene.render, postTarget, width, height);
+  if (fxaa) passes_->fxaa.run(displayImage_->texture(), targetFbo, width, height);
 }
 
 PassTimes Renderer::passTimes(bool wait) {
@@ -122,12 +133,13 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.subsurfaceBlurMs = get(passes_->blur.timer());
   times_.postMs = get(passes_->post.timer());
   times_.floorMs = get(passes_->floor.timer());
+  times_.fxaaMs = get(passes_->fxaa.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() + passes_->blur.bytes() +
-         (mesh_ ? mesh_->bytes() : 0);
+         (displayImage_ ? displayImage_->bytes() : 0) + (mesh_ ? mesh_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() const {

@@ -3,16 +3,19 @@
 //   1 light depth  -> only when the light, the mesh or the model transform changed
 //   2 geometry     -> only when the camera, the mesh, the size or the pattern changed
 //   3 lighting     -> every frame (cheap, full screen)
+// then the subsurface blur (`marble`), the post pass and, when antialiasing is on, FXAA.
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
 
 #include "marble/gl/shader_library.h"
 #include "marble/render/floor_pass.h"
+#include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_depth_pass.h"
 #include "marble/render/lighting_pass.h"
+#include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
 #include "marble/core/image.h"
@@ -21,7 +24,7 @@
 namespace marble {
 
 struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
+  double lightDepthMs = 0, geometryMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0, fxaaMs = 0;
   bool lightDepthRan = false, geometryRan = false, lightingRan = false;
 };
 
@@ -70,6 +73,8 @@ private:
   bool lightingValid_ = false;
   Scene lastLightingScene_{};
   int lastWidth_ = 0, lastHeight_ = 0;  // where the last frame's linear HDR image is (for readHdr)
+  // With antialiasing on, the post pass writes this display image and FXAA reads it.
+  std::optional<OffscreenTarget> displayImage_;
 };
 
 // Whether two materials give the same G-buffer albedo (pattern and colour fields).

@@ -39,6 +39,11 @@ const std::string& renderModeName(RenderMode mode);
 
 enum class Environment { Studio, None };
 
+// Antialiasing of the final picture (issue 5): FXAA after the post pass, or none.
+enum class Antialias { None, Fxaa };
+Antialias parseAntialias(const std::string& name);  // "none" | "fxaa"; throws std::invalid_argument
+const char* antialiasName(Antialias aa);
+
 struct RenderSettings {
   int width = 800;
   int height = 800;
@@ -47,6 +52,7 @@ struct RenderSettings {
   float exposure = 0.0f;                      // stops, for the `marble` mode's tone mapping
   Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
   float environment_intensity = 0.6f;
+  Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
 };
 
 struct Scene {

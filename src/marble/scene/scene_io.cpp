@@ -59,7 +59,8 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
   j["render"] = {{"width", scene.render.width},
                  {"height", scene.render.height},
                  {"background", vec3(scene.render.background)},
-                 {"mode", renderModeName(scene.render.mode)}};
+                 {"mode", renderModeName(scene.render.mode)},
+                 {"antialias", antialiasName(scene.render.antialias)}};
   return j.dump(2) + "\n";
 }
 

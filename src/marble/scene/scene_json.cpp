@@ -143,6 +143,14 @@ void readRender(const json& j, const std::string& file, RenderSettings& rs, std:
     else r.fail("environment", "expected \"studio\" or \"none\", got \"" + env + "\"");
   }
   r.number("environment_intensity", rs.environment_intensity, 0.0f, 100.0f);
+  std::string antialias;
+  if (r.string("antialias", antialias)) {
+    try {
+      rs.antialias = parseAntialias(antialias);
+    } catch (const std::invalid_argument& e) {
+      r.fail("antialias", e.what());
+    }
+  }
   std::string mode;
   if (r.string("mode", mode)) {
     try {

@@ -114,6 +114,7 @@ void writeInputs(const fs::path& dir) {
   put("far.json", R"({"camera": {"position": [0, 0, 1e39]}})");
   put("unknown.json", R"({"render": {"width": 16, "height": 16, "colour": 1}})");
   put("mode.json", R"({"render": {"mode": "sparkly"}})");
+  put("antialias.json", R"({"render": {"antialias": "msaa"}})");
   put("up.json", R"({"up": "w"})");
   put("parallel.json", R"({"camera": {"position": [0, 2, 0], "up": [0, 1, 0]}})");
   put("lightorigin.json", R"({"light": {"position": [0, 0, 0]}})");
@@ -225,6 +226,8 @@ const std::vector<Row>& rows() {
        "warning: unknown.json: render.colour: unknown key (ignored)"},
       {"SceneUnknownMode", "unknown render mode in a scene", "render mode.json" + kSmall, 2,
        "marble render: mode.json: render.mode: unknown render mode \"sparkly\"; known: paper, marble,"},
+      {"SceneUnknownAntialias", "unknown antialiasing in a scene", "render antialias.json" + kSmall, 2,
+       "marble render: antialias.json: render.antialias: expected \"fxaa\" or \"none\", got \"msaa\""},
       {"SceneBadUp", "up axis \"w\"", "render up.json" + kSmall, 2, "marble render: up.json: up: expected one of \"y\", \"z\", \"x\", \"-y\", \"-z\", \"-x\", got \"w\""},
       {"SceneCameraUpParallel", "camera looking along its up vector", "render parallel.json" + kSmall, 2,
        "marble render: parallel.json: camera.up: must not be parallel to the viewing direction"},
@@ -269,6 +272,11 @@ const std::vector<Row>& rows() {
       {"UnknownMode", "--mode sparkly", "render --mode sparkly" + kSmall, 2, "marble render: --mode: unknown render mode \"sparkly\"; known: paper,"},
       {"ModeWrongCase", "--mode Paper (names are lower case)", "render --mode Paper" + kSmall, 2, "marble render: --mode: unknown render mode \"Paper\""},
       {"BadUp", "--up w", "render --up w" + kSmall, 2, "marble render: --up: expected one of y, z, x, -y, -z, -x, got \"w\""},
+      {"UnknownAntialias", "--antialias msaa", "render --antialias msaa" + kSmall, 2,
+       "marble render: --antialias: expected \"fxaa\" or \"none\", got \"msaa\""},
+      {"SupersampleOutOfRange", "--supersample 5", "render --supersample 5" + kSmall, 2, "--supersample: Value 5 not in range 1 to 4"},
+      {"SupersampleTooLarge", "--supersample 4 of a 4000-pixel-wide image", "render -o out.png --width 4000 --height 16 --supersample 4", 2,
+       "marble render: --supersample: 4 times 4000x16 is 16000x64, above the limit of 8192 pixels a side; lower --supersample or the size"},
       {"ZeroWidth", "--width 0", "render -o out.png --width 0", 2, "--width: Value 0 not in range 1 to 8192"},
       {"AbsurdWidth", "--width 100000", "render -o out.png --width 100000", 2, "--width: Value 100000 not in range 1 to 8192"},
       {"NonNumericHeight", "--height abc", "render -o out.png --height abc", 2, "--height: Value abc not in range 1 to 8192"},

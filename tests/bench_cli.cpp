@@ -51,7 +51,7 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
   EXPECT_LE(j.value("frame_ms_min", 0.0), j.value("frame_ms_median", 0.0));
   EXPECT_LE(j.value("frame_ms_median", 0.0), j.value("frame_ms_max", 0.0));
   ASSERT_TRUE(j["passes"].is_object());
-  for (const char* pass : {"light_depth", "geometry", "albedo", "lighting", "post"}) {
+  for (const char* pass : {"light_depth", "geometry", "albedo", "lighting", "post", "fxaa"}) {
     ASSERT_TRUE(j["passes"].contains(pass)) << pass;
     EXPECT_GE(j["passes"][pass].get<double>(), 0.0) << pass;
   }
@@ -86,6 +86,14 @@ TEST(CliBench, FloorModeTimesTheFloorPass) {
   ASSERT_TRUE(j.contains("passes"));
   EXPECT_TRUE(j["passes"].contains("floor"));
   EXPECT_FALSE(j["passes"].contains("geometry"));
+}
+
+TEST(CliBench, FxaaIsAPassOnlyWhenAntialiasingIsOn) {
+  const auto on = benchJson("");
+  EXPECT_EQ(on["pass_runs"].value("fxaa", -1), 3) << "FXAA runs every frame";
+  const auto off = benchJson("--antialias none");
+  EXPECT_FALSE(off["passes"].contains("fxaa"));
+  EXPECT_TRUE(off["passes"].contains("post"));
 }
 
 TEST(CliBench, TablePrintsSpreadPassesAndMemory) {

@@ -1,4 +1,6 @@
-// Golden images: marble, phong and oren-nayar on the built-in mesh, compared with PNGs in
+// Golden images: marble, phong and oren-nayar on the built-in mesh (antialiased with FXAA, the
+// default), and marble without antialiasing (`marble-no-aa.png`: the picture from before FXAA
+// existed, so `antialias: none` is checked to give the old output), compared with PNGs in
 // tests/golden/. Tolerance (stated, and the same for every image): at most 0.5% of the
 // pixels may differ by more than 3/255 in any channel, and none by more than 64/255 — room
 // for rasterization differences at silhouettes between Mesa versions or GPUs, none for a
@@ -7,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <ostream>
+#include <string>
 
 #include "gl_support.h"
 #include "marble/core/image.h"
@@ -20,7 +24,15 @@ constexpr int kSize = 160;
 constexpr int kSmallDiff = 3, kMaxDiff = 64;
 constexpr double kAllowedFraction = 0.005;
 
-class Golden : public ::testing::TestWithParam<RenderMode> {};
+struct GoldenCase {
+  RenderMode mode;
+  Antialias antialias;
+  std::string name() const { return renderModeName(mode) + (antialias == Antialias::None ? "-no-aa" : ""); }
+};
+
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name(); }
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
 
 }  // namespace
 
@@ -30,9 +42,10 @@ TEST_P(Golden, MatchesReferenceImage) {
   renderer.setMesh(builtinMesh(kDefaultBuiltinMesh));
   Scene s;
   s.render.width = s.render.height = kSize;
-  s.render.mode = GetParam();
+  s.render.mode = GetParam().mode;
+  s.render.antialias = GetParam().antialias;
   const ImageRGBA8 img = renderImage(renderer, s);
-  const std::string path = std::string(MARBLE_GOLDEN_DIR) + "/" + renderModeName(GetParam()) + ".png";
+  const std::string path = std::string(MARBLE_GOLDEN_DIR) + "/" + GetParam().name() + ".png";
   if (const char* update = std::getenv("MARBLE_UPDATE_GOLDENS"); update && std::string(update) == "1") {
     writePng(path, img);
     GTEST_SKIP() << "wrote " << path;
@@ -52,9 +65,12 @@ TEST_P(Golden, MatchesReferenceImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BuiltinMesh, Golden,
-                         ::testing::Values(RenderMode::Marble, RenderMode::Phong, RenderMode::OrenNayar),
+                         ::testing::Values(GoldenCase{RenderMode::Marble, Antialias::Fxaa},
+                                           GoldenCase{RenderMode::Phong, Antialias::Fxaa},
+                                           GoldenCase{RenderMode::OrenNayar, Antialias::Fxaa},
+                                           GoldenCase{RenderMode::Marble, Antialias::None}),
                          [](const auto& info) {
-                           std::string n = renderModeName(info.param);
+                           std::string n = info.param.name();
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });

@@ -68,6 +68,51 @@ TEST(CliRender, DefaultSceneRendersCentredObject) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliRender, SupersampleRendersLargerAndWritesTheRequestedSize) {
+  const auto dir = tempDir("render-supersample");
+  const auto png = dir / "ss.png", exr = dir / "ss.exr";
+  const auto r = runMarble("render -o " + png.string() + " --hdr " + exr.string() + " --width 48 --height 36 --supersample 3");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("48x36"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("supersampled 3x3"), std::string::npos) << r.output;
+  const ImageRGBA8 img = readPng(png);
+  EXPECT_EQ(img.width, 48);
+  EXPECT_EQ(img.height, 36);
+  const ImageRGBF hdr = readExr(exr);
+  EXPECT_EQ(hdr.width, 48);
+  EXPECT_EQ(hdr.height, 36);
+  EXPECT_TRUE(isBackground(img.at(1, 1))) << "corners show the background";
+  EXPECT_FALSE(isBackground(img.at(24, 18))) << "and the object is in the middle";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, SupersampleOutOfRangeOrTooLargeExitsTwo) {
+  for (const char* n : {"0", "5", "two"}) {
+    const auto r = runMarble(std::string("render -o /tmp/x.png --width 16 --height 16 --supersample ") + n);
+    EXPECT_EQ(r.exitCode, 2) << n << ": " << r.output;
+    EXPECT_NE(r.output.find("--supersample"), std::string::npos) << r.output;
+  }
+  // The size limit applies to what is rendered: 3 x 3000 = 9000 > 8192.
+  const auto dir = tempDir("render-supersample-large");
+  const auto r = runMarble("render -o " + (dir / "x.png").string() + " --width 3000 --height 20 --supersample 3");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--supersample: 3 times 3000x20 is 9000x60, above the limit of 8192"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, AntialiasOption) {
+  const auto dir = tempDir("render-antialias");
+  const auto none = dir / "none.png", fxaa = dir / "fxaa.png";
+  ASSERT_EQ(runMarble("render -o " + none.string() + " --width 64 --height 64 --antialias none").exitCode, 0);
+  ASSERT_EQ(runMarble("render -o " + fxaa.string() + " --width 64 --height 64 --antialias fxaa").exitCode, 0);
+  EXPECT_NE(readPng(none).pixels, readPng(fxaa).pixels) << "FXAA changes the silhouette's pixels";
+  const auto bad = runMarble("render -o " + none.string() + " --width 16 --height 16 --antialias msaa");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--antialias: expected \"fxaa\" or \"none\", got \"msaa\""), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliRender, BadMeshFilesGiveOneLineAndExitTwo) {
   const auto dir = tempDir("render-bad");
   struct Case {

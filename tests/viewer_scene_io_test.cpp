@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "marble/core/atomic_file.h"
+#include "marble/core/error.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/scene_io.h"
 
@@ -48,6 +49,7 @@ Scene unusualScene() {
   s.render.height = 360;
   s.render.background = {0.05f, 0.06f, 0.07f};
   s.render.mode = RenderMode::OrenNayar;
+  s.render.antialias = Antialias::None;  // not the default
   return s;
 }
 
@@ -66,6 +68,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.render.height, b.render.height);
   EXPECT_EQ(a.render.background, b.render.background);
   EXPECT_EQ(a.render.mode, b.render.mode);
+  EXPECT_EQ(a.render.antialias, b.render.antialias);
 }
 
 TEST(ViewerSceneIo, SaveThenLoadGivesTheSameScene) {
@@ -119,6 +122,39 @@ TEST(ViewerSceneIo, AnInterruptedSaveLeavesTheOldFileIntact) {
   size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
   EXPECT_EQ(files, 1u) << "no temporary left behind";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewerSceneIo, AntialiasIsReadWrittenAndValidated) {
+  const auto dir = scratch("antialias");
+  std::vector<std::string> warnings;
+  std::ofstream(dir / "default.json") << R"({"render": {"width": 32}})";
+  EXPECT_EQ(loadScene(dir / "default.json", warnings).render.antialias, Antialias::Fxaa) << "FXAA is the default";
+  std::ofstream(dir / "none.json") << R"({"render": {"antialias": "none"}})";
+  EXPECT_EQ(loadScene(dir / "none.json", warnings).render.antialias, Antialias::None);
+  std::ofstream(dir / "fxaa.json") << R"({"render": {"antialias": "fxaa"}})";
+  EXPECT_EQ(loadScene(dir / "fxaa.json", warnings).render.antialias, Antialias::Fxaa);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"({"render": {"antialias": "msaa"}})", "render.antialias: expected \"fxaa\" or \"none\", got \"msaa\""},
+      {R"({"render": {"antialias": "FXAA"}})", "render.antialias: expected \"fxaa\" or \"none\", got \"FXAA\""},
+      {R"({"render": {"antialias": true}})", "render.antialias: expected a string, got boolean true"},
+  };
+  for (const auto& [text, message] : bad) {
+    std::ofstream(dir / "bad.json") << text;
+    try {
+      loadScene(dir / "bad.json", warnings);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.json: " + message), std::string::npos) << e.what();
+    }
+  }
+
+  Scene none;
+  none.render.antialias = Antialias::None;
+  EXPECT_NE(sceneToJsonText(none, "s.json").find("\"antialias\": \"none\""), std::string::npos);
+  EXPECT_NE(sceneToJsonText(Scene{}, "s.json").find("\"antialias\": \"fxaa\""), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

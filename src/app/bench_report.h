@@ -8,7 +8,7 @@
 namespace marble {
 
 struct PassSeries {
-  std::string name;         // "light_depth", "geometry", "lighting", "subsurface_blur", "post", "floor"
+  std::string name;         // "light_depth", "geometry", "lighting", "subsurface_blur", "post", "fxaa", "floor"
   std::vector<double> ms;   // one per measured frame; 0 when the pass was skipped (cached)
   int runs = 0;             // frames in which the pass actually ran
   std::vector<double> msWhenRun;  // only the frames in which it ran: the cost of one run

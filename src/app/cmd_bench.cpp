@@ -32,14 +32,15 @@ std::string glString(GLenum name) {
   return s ? s : "";
 }
 
-// The passes a frame of `mode` runs, in order. The subsurface blur exists only for `marble`;
-// the floor mode is one pass and nothing else.
-std::vector<PassSeries> emptySeries(RenderMode mode) {
-  if (mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
+// The passes a frame of these settings runs, in order. The subsurface blur exists only for
+// `marble`, FXAA only when antialiasing is on; the floor mode is one pass and nothing else.
+std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
+  if (settings.mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
   std::vector<PassSeries> s = {
       {"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"albedo", {}, 0, {}}, {"lighting", {}, 0, {}}};
-  if (mode == RenderMode::Marble) s.push_back({"subsurface_blur", {}, 0, {}});
+  if (settings.mode == RenderMode::Marble) s.push_back({"subsurface_blur", {}, 0, {}});
   s.push_back({"post", {}, 0, {}});
+  if (settings.antialias == Antialias::Fxaa) s.push_back({"fxaa", {}, 0, {}});
   return s;
 }
 
@@ -53,6 +54,7 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
     if (p.name == "lighting") ran = t.lightingRan, ms = t.lightingMs;
     if (p.name == "subsurface_blur") ran = t.lightingRan, ms = t.subsurfaceBlurMs;
     if (p.name == "post") ms = t.postMs;
+    if (p.name == "fxaa") ms = t.fxaaMs;
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
     if (p.name == "albedo") ran = t.albedoRan, ms = t.albedoMs;
@@ -104,7 +106,7 @@ int runBenchCommand(const BenchOptions& o) {
     r.uploadMs = wallMs() - t0;
     r.triangles = renderer.triangleCount();
     OffscreenTarget target(r.width, r.height);
-    r.passes = emptySeries(base.render.mode);
+    r.passes = emptySeries(base.render);
 
     const glm::mat4 model(1.0f);
     for (int i = 0; i < o.warmup + o.frames; ++i) {

@@ -5,6 +5,7 @@
 
 #include "marble/core/error.h"
 #include "marble/core/image.h"
+#include "marble/core/image_downsample.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
@@ -17,12 +18,21 @@ int runRenderCommand(const RenderOptions& o) {
     // The scene is read first, so a broken scene is reported even when -o was forgotten.
     const Scene scene = buildScene(o.scene);
     if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
+    // Supersampling renders the whole frame n times larger; the size limit is on what is rendered.
+    const int n = o.supersample;
+    const int width = scene.render.width * n, height = scene.render.height * n;
+    if (width > kMaxRenderSize || height > kMaxRenderSize)
+      throw InputError("--supersample", "",
+                       std::to_string(n) + " times " + std::to_string(scene.render.width) + "x" +
+                           std::to_string(scene.render.height) + " is " + std::to_string(width) + "x" +
+                           std::to_string(height) + ", above the limit of " + std::to_string(kMaxRenderSize) +
+                           " pixels a side; lower --supersample or the size");
     const Mesh mesh = loadSceneMesh(scene);
     ShaderLibrary shaders = shaderLibraryFor(false);
     HeadlessContext context;
     Renderer renderer(std::move(shaders));
     renderer.setMesh(mesh);
-    OffscreenTarget target(scene.render.width, scene.render.height);
+    OffscreenTarget target(width, height);
     if (o.timings) {
       // A first frame pays llvmpipe's lazy shader compilation and its first timer query is
       // unreliable; time a second, full frame instead.
@@ -31,7 +41,7 @@ int runRenderCommand(const RenderOptions& o) {
       renderer.invalidate();
     }
     renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
-    const ImageRGBA8 image = target.read();
+    const ImageRGBA8 image = downsampleSrgb(target.read(), n);
     if (GLenum err = glGetError(); err != GL_NO_ERROR) {
       char hex[16];
       std::snprintf(hex, sizeof hex, "0x%04x", err);
@@ -40,7 +50,7 @@ int runRenderCommand(const RenderOptions& o) {
     writePng(o.output, image);
     if (!o.hdr.empty()) {
       if (scene.render.mode == RenderMode::Floor) throw InputError("--hdr", "", "the floor mode has no HDR image");
-      writeExr(o.hdr, renderer.readHdr());
+      writeExr(o.hdr, downsampleLinear(renderer.readHdr(), n));
       std::cout << "wrote " << o.hdr << " (linear, not tone-mapped)\n";
     }
     if (o.timings) {
@@ -50,9 +60,12 @@ int runRenderCommand(const RenderOptions& o) {
                   t.lightDepthMs, t.geometryMs, t.lightingMs,
                   scene.render.mode == RenderMode::Marble ? t.subsurfaceBlurMs : 0.0, t.postMs);
       if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
+      else if (scene.render.antialias == Antialias::Fxaa) std::printf("fxaa             %8.2f\n", t.fxaaMs);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "
-              << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles)\n";
+              << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles";
+    if (n > 1) std::cout << ", supersampled " << n << "x" << n;
+    std::cout << ")\n";
     return 0;
   });
 }

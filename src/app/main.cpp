@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
   renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically; required)");
   renderCmd->add_option("--hdr", render.hdr, "Also write the linear, not tone-mapped image as OpenEXR");
   renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
+  renderCmd->add_option("--supersample", render.supersample,
+                        "Render N times wider and higher, then average each NxN block in linear light (1-4, default 1)")
+      ->check(CLI::Range(1, 4));
 
   ViewOptions view;
   auto* viewCmd = app.add_subcommand("view", "Open the interactive viewer (needs a display)");

@@ -22,6 +22,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--up", o.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
   cmd.add_option("--subsurface-resolution", o.subsurfaceResolution,
                  "marble mode's subsurface blur: half (default, fast) or full (crisper)");
+  cmd.add_option("--antialias", o.antialias, "Antialiasing of the picture: fxaa (default) or none");
 }
 
 Scene buildScene(const SceneOptions& o) {
@@ -35,6 +36,13 @@ Scene buildScene(const SceneOptions& o) {
       scene.render.mode = parseRenderMode(o.mode);
     } catch (const std::invalid_argument& e) {
       throw InputError("--mode", "", e.what());
+    }
+  }
+  if (!o.antialias.empty()) {
+    try {
+      scene.render.antialias = parseAntialias(o.antialias);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--antialias", "", e.what());
     }
   }
   if (!o.up.empty()) {

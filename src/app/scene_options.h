@@ -18,6 +18,7 @@ struct SceneOptions {
   std::vector<std::string> sets;   // key=value material overrides
   std::string up;                  // up axis of the mesh file
   std::string subsurfaceResolution;  // "half" | "full", empty = the scene's
+  std::string antialias;           // "fxaa" or "none", empty = the scene's
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);

@@ -156,6 +156,9 @@ void drawViewSection(ViewerState& s) {
     tooltip("Degrees per second; negative turns the other way.");
   }
   colour("background", s.scene.render.background, "Colour behind the object (linear RGB), saved with the scene.");
+  enumCombo("antialiasing", s.scene.render.antialias, {"none", "FXAA"},
+            "FXAA smooths the stair-stepped edges of the picture (silhouettes, sharp veins) after tone mapping;\n"
+            "flat areas stay exactly as they are. Saved with the scene. Not used by the floor mode.");
   ImGui::Checkbox("vsync", &s.vsync);
   tooltip("Wait for the display's refresh: smooth and cool. Off: measure the real frame time.");
   ImGui::SameLine();

@@ -12,7 +12,7 @@ void drawColourSection(ViewerState& s);
 void drawSubsurfaceSection(ViewerState& s);
 void drawReflectanceSection(ViewerState& s);
 void drawLightSection(ViewerState& s);
-void drawViewSection(ViewerState& s);     // camera, turntable, background, vsync, screenshot
+void drawViewSection(ViewerState& s);     // camera, turntable, background, antialiasing, vsync, screenshot
 void drawPerformanceSection(ViewerState& s);
 
 // A square pad showing the light's direction from above; click or drag to move it.

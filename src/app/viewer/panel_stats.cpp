@@ -43,6 +43,8 @@ void drawPerformanceSection(ViewerState& s) {
   if (s.scene.render.mode == RenderMode::Marble)
     passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");
   passLine("post", t.postMs, true, "Marble mode: blurred light x albedo + reflections (gloss changes re-run only this), then tone mapping. Output to the view. Runs every frame.");
+  if (s.scene.render.mode != RenderMode::Floor && s.scene.render.antialias == Antialias::Fxaa)
+    passLine("fxaa", t.fxaaMs, true, "Antialiasing (FXAA) of the displayed picture: blends across contrast edges. Runs every frame.");
   if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
 }
 

@@ -3,8 +3,8 @@
 namespace marble {
 
 OffscreenTarget::OffscreenTarget(int width, int height, GLenum internalFormat)
-    : width_(width), height_(height), color_(gl::Texture::create(GL_TEXTURE_2D)), fbo_(gl::Framebuffer::create()) {
-  glTextureStorage2D(color_.id(), 1, internalFormat, width, height);
+    : width_(width), height_(height), color_(gl::makeTexture2D(internalFormat, width, height, GL_LINEAR)),
+      fbo_(gl::Framebuffer::create()) {
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
 }
 

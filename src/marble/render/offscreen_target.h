@@ -1,6 +1,7 @@
 #pragma once
 // A colour framebuffer of a fixed size for headless rendering (RGBA8 unless told), with
-// read-back of the RGBA8 kind.
+// read-back of the RGBA8 kind. Its texture is filtered GL_LINEAR and clamped, so a later pass
+// can sample it (FXAA does).
 #include "marble/core/image.h"
 #include "marble/gl/handles.h"
 
@@ -10,6 +11,8 @@ class OffscreenTarget {
 public:
   OffscreenTarget(int width, int height, GLenum internalFormat = GL_RGBA8);
   GLuint fbo() const { return fbo_.id(); }
+  GLuint texture() const { return color_.id(); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 4; }
   int width() const { return width_; }
   int height() const { return height_; }
   ImageRGBA8 read() const;  // top row first; RGBA8 targets only

@@ -7,7 +7,7 @@ namespace marble {
 
 struct Renderer::Passes {
   explicit Passes(const ShaderLibrary& s)
-      : lightDepth(s), geometry(s), albedo(s), lighting(s), blur(s), post(s), floor(s) {}
+      : lightDepth(s), geometry(s), albedo(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   AlbedoPass albedo;
@@ -15,6 +15,7 @@ struct Renderer::Passes {
   SubsurfaceBlurPass blur;
   PostPass post;
   FloorPass floor;
+  FxaaPass fxaa;
 };
 
 bool samePattern(const Material& a, const Material& b) {
@@ -140,7 +141,22 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastScene_ = scene;
   lastRect_ = rect;
   lastLightTexelWorld_ = lightTexelWorld;
-  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld}, targetFbo, width, height, rect);
+
+  // Antialiasing: the post pass writes the display image (resized with the frame), FXAA takes
+  // it to the target.
+  const bool fxaa = scene.render.antialias == Antialias::Fxaa;
+  if (fxaa && (!displayImage_ || displayImage_->width() != width || displayImage_->height() != height))
+    displayImage_.emplace(width, height);
+  if (!fxaa) displayImage_.reset();
+  const GLuint postTarget = fxaa ? displayImage_->fbo() : targetFbo;
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld}, postTarget, width, height, rect);
+  if (fxaa) {
+    // FXAA changes nothing on flat background: outside the object's rectangle (grown by the
+    // filter's reach) the display image is copied as it is.
+    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;
+    const ScreenRect aaRect = wholeFrame ? ScreenRect{0, 0, width, height} : grown(rect, 4, width, height);
+    passes_->fxaa.run(displayImage_->fbo(), displayImage_->texture(), targetFbo, width, height, aaRect);
+  }
 }
 
 PostInputs Renderer::postInputs() const {
@@ -158,12 +174,13 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.subsurfaceBlurMs = get(passes_->blur.timer());
   times_.postMs = get(passes_->post.timer());
   times_.floorMs = get(passes_->floor.timer());
+  times_.fxaaMs = get(passes_->fxaa.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() +
+         passes_->lighting.bytes() + passes_->blur.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0);
 }
 

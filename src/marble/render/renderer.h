@@ -7,6 +7,7 @@
 //   5 subsurface blur  -> with 4 (`marble` only; half resolution by default)
 //   6 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
 // The screen passes (3-6) draw only inside the mesh's screen rectangle.
+//   7 FXAA             -> every frame when antialiasing is on (display image -> target)
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
@@ -14,11 +15,13 @@
 #include "marble/gl/shader_library.h"
 #include "marble/render/albedo_pass.h"
 #include "marble/render/floor_pass.h"
+#include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_depth_pass.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/lighting_pass.h"
+#include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
 #include "marble/core/image.h"
@@ -27,7 +30,8 @@
 namespace marble {
 
 struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0;
+  double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
+         fxaaMs = 0;
   bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false;
 };
 
@@ -83,6 +87,8 @@ private:
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  // With antialiasing on, the post pass writes this display image and FXAA reads it.
+  std::optional<OffscreenTarget> displayImage_;
 };
 
 // Whether two materials give the same G-buffer albedo (pattern and colour fields).

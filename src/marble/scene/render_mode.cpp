@@ -22,4 +22,12 @@ RenderMode parseRenderMode(const std::string& name) {
 
 const std::string& renderModeName(RenderMode mode) { return renderModeNames().at(static_cast<size_t>(mode)); }
 
+Antialias parseAntialias(const std::string& name) {
+  if (name == "fxaa") return Antialias::Fxaa;
+  if (name == "none") return Antialias::None;
+  throw std::invalid_argument("expected \"fxaa\" or \"none\", got \"" + name + "\"");
+}
+
+const char* antialiasName(Antialias aa) { return aa == Antialias::Fxaa ? "fxaa" : "none"; }
+
 }  // namespace marble

@@ -42,6 +42,11 @@ enum class Environment { Studio, None };
 // fast, for interaction) or at full resolution (slightly crisper, for final images).
 enum class SubsurfaceResolution { Half, Full };  // "half" | "full"
 
+// Antialiasing of the final picture (issue 5): FXAA after the post pass, or none.
+enum class Antialias { None, Fxaa };
+Antialias parseAntialias(const std::string& name);  // "none" | "fxaa"; throws std::invalid_argument
+const char* antialiasName(Antialias aa);
+
 struct RenderSettings {
   int width = 800;
   int height = 800;
@@ -51,6 +56,7 @@ struct RenderSettings {
   Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
   float environment_intensity = 0.6f;
   SubsurfaceResolution subsurface_resolution = SubsurfaceResolution::Half;
+  Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
 };
 
 struct Scene {

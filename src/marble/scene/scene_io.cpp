@@ -61,7 +61,8 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
                  {"background", vec3(scene.render.background)},
                  {"mode", renderModeName(scene.render.mode)},
                  {"subsurface_resolution",
-                  scene.render.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"}};
+                  scene.render.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"},
+                 {"antialias", antialiasName(scene.render.antialias)}};
   return j.dump(2) + "\n";
 }
 

@@ -149,6 +149,14 @@ void readRender(const json& j, const std::string& file, RenderSettings& rs, std:
     else if (sssRes == "full") rs.subsurface_resolution = SubsurfaceResolution::Full;
     else r.fail("subsurface_resolution", "expected \"half\" or \"full\", got \"" + sssRes + "\"");
   }
+  std::string antialias;
+  if (r.string("antialias", antialias)) {
+    try {
+      rs.antialias = parseAntialias(antialias);
+    } catch (const std::invalid_argument& e) {
+      r.fail("antialias", e.what());
+    }
+  }
   std::string mode;
   if (r.string("mode", mode)) {
     try {

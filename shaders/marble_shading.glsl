@@ -20,7 +20,9 @@ float smith_ggx_visibility(float NoV, float NoL, float a) {
 
 // Fresnel-Schlick with cos = H.V (Schlick 1994).
 vec3 fresnel_schlick(vec3 F0, float c) {
-  return F0 + (1.0 - F0) * pow(1.0 - clamp(c, 0.0, 1.0), 5.0);
+  float m = 1.0 - clamp(c, 0.0, 1.0);
+  float m2 = m * m;
+  return F0 + (1.0 - F0) * (m2 * m2 * m);  // m^5 by multiplication: pow() is exp2(5 log2 m)
 }
 
 // F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.

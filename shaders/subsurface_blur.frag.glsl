@@ -18,10 +18,11 @@ layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_entering;  // full resolution (first pass) or half (second)
 uniform int u_input_full;          // 1: u_entering is full resolution
 uniform vec2 u_direction;          // (1,0) then (0,1)
-uniform float u_step_mm;           // spacing of the taps, mm (2 * widest d / TAPS)
-uniform vec3 u_weights[10];        // burley_1d(i * step) for i = 0..TAPS, computed once on the CPU
+uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans on screen)
+uniform float u_step_mm;           // spacing of the taps, mm (u_reach_mm / u_taps)
+uniform vec3 u_weights[10];        // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
 
-const int TAPS = 9;                // per side; kTaps in subsurface_blur_pass.cpp
+const int MAX_TAPS = 9;            // kMaxTaps in subsurface_blur_pass.cpp
 
 void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);
@@ -31,7 +32,7 @@ void main() {
     return;
   }
   float depth = view_depth(z);
-  float reach_mm = u_step_mm * float(TAPS);
+  float reach_mm = u_reach_mm;
   // Taps are read with bilinear filtering at fractional positions (a profile narrower than a
   // texel still blurs a little, as it should), in the input's own texels. Alpha is coverage
   // (the background is cleared to 0), so a tap half on the background counts half.
@@ -40,7 +41,7 @@ void main() {
   vec2 centre = vec2(h * k) + 0.5;  // the representative pixel, in input texels
   float input_px_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale / k) * depth);
   vec3 sum = vec3(0.0), weight = vec3(0.0);
-  for (int i = -TAPS; i <= TAPS; ++i) {
+  for (int i = -u_taps; i <= u_taps; ++i) {
     vec2 p = centre + u_direction * (float(i) * u_step_mm * input_px_per_mm);
     // The tap's depth: that of the full-resolution pixel its input texel stands for.
     float zi = texelFetch(u_depth, ivec2(floor(p)) * (u_scale / k), 0).r;

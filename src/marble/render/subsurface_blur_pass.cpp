@@ -6,7 +6,10 @@
 namespace marble {
 
 namespace {
-constexpr int kTaps = 9;  // per side; keep in step with TAPS in subsurface_blur.frag.glsl
+// Taps per side at most; keep in step with MAX_TAPS in subsurface_blur.frag.glsl.
+constexpr int kMaxTaps = 9;
+// Taps closer than this (in blur texels) would add nothing a bilinear read does not.
+constexpr float kTexelsPerTap = 0.5f;
 }  // namespace
 
 glm::vec3 burleyShapeD(const Material& m) {
@@ -35,19 +38,32 @@ void SubsurfaceBlurPass::resize(int width, int height, int scale) {
   glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
 }
 
-float subsurfaceStepMm(const Material& m) {
+float subsurfaceReachMm(const Material& m) {
   const glm::vec3 d = burleyShapeD(m);
-  return 2.0f * std::max(d.r, std::max(d.g, d.b)) / static_cast<float>(kTaps);
+  return 2.0f * std::max(d.r, std::max(d.g, d.b));
+}
+
+namespace {
+float pixelsPerMmAtUnitDepth(const CameraMatrices& camera, const Scene& scene, int height) {
+  // Pixels per scene unit at view distance 1 (full resolution): proj[1][1] maps tan(fov/2)
+  // to 1 = height/2 px.
+  return camera.proj[1][1] * 0.5f * static_cast<float>(height) / scene.mm_per_unit;
+}
+}  // namespace
+
+int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height) {
+  // The widest the profile can be on screen: at the near plane (fitted to the object's
+  // bounding sphere, so no surface is nearer), in blur texels.
+  const float texels = subsurfaceReachMm(scene.material) * pixelsPerMmAtUnitDepth(camera, scene, height) /
+                       (std::max(camera.near, 1e-3f) * static_cast<float>(subsurfaceScale(scene.render)));
+  return std::clamp(static_cast<int>(std::ceil(texels / kTexelsPerTap)), 1, kMaxTaps);
 }
 
 void setSubsurfaceUniforms(const gl::Program& p, const CameraMatrices& camera, const Scene& scene, int height) {
-  // Pixels per scene unit at view distance 1 (full resolution): proj[1][1] maps tan(fov/2)
-  // to 1 = height/2 px.
-  const float pxPerUnit = camera.proj[1][1] * 0.5f * static_cast<float>(height);
   p.set("u_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_mm_per_unit", scene.mm_per_unit);
-  p.set("u_pixels_per_mm_at_unit_depth", pxPerUnit / scene.mm_per_unit);
-  p.set("u_reach_mm", subsurfaceStepMm(scene.material) * static_cast<float>(kTaps));
+  p.set("u_pixels_per_mm_at_unit_depth", pixelsPerMmAtUnitDepth(camera, scene, height));
+  p.set("u_reach_mm", subsurfaceReachMm(scene.material));
   p.set("u_scale", subsurfaceScale(scene.render));
 }
 
@@ -56,16 +72,19 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   timer_.begin();
   gl::setScreenPassState();
   glViewport(0, 0, width_, height_);
-  // The taps' weights depend only on the material: the 1D Burley profile
-  // exp(-x/d) + exp(-x/(3d)) at x = i * step, taps out to 2 * the widest d.
+  // The taps' weights: the 1D Burley profile exp(-x/d) + exp(-x/(3d)) at x = i * step, out to
+  // 2 x the widest d -- with as many taps as that reach spans on screen (the dragon filling an
+  // 800-pixel frame needs 4 per side, not 9).
   const glm::vec3 d = burleyShapeD(scene.material);
-  const float stepMm = subsurfaceStepMm(scene.material);
-  glm::vec3 weights[kTaps + 1];
-  for (int i = 0; i <= kTaps; ++i) {
+  const int taps = subsurfaceTaps(camera, scene, height);
+  const float stepMm = subsurfaceReachMm(scene.material) / static_cast<float>(taps);
+  glm::vec3 weights[kMaxTaps + 1];
+  for (int i = 0; i <= taps; ++i) {
     const float x = static_cast<float>(i) * stepMm;
     weights[i] = glm::exp(-x / d) + glm::exp(-x / (3.0f * d));
   }
-  glProgramUniform3fv(program_.id(), program_.location("u_weights"), kTaps + 1, &weights[0].x);
+  glProgramUniform3fv(program_.id(), program_.location("u_weights"), taps + 1, &weights[0].x);
+  program_.set("u_taps", taps);
   program_.set("u_step_mm", stepMm);
   setSubsurfaceUniforms(program_, camera, scene, height);
   glUseProgram(program_.id());

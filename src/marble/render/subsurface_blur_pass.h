@@ -47,8 +47,12 @@ glm::vec3 burleyShapeD(const Material& m);
 // 2 when the blur runs at half resolution, 1 at full.
 int subsurfaceScale(const RenderSettings& settings);
 
-// Spacing of the blur's taps in mm (they reach kTaps steps = 2 x the widest d each way).
-float subsurfaceStepMm(const Material& m);
+// How far the blur reaches each way, mm: 2 x the widest d.
+float subsurfaceReachMm(const Material& m);
+
+// Taps per side (1..9): enough that neighbours are at most half a blur texel apart where the
+// profile is widest on screen (`height`: the full-resolution frame's).
+int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height);
 
 // The uniforms of shaders/subsurface_common.glsl: depth range, millimetre scale on screen
 // (`height`: the full-resolution frame's) and the blur's reach.

@@ -28,6 +28,18 @@ std::string num(float v) {
 
 bool isColourKey(const std::string& k) { return k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma"; }  // per-channel keys
 
+namespace {
+// A preset value as numbers: one for a scalar, three for an RGB triple.
+std::vector<double> numbersOf(const nlohmann::json& v) {
+  std::vector<double> values;
+  if (v.is_array())
+    for (const auto& c : v) values.push_back(c.get<double>());
+  else
+    values.push_back(v.get<double>());
+  return values;
+}
+}  // namespace
+
 TEST(ViewerRanges, BothEndsOfEverySliderAreAcceptedByPresetFiles) {
   for (const auto& r : kParamRanges) {
     ASSERT_LT(r.lo, r.hi) << r.key;
@@ -61,11 +73,7 @@ TEST(ViewerRanges, BuiltinPresetsSitInsideTheSliders) {
   for (const auto& info : builtinPresets()) {
     const nlohmann::json j = materialToJson(loadPreset(info.name));
     for (const auto& r : kParamRanges) {
-      const auto& v = j[r.key];
-      std::vector<double> values;
-      if (v.is_array()) for (const auto& c : v) values.push_back(c.get<double>());
-      else values.push_back(v.get<double>());
-      for (double d : values) {
+      for (double d : numbersOf(j[r.key])) {
         EXPECT_GE(d, r.lo) << info.name << ": " << r.key;
         EXPECT_LE(d, r.hi) << info.name << ": " << r.key;
       }
@@ -101,11 +109,7 @@ TEST(ViewerRanges, SlidersShowEveryPresetValueToOnePercent) {
   for (const auto& info : builtinPresets()) {
     const nlohmann::json j = materialToJson(loadPreset(info.name));
     for (const auto& r : kParamRanges) {
-      const auto& v = j[r.key];
-      std::vector<double> values;
-      if (v.is_array()) for (const auto& c : v) values.push_back(c.get<double>());
-      else values.push_back(v.get<double>());
-      for (double d : values) {
+      for (double d : numbersOf(j[r.key])) {
         char shown[64];
         std::snprintf(shown, sizeof shown, r.format, static_cast<float>(d));
         const double back = std::strtod(shown, nullptr);

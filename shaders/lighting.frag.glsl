@@ -65,6 +65,7 @@ float thickness_at(vec3 p) {
 }
 
 #include "marble_shading.glsl"
+#include "environment.glsl"
 
 // The `marble` mode: linear HDR radiance. Light intensity 1 is scaled by PI so a white
 // Lambertian surface facing the light reflects 1.0, as in the paper's modes.
@@ -99,8 +100,8 @@ void marble_radiance(vec3 P, vec3 N, vec3 V, vec3 L, out vec3 entering, out vec3
   reflected = E * nl * visible * specular;
   if (u_env_intensity > 0.0) {
     vec3 R = reflect(-V, N);
-    entering += u_env_intensity * studio_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV));
-    reflected += u_env_intensity * studio_radiance(R, u_roughness * 1.2) * env_brdf_approx(F0, u_roughness, NoV);
+    entering += u_env_intensity * env_diffuse(N) * (1.0 - fresnel_schlick(F0, NoV));
+    reflected += u_env_intensity * env_radiance(R, u_roughness) * env_brdf_approx(F0, u_roughness, NoV);
   }
 }
 

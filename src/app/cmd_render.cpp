@@ -5,6 +5,7 @@
 
 #include "marble/core/error.h"
 #include "marble/core/image.h"
+#include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
@@ -17,9 +18,14 @@ int runRenderCommand(const RenderOptions& o) {
     const Scene scene = buildScene(o.scene);
     if (o.output.empty()) throw InputError("-o", "", "an output file is required (e.g. -o out.png)");
     const Mesh mesh = loadSceneMesh(scene);
+    const auto environment = loadSceneEnvironment(scene);  // a bad map fails here, before any GL
+    if (environment && o.timings)
+      std::printf("environment map %s: %d x %d, read and prefiltered in %.2f s\n", environment->source.c_str(),
+                  environment->sourceWidth, environment->sourceHeight, environment->seconds);
     HeadlessContext context;
     Renderer renderer;
     renderer.setMesh(mesh);
+    if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(scene.render.width, scene.render.height);
     if (o.timings) {
       // A first frame pays llvmpipe's lazy shader compilation and its first timer query is

@@ -19,13 +19,26 @@ void LightingPass::resize(int width, int height) {
   glNamedFramebufferDrawBuffers(fbo_.id(), 2, bufs);
 }
 
+void LightingPass::setEnvironment(const RenderSettings& settings, const EnvironmentMap* environment) {
+  const auto& p = program_;
+  const bool map = settings.environment == Environment::Map && environment;
+  const bool lit = settings.environment == Environment::Studio || map;
+  p.set("u_env_intensity", lit ? settings.environment_intensity : 0.0f);
+  p.set("u_env_kind", map ? 1 : 0);
+  if (map) {
+    environment->setUniforms(p, settings.environment_rotation_deg);
+    glBindTextureUnit(5, environment->texture());
+  }
+}
+
 // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).
 static glm::vec3 transportCoefficient(const Material& m) {
   return glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
 }
 
 void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
-                       const Light& light, const Material& m, const Scene& scene, float lightTexelWorld) {
+                       const Light& light, const Material& m, const Scene& scene, float lightTexelWorld,
+                       const EnvironmentMap* environment) {
   const RenderSettings& settings = scene.render;
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -57,7 +70,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);
-  p.set("u_env_intensity", settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f);
+  setEnvironment(settings, environment);
   p.set("u_light_texel_world", lightTexelWorld);
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());

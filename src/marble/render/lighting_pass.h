@@ -3,6 +3,7 @@
 // mode's picture, linear and unclamped, into its own RGBA16F target (read by PostPass and by
 // `--hdr`).
 #include "marble/gl/program.h"
+#include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
@@ -18,7 +19,8 @@ public:
   explicit LightingPass(const ShaderLibrary& shaders);
   void resize(int width, int height);
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           const Material& material, const Scene& scene, float lightTexelWorld);
+           const Material& material, const Scene& scene, float lightTexelWorld,
+           const EnvironmentMap* environment);  // used when the scene asks for a map; null: none loaded
   GLuint hdrTexture() const { return hdr_.id(); }
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
   GLuint fbo() const { return fbo_.id(); }
@@ -26,6 +28,7 @@ public:
   PassTimer& timer() { return timer_; }
 
 private:
+  void setEnvironment(const RenderSettings& settings, const EnvironmentMap* environment);
   gl::Program program_;
   gl::Texture hdr_, entering_;
   gl::Framebuffer fbo_;

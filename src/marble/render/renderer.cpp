@@ -30,7 +30,8 @@ bool sameLightingInputs(const Scene& a, const Scene& b) {
          a.light.intensity == b.light.intensity && a.camera.position == b.camera.position &&
          a.camera.target == b.camera.target && a.camera.up == b.camera.up && a.camera.fov_y_deg == b.camera.fov_y_deg &&
          a.render.mode == b.render.mode && a.render.environment == b.render.environment &&
-         a.render.environment_intensity == b.render.environment_intensity;
+         a.render.environment_intensity == b.render.environment_intensity &&
+         a.render.environment_rotation_deg == b.render.environment_rotation_deg;
 }
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
@@ -48,6 +49,16 @@ Renderer::~Renderer() = default;
 void Renderer::setMesh(const Mesh& mesh) {
   mesh_.emplace(mesh);
   invalidate();
+}
+
+void Renderer::setEnvironmentMap(const PrefilteredEnvironment& environment) {
+  environment_.emplace(environment);
+  lightingValid_ = false;
+}
+
+void Renderer::clearEnvironmentMap() {
+  environment_.reset();
+  lightingValid_ = false;
 }
 
 void Renderer::reloadShaders() {
@@ -95,7 +106,8 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   if (!lightingCurrent) {
     passes_->lighting.resize(width, height);
     const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
-    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld);
+    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld,
+                          environment_ ? &*environment_ : nullptr);
     finalHdrTexture_ = passes_->lighting.hdrTexture();
     finalHdrFbo_ = passes_->lighting.fbo();
     if (scene.render.mode == RenderMode::Marble) {
@@ -127,7 +139,7 @@ PassTimes Renderer::passTimes(bool wait) {
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->lighting.bytes() + passes_->blur.bytes() +
-         (mesh_ ? mesh_->bytes() : 0);
+         (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() const {

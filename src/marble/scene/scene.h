@@ -37,7 +37,11 @@ const std::vector<std::string>& renderModeNames();  // in enum order
 RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_argument
 const std::string& renderModeName(RenderMode mode);
 
-enum class Environment { Studio, None };
+// Light from around the object (`marble` mode): the built-in procedural studio, nothing, or an
+// equirectangular Radiance .hdr file.
+enum class Environment { Studio, None, Map };
+const std::vector<std::string>& environmentNames();  // in enum order: studio, none, map
+Environment parseEnvironment(const std::string& name);  // throws std::invalid_argument
 
 struct RenderSettings {
   int width = 800;
@@ -45,8 +49,10 @@ struct RenderSettings {
   glm::vec3 background{0.19f, 0.11f, 0.03f};  // the paper's dark brown, as displayed
   RenderMode mode = RenderMode::Marble;
   float exposure = 0.0f;                      // stops, for the `marble` mode's tone mapping
-  Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
+  Environment environment = Environment::Studio;
   float environment_intensity = 0.6f;
+  std::string environment_map;                // the .hdr (resolved against the scene's folder); used when Map
+  float environment_rotation_deg = 0.0f;      // turns the map about +Y (yaw)
 };
 
 struct Scene {

@@ -61,6 +61,8 @@ float thickness_at(vec3 p) {
 }
 
 #include "marble_shading.glsl"
+#include "environment.glsl"
+#include "marble_light.glsl"
 
 // The thickness the transmission uses: as thickness_at(), but the light's distance map is
 // interpolated bilinearly between the four texels around p instead of read at the nearest one.

@@ -94,30 +94,3 @@ vec3 studio_diffuse(vec3 n) {
   }
   return e;
 }
-
-// Light the surface reflects (`marble` mode, linear HDR): GGX from the light, shadowed, and
-// the environment's blurred reflection weighted by the split-sum BRDF. E: the light's
-// irradiance at normal incidence; visible: its PCF visibility.
-vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, vec3 F0, float roughness, float env_intensity) {
-  float NoV = max(dot(N, V), 1e-4);
-  float nl = max(dot(N, L), 0.0);
-  vec3 H = normalize(V + L);
-  float a = max(roughness * roughness, 0.002);
-  vec3 F = fresnel_schlick(F0, dot(H, V));
-  vec3 r = E * nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F;
-  if (env_intensity > 0.0)
-    r += env_intensity * studio_radiance(reflect(-V, N), roughness * 1.2) * env_brdf_approx(F0, roughness, NoV);
-  return r;
-}
-
-// Light that enters the stone through the surface here (irradiance / PI, before the albedo):
-// from the light and from the environment. Energy split: light reflected at the surface, on
-// the way in or out, does not enter (Shirley et al. 1997's coupled diffuse, in Schlick form).
-vec3 marble_surface_entering(vec3 N, vec3 V, vec3 L, vec3 E, float visible, vec3 F0, float env_intensity) {
-  float NoV = max(dot(N, V), 1e-4);
-  float nl = max(dot(N, L), 0.0);
-  vec3 leaves = 1.0 - fresnel_schlick(F0, NoV);
-  vec3 e = E * nl * visible * (1.0 - fresnel_schlick(F0, nl)) * leaves / PI;
-  if (env_intensity > 0.0) e += env_intensity * studio_diffuse(N) * leaves;
-  return e;
-}

@@ -31,6 +31,8 @@ uniform float u_roughness;
 uniform float u_env_intensity;
 
 #include "marble_shading.glsl"
+#include "environment.glsl"
+#include "marble_light.glsl"
 
 // Khronos PBR Neutral tone mapper (Khronos 3D Commerce, 2024): keeps base colours within
 // [0, 0.8] as they are, compresses highlights, desaturates the brightest toward white.

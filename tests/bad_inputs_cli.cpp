@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cli_support.h"
+#include "hdr_support.h"
 
 namespace {
 
@@ -132,6 +133,16 @@ void writeInputs(const fs::path& dir) {
   put("brokenshaders/lighting.frag.glsl", "#version 450 core\nout vec4 o;\nvoid main() { o = vec4(undeclared_thing); }\n");
   fs::create_directories(dir / "brokeninclude");
   put("brokeninclude/post.frag.glsl", "#version 450 core\n#include \"nothere.glsl\"\nvoid main() {}\n");
+  // Environment maps (Radiance .hdr).
+  marble::test::writeHdrFile(dir / "sky.hdr", marble::test::syntheticSky(64));
+  put("garbage.hdr", std::string("\x7f" "ELF\x02\x01\x01\x00\xff\xfe", 10));
+  const std::string rle = marble::test::encodeHdr(marble::test::syntheticSky(64));
+  put("cut.hdr", rle.substr(0, rle.size() - 1));
+  put("square.hdr", marble::test::encodeHdr(marble::test::constantImage(32, 32, glm::vec3(1.0f))));
+  put("huge.hdr", marble::test::hdrHeader(20000, 10000) + std::string(64, '\x80'));
+  put("envmissing.json", R"({"render": {"environment_map": "nothere.hdr"}})");
+  put("envnofile.json", R"({"render": {"environment": "map"}})");
+  put("envsky.json", R"({"render": {"environment": "sky"}})");
 }
 
 const std::string kSmall = " -o out.png --width 16 --height 16";
@@ -256,6 +267,29 @@ const std::vector<Row>& rows() {
       // Regression (found by fuzz_preset): see GltfNumberOverflow. Fails until material_io.cpp catches it.
       {"PresetNumberOverflow", "number beyond double (1e400) in a preset", "render --preset preset_overflow.json" + kSmall, 2,
        "marble render: preset_overflow.json: "},
+      // Environment maps.
+      {"EnvMapGood", "a good equirectangular .hdr: accepted", "render --environment-map sky.hdr" + kSmall, 0, ""},
+      {"EnvMapMissing", "--environment-map of a missing file", "render --environment-map missing.hdr" + kSmall, 2,
+       "marble render: missing.hdr: file not found"},
+      {"EnvMapDirectory", "--environment-map of a directory", "render --environment-map folder.obj" + kSmall, 2,
+       "marble render: folder.obj: is a directory, not an image file"},
+      {"EnvMapGarbage", "binary garbage named .hdr", "render --environment-map garbage.hdr" + kSmall, 2,
+       "marble render: garbage.hdr: not a Radiance .hdr file (it must start with the line #?RADIANCE or #?RGBE)"},
+      {"EnvMapTruncated", "run-length encoded .hdr missing its last byte", "render --environment-map cut.hdr" + kSmall, 2,
+       "marble render: cut.hdr: pixel data, row 31 of 32: the file ends inside the scanline (truncated)"},
+      {"EnvMapNotEquirect", "square .hdr (not equirectangular)", "render --environment-map square.hdr" + kSmall, 2,
+       "marble render: square.hdr: is 32 x 32 pixels; an equirectangular map is exactly twice as wide as high (e.g. 2048 x 1024)"},
+      {"EnvMapHuge", ".hdr header declaring 20000 x 10000", "render --environment-map huge.hdr" + kSmall, 2,
+       "marble render: huge.hdr: header line 5: image is 20,000 x 10,000 pixels; the limit is 8,192 per side"},
+      {"EnvMapWithoutFile", "--environment map without a map", "render --environment map" + kSmall, 2,
+       "marble render: --environment: \"map\" needs a file: add --environment-map FILE.hdr"},
+      {"EnvUnknown", "--environment sky", "render --environment sky" + kSmall, 2,
+       "marble render: --environment: expected \"studio\", \"none\" or \"map\", got \"sky\""},
+      {"SceneEnvMapMissing", "scene naming a missing .hdr", "render envmissing.json" + kSmall, 2, "marble render: nothere.hdr: file not found"},
+      {"SceneEnvMapWithoutFile", "scene asking for \"map\" without environment_map", "render envnofile.json" + kSmall, 2,
+       "marble render: envnofile.json: render.environment: \"map\" needs render.environment_map (an equirectangular .hdr file)"},
+      {"SceneEnvUnknown", "scene environment \"sky\"", "render envsky.json" + kSmall, 2,
+       "marble render: envsky.json: render.environment: expected \"studio\", \"none\" or \"map\", got \"sky\""},
       // Command line.
       {"SetWithoutValue", "--set without '='", "render --set turb_power" + kSmall, 2, "marble render: --set: turb_power: expected key=value"},
       {"SetWithoutKey", "--set =3", "render --set =3" + kSmall, 2, "marble render: --set: =3: expected key=value"},

@@ -1,6 +1,7 @@
 // Every input a fuzzer (tests/fuzz/) ever crashed on, kept in tests/fixtures/regressions/ and
 // loaded again here: each must now end in a one-line InputError, nothing else. The file name says
-// which reader: scene-*.json -> loadScene, preset-*.json -> loadPreset, anything else -> loadMesh.
+// which reader: scene-*.json -> loadScene, preset-*.json -> loadPreset, *.hdr -> readHdr, anything
+// else -> loadMesh.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "marble/core/error.h"
+#include "marble/core/hdr_image.h"
 #include "marble/mesh/mesh.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/scene.h"
@@ -22,6 +24,7 @@ void load(const fs::path& p) {
   std::vector<std::string> warnings;
   if (name.rfind("scene-", 0) == 0) marble::loadScene(p, warnings);
   else if (name.rfind("preset-", 0) == 0) marble::loadPreset(p.string(), &warnings);
+  else if (p.extension() == ".hdr") marble::readHdr(p);
   else marble::loadMesh(p);
 }
 

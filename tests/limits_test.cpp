@@ -17,6 +17,7 @@
 #include <string>
 
 #include "marble/core/error.h"
+#include "marble/core/hdr_image.h"
 #include "marble/mesh/mesh.h"
 
 namespace {
@@ -42,12 +43,13 @@ protected:
 
   // Loads `path` in a child limited to its current address space + 256 MiB and expects an
   // InputError whose message contains `expected`.
-  static void expectCaughtBeforeAllocating(const fs::path& path, const std::string& expected) {
+  static void expectCaughtBeforeAllocating(const fs::path& path, const std::string& expected,
+                                           void (*load)(const fs::path&) = [](const fs::path& p) { marble::loadMesh(p); }) {
     std::cout.flush();
     std::cerr.flush();
     const pid_t pid = ::fork();
     ASSERT_GE(pid, 0) << std::strerror(errno);
-    if (pid == 0) ::_exit(loadInCappedChild(path, expected));
+    if (pid == 0) ::_exit(loadInCappedChild(path, expected, load));
     int status = 0;
     ASSERT_EQ(::waitpid(pid, &status, 0), pid);
     ASSERT_TRUE(WIFEXITED(status)) << path.filename() << ": the child died (signal " << WTERMSIG(status)
@@ -56,7 +58,7 @@ protected:
   }
 
 private:
-  static int loadInCappedChild(const fs::path& path, const std::string& expected) {
+  static int loadInCappedChild(const fs::path& path, const std::string& expected, void (*load)(const fs::path&)) {
     // statm's first field: the whole address space in pages (ASan's shadow included).
     long pages = 0;
     std::ifstream("/proc/self/statm") >> pages;
@@ -64,7 +66,7 @@ private:
     const rlimit limit{cap, cap};
     if (::setrlimit(RLIMIT_AS, &limit) != 0) return kOtherException;
     try {
-      marble::loadMesh(path);
+      load(path);
       std::cerr << path.filename() << ": loaded without an error\n";
       return kNoError;
     } catch (const marble::InputError& e) {
@@ -149,6 +151,19 @@ TEST_F(LimitsTest, GlbWithAHugeBinChunkLength) {
   file += bin;
   file.replace(8, 4, u32le(static_cast<uint32_t>(file.size())));
   expectCaughtBeforeAllocating(write("bin.glb", file), "BIN chunk of 4,294,967,040 bytes runs past the end of the file (truncated)");
+}
+
+TEST_F(LimitsTest, HdrDeclaringTheLargestMapInAFewBytes) {
+  // 8192 x 4096 is within the limit (384 MiB as floats, over this child's cap); the file cannot
+  // hold it, flat or run-length encoded, which is noticed before stb_image allocates.
+  const auto header = [](const std::string& size) { return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n" + size + "\n"; };
+  const auto read = [](const fs::path& p) { marble::readHdr(p); };
+  expectCaughtBeforeAllocating(write("flat.hdr", header("-Y 4096 +X 8192") + std::string(64, '\x80')),
+                               "truncated: 8192 x 4096 flat RGBE pixels need 134,217,728 bytes but 64 follow the header", read);
+  expectCaughtBeforeAllocating(write("rle.hdr", header("-Y 4096 +X 8192") + std::string("\x02\x02\x20\x00", 4) + std::string(60, '\x81')),
+                               "run-length encoded pixels need at least 2,146,304 bytes", read);
+  expectCaughtBeforeAllocating(write("huge.hdr", header("-Y 1000000 +X 2000000") + std::string(64, '\x80')),
+                               "image is 2,000,000 x 1,000,000 pixels; the limit is 8,192 per side", read);
 }
 
 TEST_F(LimitsTest, GltfAccessorCountsBeyondTheirBufferOrTheCap) {

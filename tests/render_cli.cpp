@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "cli_support.h"
+#include "hdr_support.h"
 #include "marble/core/image.h"
 
 using namespace marble;
@@ -152,6 +153,39 @@ TEST(CliRender, BadSceneNamesFileAndField) {
   r = runMarble("render " + (dir / "u.json").string() + " -o " + (dir / "o.png").string());
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("warning: " + (dir / "u.json").string() + ": colour: unknown key"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRender, EnvironmentMapLightsTheObjectAndABadOneExitsTwo) {
+  const auto dir = tempDir("render-env");
+  std::filesystem::create_directories(dir / "maps");
+  std::filesystem::create_directories(dir / "scenes");
+  writeHdrFile(dir / "maps" / "sky.hdr", syntheticSky(64));
+  const std::string size = " --width 64 --height 64 --set roughness=0.1";
+  auto r = runMarble("render builtin:sphere -o " + (dir / "studio.png").string() + size);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  r = runMarble("render builtin:sphere --environment-map " + (dir / "maps" / "sky.hdr").string() + " -o " +
+                (dir / "map.png").string() + size);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 studio = readPng(dir / "studio.png"), map = readPng(dir / "map.png");
+  int differ = 0;
+  for (size_t i = 0; i < map.pixels.size(); ++i) differ += std::abs(int(map.pixels[i]) - int(studio.pixels[i])) > 8;
+  EXPECT_GT(differ, 500) << "the map, not the studio, lights the sphere";
+  // In a scene the path is relative to the scene's folder, like the mesh.
+  writeFile(dir / "scenes" / "s.json", R"({"mesh": "builtin:sphere", "render": {"width": 64, "height": 64, "environment_map": "../maps/sky.hdr"}})");
+  r = runMarble("render " + (dir / "scenes" / "s.json").string() + " -o " + (dir / "scene.png").string() + " --set roughness=0.1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(readPng(dir / "scene.png").pixels, map.pixels);
+  // A bad map: one line naming the file, exit 2, no picture.
+  writeFile(dir / "bad.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n" + std::string(100, '\x01'));
+  r = runMarble("render builtin:sphere --environment-map " + (dir / "bad.hdr").string() + " -o " + (dir / "bad.png").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find((dir / "bad.hdr").string() + ": "), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+  r = runMarble("render builtin:sphere --environment-map " + (dir / "none.hdr").string() + " -o " + (dir / "bad.png").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("none.hdr: file not found"), std::string::npos) << r.output;
   std::filesystem::remove_all(dir);
 }
 

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "cli_support.h"
+#include "hdr_support.h"
 #include "marble/core/image.h"
 
 namespace marble {
@@ -119,6 +120,22 @@ TEST(ViewerCli, BadSceneFileIsOneLineAndExitTwo) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("camera.fov_y_deg"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewerCli, OpensWithAnEnvironmentMapAndABadOneIsOneLineAndExitTwo) {
+  const auto dir = tempDir("viewer-env");
+  test::writeHdrFile(dir / "sky.hdr", test::syntheticSky(64));
+  { std::ofstream(dir / "bad.hdr") << "not an image"; }
+  const auto shot = dir / "env.png";
+  auto r = runMarble("view builtin:sphere --environment-map " + (dir / "sky.hdr").string() +
+                         " --frames 2 --width 400 --height 300 --screenshot " + shot.string(), kXvfb);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(readPng(shot).width, 400);
+  r = runMarble("view --environment-map " + (dir / "bad.hdr").string() + " --frames 1", kXvfb);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("bad.hdr: not a Radiance .hdr file"), std::string::npos) << r.output;
   std::filesystem::remove_all(dir);
 }
 

@@ -6,7 +6,7 @@
 # (>10 s for one input) or an out-of-memory stops the script with a non-zero exit; the input
 # is saved as build-fuzz/findings/<target>/crash-* (or leak-, timeout-, oom-) and its report
 # as build-fuzz/findings/<target>/log.
-# Usage: tools/fuzz.sh [SECONDS] [TARGET ...]   targets: obj ply stl gltf glb scene preset
+# Usage: tools/fuzz.sh [SECONDS] [TARGET ...]   targets: obj ply stl gltf glb scene preset hdr
 # FUZZ_KEEP_GOING=1: libFuzzer's fork mode, which records a crash and keeps fuzzing (for long
 # local runs while a known crash is unfixed); the status columns then come from its last line.
 set -euo pipefail
@@ -14,7 +14,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-30}
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(obj ply stl gltf glb scene preset)
+((${#targets[@]})) || targets=(obj ply stl gltf glb scene preset hdr)
 
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found (tools/setup.sh installs it)" >&2; exit 1; }
 build="$root/build-fuzz"

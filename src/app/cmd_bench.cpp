@@ -7,6 +7,7 @@
 #include "bench_report.h"
 #include "marble/core/error.h"
 #include "marble/core/memory_usage.h"
+#include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
@@ -94,6 +95,7 @@ int runBenchCommand(const BenchOptions& o) {
     double t0 = wallMs();
     const Mesh mesh = loadSceneMesh(base);
     r.loadMs = wallMs() - t0;
+    const auto environment = loadSceneEnvironment(base);  // not part of the mesh's load time
 
     ShaderLibrary shaders = shaderLibraryFor(false);
     HeadlessContext context;
@@ -105,6 +107,7 @@ int runBenchCommand(const BenchOptions& o) {
     glFinish();
     r.uploadMs = wallMs() - t0;
     r.triangles = renderer.triangleCount();
+    if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     r.passes = emptySeries(base.render);
 

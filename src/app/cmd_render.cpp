@@ -6,6 +6,7 @@
 #include "marble/core/error.h"
 #include "marble/core/image.h"
 #include "marble/core/image_downsample.h"
+#include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
@@ -28,10 +29,15 @@ int runRenderCommand(const RenderOptions& o) {
                            std::to_string(height) + ", above the limit of " + std::to_string(kMaxRenderSize) +
                            " pixels a side; lower --supersample or the size");
     const Mesh mesh = loadSceneMesh(scene);
+    const auto environment = loadSceneEnvironment(scene);  // a bad map fails here, before any GL
+    if (environment && o.timings)
+      std::printf("environment map %s: %d x %d, read and prefiltered in %.2f s\n", environment->source.c_str(),
+                  environment->sourceWidth, environment->sourceHeight, environment->seconds);
     ShaderLibrary shaders = shaderLibraryFor(false);
     HeadlessContext context;
     Renderer renderer(std::move(shaders));
     renderer.setMesh(mesh);
+    if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(width, height);
     if (o.timings) {
       // A first frame pays llvmpipe's lazy shader compilation and its first timer query is

@@ -1,5 +1,6 @@
 #include "scene_options.h"
 
+#include <cmath>
 #include <iostream>
 
 #include "marble/core/error.h"
@@ -23,6 +24,14 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--subsurface-resolution", o.subsurfaceResolution,
                  "marble mode's subsurface blur: half (default, fast) or full (crisper)");
   cmd.add_option("--antialias", o.antialias, "Antialiasing of the picture: fxaa (default) or none");
+  cmd.add_option("--environment", o.environment, "Light from around the object (marble mode): studio (default), none, map");
+  cmd.add_option("--environment-map", o.environmentMap,
+                 "An equirectangular Radiance .hdr (twice as wide as high) to light with; implies --environment map");
+  cmd.add_option("--environment-rotation", o.environmentRotation, "Turn the environment map about the vertical axis, degrees")
+      ->check(CLI::Range(-360.0f, 360.0f));
+  cmd.add_option("--environment-intensity", o.environmentIntensity,
+                 "Scale of the environment's light (default: the scene's, 0.6; a captured map is usually meant at 1)")
+      ->check(CLI::Range(0.0f, 100.0f));
 }
 
 Scene buildScene(const SceneOptions& o) {
@@ -56,6 +65,30 @@ Scene buildScene(const SceneOptions& o) {
   else if (o.subsurfaceResolution == "full") scene.render.subsurface_resolution = SubsurfaceResolution::Full;
   else if (!o.subsurfaceResolution.empty())
     throw InputError("--subsurface-resolution", "", "expected half or full, got \"" + o.subsurfaceResolution + "\"");
+  if (!o.environmentMap.empty()) {
+    scene.render.environment_map = o.environmentMap;
+    scene.render.environment = Environment::Map;
+  }
+  if (!o.environment.empty()) {
+    try {
+      scene.render.environment = parseEnvironment(o.environment);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--environment", "", e.what());
+    }
+  }
+  if (scene.render.environment == Environment::Map && scene.render.environment_map.empty())
+    throw InputError("--environment", "", "\"map\" needs a file: add --environment-map FILE.hdr");
+  if (o.environmentRotation) {
+    // CLI::Range lets NaN through (every comparison with it is false).
+    if (!std::isfinite(*o.environmentRotation))
+      throw InputError("--environment-rotation", "", "expected a finite number of degrees in [-360, 360]");
+    scene.render.environment_rotation_deg = *o.environmentRotation;
+  }
+  if (o.environmentIntensity) {
+    if (!std::isfinite(*o.environmentIntensity))
+      throw InputError("--environment-intensity", "", "expected a finite number in [0, 100]");
+    scene.render.environment_intensity = *o.environmentIntensity;
+  }
   if (!o.preset.empty()) scene.material = loadPreset(o.preset);
   for (const auto& kv : o.sets) {
     const auto eq = kv.find('=');

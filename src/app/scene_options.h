@@ -1,6 +1,7 @@
 #pragma once
 // Options shared by the commands that render a scene (render, view, bench): the input, and
 // what the command line overrides in it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,10 @@ struct SceneOptions {
   std::string up;                  // up axis of the mesh file
   std::string subsurfaceResolution;  // "half" | "full", empty = the scene's
   std::string antialias;           // "fxaa" or "none", empty = the scene's
+  std::string environment;         // studio, none or map; empty = the scene's
+  std::string environmentMap;      // a .hdr (relative to the working folder); implies "map"
+  std::optional<float> environmentRotation;  // degrees about +Y
+  std::optional<float> environmentIntensity;
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);

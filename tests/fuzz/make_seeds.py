@@ -105,10 +105,59 @@ def scene():
             "light": {"type": "directional", "position": [3, 3, 3], "color": [1, 1, 1], "intensity": 1},
             "material": {"preset": "calacatta", "turb_power": 6.5},
             "render": {"width": 800, "height": 600, "background": [0.19, 0.11, 0.03], "mode": "paper",
-                       "exposure": 0.5, "environment": "none", "environment_intensity": 1}}
+                       "exposure": 0.5, "environment": "none", "environment_intensity": 1,
+                       "environment_map": "maps/sky.hdr", "environment_rotation_deg": 45}}
     put("scene", "full.json", json.dumps(full, indent=2))
     put("scene", "minimal.json", '{"mesh": "models/bunny.obj", "unknown": [1, {"a": null}]}')
     put("scene", "light_point.json", '{"light": {"type": "point", "position": [1e4, -1e4, 0.5]}, "render": {"mode": "thickness"}}')
+
+
+def hdr_pixels(w, h):
+    """RGBE bytes of a small gradient with a bright spot: runs where it is flat, dumps where not."""
+    px = []
+    for y in range(h):
+        for x in range(w):
+            bright = x == w // 2 and y == h // 2
+            px.append((200, 180, 150, 140) if bright else (128, 64 + 8 * (x // 4 % 4), 192, 128 - y % 2))
+    return px
+
+
+def hdr_header(w, h, signature="#?RADIANCE"):
+    return f"{signature}\n# seed\nFORMAT=32-bit_rle_rgbe\nEXPOSURE=1.0\n\n-Y {h} +X {w}\n".encode()
+
+
+def hdr_rle_channel(values):
+    out, i = bytearray(), 0
+    while i < len(values):
+        run = 1
+        while i + run < len(values) and run < 127 and values[i + run] == values[i]:
+            run += 1
+        if run >= 3:
+            out += bytes([128 + run, values[i]])
+            i += run
+            continue
+        j = i
+        while j < len(values) and j - i < 128 and not (j + 2 < len(values) and values[j] == values[j + 1] == values[j + 2]):
+            j += 1
+        out += bytes([j - i]) + bytes(values[i:j])
+        i = j
+    return bytes(out)
+
+
+def hdr():
+    w, h = 4, 2  # narrower than 8: flat
+    put("hdr", "flat_4x2.hdr", hdr_header(w, h) + bytes(b for p in hdr_pixels(w, h) for b in p))
+    w, h = 16, 8
+    flat = bytes(b for p in hdr_pixels(w, h) for b in p)
+    put("hdr", "flat_16x8.hdr", hdr_header(w, h, "#?RGBE") + flat)
+    px = hdr_pixels(w, h)
+    rle = bytearray(hdr_header(w, h))
+    for y in range(h):
+        row = px[y * w:(y + 1) * w]
+        rle += bytes([2, 2, w >> 8, w & 255])
+        for c in range(4):
+            rle += hdr_rle_channel([p[c] for p in row])
+    put("hdr", "rle_16x8.hdr", bytes(rle))
 
 
 def preset():
@@ -136,5 +185,5 @@ def preset_dict():
 
 if __name__ == "__main__":
     os.makedirs(os.path.join(HERE, "corpus", "preset"), exist_ok=True)
-    for f in (obj, ply, stl, gltf, glb, scene, preset, preset_dict):
+    for f in (obj, ply, stl, gltf, glb, scene, preset, preset_dict, hdr):
         f()

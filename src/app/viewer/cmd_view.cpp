@@ -8,6 +8,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -57,8 +58,16 @@ void installCallbacks(GLFWwindow* w) {
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     auto* st = static_cast<ViewerState*>(glfwGetWindowUserPointer(win));
     if (count > 0) {
-      st->meshPathInput = paths[0];
-      st->requestMeshLoad = true;
+      // A Radiance .hdr becomes the environment; anything else is tried as a mesh.
+      std::string ext = std::filesystem::path(paths[0]).extension().string();
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext == ".hdr") {
+        st->environmentPathInput = paths[0];
+        st->requestEnvironmentLoad = true;
+      } else {
+        st->meshPathInput = paths[0];
+        st->requestMeshLoad = true;
+      }
     }
   });
   glfwSetWindowContentScaleCallback(w, [](GLFWwindow* win, float xs, float) {
@@ -108,6 +117,7 @@ int runViewCommand(const ViewOptions& o) {
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
     ShaderLibrary shaders = shaderLibraryFor(o.dev);  // a bad MARBLE_SHADER_DIR: the same
+    const auto firstEnvironment = loadSceneEnvironment(s.scene);  // likewise a bad .hdr
     if (!GlfwWindow::displayAvailable())
       throw EnvironmentError("no display (DISPLAY is not set); use `marble render [INPUT] -o out.png` to render without one");
     const int winW = o.scene.width > 0 ? o.scene.width : 1280, winH = o.scene.height > 0 ? o.scene.height : 800;
@@ -119,6 +129,7 @@ int runViewCommand(const ViewOptions& o) {
 
     Renderer renderer(std::move(shaders));
     adoptMesh(renderer, s, firstMesh, s.scene.mesh);
+    if (firstEnvironment) adoptEnvironment(renderer, s, *firstEnvironment);
     s.meshPathInput = s.scene.mesh.rfind("builtin:", 0) == 0 ? "" : s.scene.mesh;
 
     IMGUI_CHECKVERSION();

@@ -40,6 +40,7 @@ void drawPanel(ViewerState& s) {
   drawSubsurfaceSection(s);
   drawReflectanceSection(s);
   drawLightSection(s);
+  drawEnvironmentSection(s);
   drawViewSection(s);
   drawMeshSection(s);
   drawFilesSection(s);

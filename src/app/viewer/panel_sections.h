@@ -12,6 +12,7 @@ void drawColourSection(ViewerState& s);
 void drawSubsurfaceSection(ViewerState& s);
 void drawReflectanceSection(ViewerState& s);
 void drawLightSection(ViewerState& s);
+void drawEnvironmentSection(ViewerState& s);  // studio / none / .hdr map, strength, turn
 void drawViewSection(ViewerState& s);     // camera, turntable, background, antialiasing, vsync, screenshot
 void drawPerformanceSection(ViewerState& s);
 

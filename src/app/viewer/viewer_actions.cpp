@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 
@@ -51,8 +52,10 @@ void loadSceneFile(Renderer& renderer, ViewerState& s) {
   std::vector<std::string> warnings;
   const Scene scene = loadScene(s.scenePathInput, warnings);  // throws: nothing changed yet
   const Mesh mesh = loadSceneMesh(scene);                      // likewise
+  const auto environment = loadSceneEnvironment(scene);        // likewise
   adoptScene(s, scene);
   adoptMesh(renderer, s, mesh, scene.mesh);
+  if (environment) adoptEnvironment(renderer, s, *environment);
   s.meshPathInput = scene.mesh.rfind("builtin:", 0) == 0 ? "" : scene.mesh;
   s.setStatus("scene loaded: " + s.scenePathInput + joinWarnings(warnings));
 }
@@ -103,6 +106,17 @@ void adoptMesh(Renderer& renderer, ViewerState& s, const Mesh& mesh, const std::
   for (const auto& p : mesh.positions) s.meshRadius = std::max(s.meshRadius, glm::length(p));
 }
 
+void adoptEnvironment(Renderer& renderer, ViewerState& s, const PrefilteredEnvironment& env) {
+  renderer.setEnvironmentMap(env);
+  s.scene.render.environment = Environment::Map;
+  s.scene.render.environment_map = env.source;
+  s.loadedEnvironment = env.source;
+  s.environmentPathInput = env.source;
+  char info[96];
+  std::snprintf(info, sizeof info, "%d x %d, read and prefiltered in %.1f s", env.sourceWidth, env.sourceHeight, env.seconds);
+  s.environmentLabel = info;
+}
+
 void loadMeshInto(Renderer& renderer, ViewerState& s, const std::string& source) {
   Scene candidate = s.scene;
   candidate.mesh = source;
@@ -125,6 +139,14 @@ void runFileRequests(Renderer& renderer, ViewerState& s) {
     attempt(s, [&] {
       loadMeshInto(renderer, s, s.meshPathInput);
       s.setStatus("mesh loaded: " + s.meshPathInput);
+    });
+  }
+  if (std::exchange(s.requestEnvironmentLoad, false)) {
+    attempt(s, [&] {
+      // Read and precomputed aside: a bad file leaves the previous environment in use.
+      const PrefilteredEnvironment env = loadEnvironmentMap(s.environmentPathInput);
+      adoptEnvironment(renderer, s, env);
+      s.setStatus("environment loaded: " + env.source + " (" + s.environmentLabel + ")");
     });
   }
   if (std::exchange(s.requestSaveMaterial, false)) attempt(s, [&] { saveMaterialFile(s); });

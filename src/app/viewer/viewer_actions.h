@@ -16,6 +16,9 @@ void loadMeshInto(Renderer& renderer, ViewerState& s, const std::string& source)
 // Hands an already loaded mesh to the renderer and the panel (label, triangles, radius).
 void adoptMesh(Renderer& renderer, ViewerState& s, const Mesh& mesh, const std::string& source);
 
+// Hands an already loaded environment map to the renderer and selects it ("map").
+void adoptEnvironment(Renderer& renderer, ViewerState& s, const PrefilteredEnvironment& env);
+
 // Puts the whole object in view from the current direction; `aspect` is the 3D view's.
 void frameObject(ViewerState& s, float aspect);
 

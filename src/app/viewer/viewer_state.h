@@ -29,6 +29,10 @@ struct ViewerState {
   std::string meshPathInput;
   std::string materialPathInput = "my-marble.json";
   std::string scenePathInput = "scene.json";
+  std::string environmentPathInput;
+
+  std::string loadedEnvironment;  // the .hdr the renderer holds ("" = none); scene.render.environment_map may differ
+  std::string environmentLabel;   // its size and load time, for the panel
 
   std::string presetName;         // the preset the material started from
   Material presetMaterial;        // what "reset" returns a section to
@@ -61,6 +65,7 @@ struct ViewerState {
   bool requestUndo = false, requestRedo = false;
   bool requestSaveMaterial = false, requestLoadMaterial = false;
   bool requestSaveScene = false, requestLoadScene = false;
+  bool requestEnvironmentLoad = false;  // loads environmentPathInput
 
   void setError(const std::string& message) { status = message; statusIsError = true; }
   void setStatus(const std::string& message) { status = message; statusIsError = false; }

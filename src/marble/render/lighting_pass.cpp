@@ -7,16 +7,19 @@ namespace marble {
 LightingPass::LightingPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  programs_.get(variantFor(RenderMode::Marble));  // the default mode's, so a broken shader shows at once
+  // The default mode's, so a broken shader shows at once.
+  programs_.get(variantFor(RenderMode::Marble, environmentDefine(RenderSettings{}, nullptr)));
 }
 
-std::vector<std::string> LightingPass::variantFor(RenderMode mode) {
-  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode))};
+std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment) {
+  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment};
 }
 
 void LightingPass::compileAll() {
   for (size_t i = 0; i < renderModeNames().size(); ++i)
-    if (static_cast<RenderMode>(i) != RenderMode::Floor) programs_.get(variantFor(static_cast<RenderMode>(i)));
+    for (int kind : {kEnvStudio, kEnvMap})
+      if (static_cast<RenderMode>(i) != RenderMode::Floor)
+        programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind)));
 }
 
 void LightingPass::resize(int width, int height) {
@@ -41,7 +44,7 @@ static glm::vec3 transportCoefficient(const Material& m) {
 
 void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
                        const Light& light, const Material& m, const Scene& scene, float lightTexelWorld,
-                       const ScreenRect& rect) {
+                       const ScreenRect& rect, const EnvironmentMap* environment) {
   const RenderSettings& settings = scene.render;
   const bool marble = settings.mode == RenderMode::Marble;
   const GLuint fbo = marble ? enteringFbo_.id() : fbo_.id();
@@ -56,7 +59,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   if (settings.mode != RenderMode::LightDepth) scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(0, 5, textures);
-  const gl::Program& p = programs_.get(variantFor(settings.mode));
+  const gl::Program& p = programs_.get(variantFor(settings.mode, environmentDefine(settings, environment)));
   setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
@@ -73,16 +76,12 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);
-  p.set("u_env_intensity", environmentIntensity(settings));
+  setEnvironmentUniforms(p, settings, environment);
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   scissorOff();
   timer_.end();
-}
-
-float environmentIntensity(const RenderSettings& settings) {
-  return settings.environment == Environment::Studio ? settings.environment_intensity : 0.0f;
 }
 
 }  // namespace marble

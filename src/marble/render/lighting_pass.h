@@ -4,6 +4,7 @@
 // `--hdr`) -- or, for `marble`, the light entering the stone (read by the subsurface blur and
 // the post pass, which adds the reflected light).
 #include "marble/gl/program_variants.h"
+#include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
 #include "marble/render/view_setup.h"
@@ -21,7 +22,8 @@ public:
   void resize(int width, int height);
   // Draws inside `rect` only (everything else is cleared to zero), except the light-depth view.
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           const Material& material, const Scene& scene, float lightTexelWorld, const ScreenRect& rect);
+           const Material& material, const Scene& scene, float lightTexelWorld, const ScreenRect& rect,
+           const EnvironmentMap* environment);  // used when the scene asks for a map; null: none loaded
   GLuint hdrTexture() const { return hdr_.id(); }  // every mode but `marble`: the picture
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
   GLuint fbo() const { return fbo_.id(); }  // hdrTexture's
@@ -31,7 +33,7 @@ public:
   void compileAll();
 
 private:
-  static std::vector<std::string> variantFor(RenderMode mode);
+  static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment);
   gl::ProgramVariants programs_;
   gl::Texture hdr_, entering_;
   gl::Framebuffer fbo_, enteringFbo_;
@@ -39,8 +41,5 @@ private:
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
 };
-
-// The environment's strength as the shaders take it: 0 = no environment light.
-float environmentIntensity(const RenderSettings& settings);
 
 }  // namespace marble

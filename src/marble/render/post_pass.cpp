@@ -11,10 +11,13 @@ namespace marble {
 PostPass::PostPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  compileAll();  // two small programs
+  programs_.get({"COMPOSE_MARBLE 1", environmentDefine(RenderSettings{}, nullptr)});  // a broken shader shows at once
 }
 
-void PostPass::compileAll() { programs_.compile({{"COMPOSE_MARBLE 0"}, {"COMPOSE_MARBLE 1"}}); }
+void PostPass::compileAll() {
+  for (const char* compose : {"COMPOSE_MARBLE 0", "COMPOSE_MARBLE 1"})
+    for (int kind : {kEnvStudio, kEnvMap}) programs_.get({compose, "ENV_KIND " + std::to_string(kind)});
+}
 
 void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width,
                    int height, const ScreenRect& rect, bool linearOutput) {
@@ -35,7 +38,8 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   }
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, in.entering, in.albedo, in.normal, in.lightShadow};
   glBindTextures(0, 7, textures);
-  const gl::Program& p = programs_.get({marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0"});
+  const gl::Program& p = programs_.get(
+      {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", environmentDefine(settings, view.environment)});
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);
   p.set("u_exposure_scale", std::exp2(settings.exposure));
@@ -45,7 +49,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     setFrameUniforms(p, view.camera, view.light, scene.light, view.lightTexelWorld);
     p.set("u_ior", scene.material.ior);
     p.set("u_roughness", scene.material.roughness);
-    p.set("u_env_intensity", environmentIntensity(settings));
+    setEnvironmentUniforms(p, settings, view.environment);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   glUseProgram(p.id());

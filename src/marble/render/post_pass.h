@@ -5,6 +5,7 @@
 // paper's modes and the buffer views pass through unchanged. It draws only inside the mesh's
 // screen rectangle; the rest of the target is cleared to the background colour.
 #include "marble/gl/program_variants.h"
+#include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
 #include "marble/render/view_setup.h"
@@ -24,6 +25,7 @@ struct PostView {
   const CameraMatrices& camera;
   const LightMatrices& light;
   float lightTexelWorld;
+  const EnvironmentMap* environment;  // the loaded map, or null
 };
 
 class PostPass {

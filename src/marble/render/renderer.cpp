@@ -34,7 +34,8 @@ bool sameView(const Scene& a, const Scene& b) {
          a.camera.fov_y_deg == b.camera.fov_y_deg && a.render.mode == b.render.mode &&
          a.render.environment == b.render.environment &&
          a.render.environment_intensity == b.render.environment_intensity &&
-         a.render.subsurface_resolution == b.render.subsurface_resolution;
+         a.render.subsurface_resolution == b.render.subsurface_resolution &&
+         a.render.environment_rotation_deg == b.render.environment_rotation_deg;
 }
 // What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer
 // and the light's map. For `marble` that is the light entering the stone: the scattering
@@ -67,12 +68,23 @@ void Renderer::setMesh(const Mesh& mesh) {
   invalidate();
 }
 
+void Renderer::setEnvironmentMap(const PrefilteredEnvironment& environment) {
+  environment_.emplace(environment);
+  lightingValid_ = false;
+}
+
+void Renderer::clearEnvironmentMap() {
+  environment_.reset();
+  lightingValid_ = false;
+}
+
 void Renderer::reloadShaders() {
   auto fresh = std::make_unique<Passes>(shaders_);  // throws on error; old passes stay
   // Every specialized program now, not at its first use: an error must show here, while
   // the previous programs are still in use.
   fresh->albedo.compileAll();
   fresh->lighting.compileAll();
+  fresh->post.compileAll();
   passes_ = std::move(fresh);
   invalidate();
 }
@@ -126,7 +138,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
                             passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture()};
     passes_->lighting.resize(width, height);
-    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect);
+    passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect, environment());
     if (marble) {
       passes_->blur.resize(width, height, subsurfaceScale(scene.render));
       passes_->blur.run({passes_->lighting.enteringTexture(), passes_->geometry.depthTexture()}, camera, scene, height,
@@ -149,7 +161,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
     displayImage_.emplace(width, height);
   if (!fxaa) displayImage_.reset();
   const GLuint postTarget = fxaa ? displayImage_->fbo() : targetFbo;
-  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld}, postTarget, width, height, rect);
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment()}, postTarget, width, height, rect);
   if (fxaa) {
     // FXAA changes nothing on flat background: outside the object's rectangle (grown by the
     // filter's reach) the display image is copied as it is.
@@ -181,7 +193,7 @@ PassTimes Renderer::passTimes(bool wait) {
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
-         (mesh_ ? mesh_->bytes() : 0);
+         (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() {
@@ -191,7 +203,7 @@ ImageRGBF Renderer::readHdr() {
   // The last frame once more, through the same post pass, into a float target, linear.
   if (!hdrReadback_ || hdrReadback_->width() != w || hdrReadback_->height() != h)
     hdrReadback_.emplace(w, h, GL_RGBA32F);
-  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_}, hdrReadback_->fbo(), w,
+  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment()}, hdrReadback_->fbo(), w,
                     h, lastRect_, /*linearOutput=*/true);
   // RGB: linear light; A: coverage (the post pass writes 1 on the object, 0 elsewhere).
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4);

@@ -14,6 +14,7 @@
 
 #include "marble/gl/shader_library.h"
 #include "marble/render/albedo_pass.h"
+#include "marble/render/environment_map.h"
 #include "marble/render/floor_pass.h"
 #include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
@@ -44,6 +45,13 @@ public:
   bool hasMesh() const { return mesh_ && !mesh_->empty(); }
   size_t triangleCount() const { return mesh_ ? mesh_->triangleCount() : 0; }
 
+  // The environment map used when a scene says "environment": "map" (uploaded here, once; the
+  // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
+  // a scene gets no environment light.
+  void setEnvironmentMap(const PrefilteredEnvironment& environment);
+  void clearEnvironmentMap();
+  bool hasEnvironmentMap() const { return environment_.has_value(); }
+
   // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
@@ -69,6 +77,7 @@ private:
   ShaderLibrary shaders_;
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
+  std::optional<EnvironmentMap> environment_;
   PassTimes times_;
   // What the cached passes were made from.
   bool lightValid_ = false, geometryValid_ = false;
@@ -87,6 +96,7 @@ private:
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  const EnvironmentMap* environment() const { return environment_ ? &*environment_ : nullptr; }
   // With antialiasing on, the post pass writes this display image and FXAA reads it.
   std::optional<OffscreenTarget> displayImage_;
 };

@@ -37,7 +37,12 @@ const std::vector<std::string>& renderModeNames();  // in enum order
 RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_argument
 const std::string& renderModeName(RenderMode mode);
 
-enum class Environment { Studio, None };
+// Light from around the object (`marble` mode): the built-in procedural studio, nothing, or an
+// equirectangular Radiance .hdr file.
+enum class Environment { Studio, None, Map };
+const std::vector<std::string>& environmentNames();  // in enum order: studio, none, map
+Environment parseEnvironment(const std::string& name);  // throws std::invalid_argument
+
 // Where the `marble` mode's subsurface blur runs: at half resolution (a quarter of the pixels;
 // fast, for interaction) or at full resolution (slightly crisper, for final images).
 enum class SubsurfaceResolution { Half, Full };  // "half" | "full"
@@ -53,10 +58,12 @@ struct RenderSettings {
   glm::vec3 background{0.19f, 0.11f, 0.03f};  // the paper's dark brown, as displayed
   RenderMode mode = RenderMode::Marble;
   float exposure = 0.0f;                      // stops, for the `marble` mode's tone mapping
-  Environment environment = Environment::Studio;  // light from around the object (`marble` mode)
+  Environment environment = Environment::Studio;
   float environment_intensity = 0.6f;
   SubsurfaceResolution subsurface_resolution = SubsurfaceResolution::Half;
   Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
+  std::string environment_map;                // the .hdr (resolved against the scene's folder); used when Map
+  float environment_rotation_deg = 0.0f;      // turns the map about +Y (yaw)
 };
 
 struct Scene {

@@ -26,14 +26,33 @@ ojson number(float f) {
 
 ojson vec3(const glm::vec3& v) { return ojson::array({number(v.x), number(v.y), number(v.z)}); }
 
-std::string meshField(const std::string& mesh, const std::filesystem::path& scenePath) {
-  if (mesh.rfind("builtin:", 0) == 0) return mesh;
-  // loadScene resolves a relative mesh path against the scene file's folder.
+// loadScene resolves a relative path (mesh, environment map) against the scene file's folder.
+std::string fileField(const std::string& file, const std::filesystem::path& scenePath) {
   std::error_code ec;
   const auto folder = std::filesystem::absolute(scenePath, ec).parent_path();
-  const auto absMesh = std::filesystem::absolute(mesh, ec);
-  const auto rel = std::filesystem::proximate(absMesh, folder, ec);
-  return (ec || rel.empty()) ? absMesh.string() : rel.generic_string();
+  const auto absFile = std::filesystem::absolute(file, ec);
+  const auto rel = std::filesystem::proximate(absFile, folder, ec);
+  return (ec || rel.empty()) ? absFile.string() : rel.generic_string();
+}
+
+std::string meshField(const std::string& mesh, const std::filesystem::path& scenePath) {
+  return mesh.rfind("builtin:", 0) == 0 ? mesh : fileField(mesh, scenePath);
+}
+
+ojson renderObject(const RenderSettings& r, const std::filesystem::path& scenePath) {
+  ojson j = {{"width", r.width},
+             {"height", r.height},
+             {"background", vec3(r.background)},
+             {"mode", renderModeName(r.mode)},
+             {"exposure", number(r.exposure)},
+             {"environment", environmentNames().at(static_cast<size_t>(r.environment))},
+             {"environment_intensity", number(r.environment_intensity)},
+             {"subsurface_resolution", r.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"},
+             {"antialias", antialiasName(r.antialias)}};
+  // The map is kept while another environment is chosen, so switching back finds it.
+  if (!r.environment_map.empty()) j["environment_map"] = fileField(r.environment_map, scenePath);
+  j["environment_rotation_deg"] = number(r.environment_rotation_deg);
+  return j;
 }
 
 }  // namespace
@@ -56,13 +75,7 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
   for (const auto& key : materialKeys())
     if (m.contains(key)) mat[key] = ojson::parse(m[key].dump());
   j["material"] = mat;
-  j["render"] = {{"width", scene.render.width},
-                 {"height", scene.render.height},
-                 {"background", vec3(scene.render.background)},
-                 {"mode", renderModeName(scene.render.mode)},
-                 {"subsurface_resolution",
-                  scene.render.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"},
-                 {"antialias", antialiasName(scene.render.antialias)}};
+  j["render"] = renderObject(scene.render, path);
   return j.dump(2) + "\n";
 }
 

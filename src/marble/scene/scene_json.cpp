@@ -130,17 +130,28 @@ void readLight(const json& j, const std::string& file, Light& light, std::vector
   r.warnUnknown(warnings);
 }
 
-void readRender(const json& j, const std::string& file, RenderSettings& rs, std::vector<std::string>& warnings) {
-  ObjectReader r(j, file, "render.");
+// A path written in a scene file is relative to the scene's folder.
+std::string resolveAgainstScene(const std::filesystem::path& scenePath, const std::string& written) {
+  std::filesystem::path p(written);
+  if (p.is_relative()) p = scenePath.parent_path() / p;
+  return p.lexically_normal().string();
+}
+
+void readRender(const json& j, const std::filesystem::path& scenePath, RenderSettings& rs,
+                std::vector<std::string>& warnings) {
+  ObjectReader r(j, scenePath.string(), "render.");
   r.integer("width", rs.width, 1, kMaxRenderSize);
   r.integer("height", rs.height, 1, kMaxRenderSize);
   r.vec3("background", rs.background, 0.0f, 1.0f);
   r.number("exposure", rs.exposure, -10.0f, 10.0f);
   std::string env;
-  if (r.string("environment", env)) {
-    if (env == "studio") rs.environment = Environment::Studio;
-    else if (env == "none") rs.environment = Environment::None;
-    else r.fail("environment", "expected \"studio\" or \"none\", got \"" + env + "\"");
+  const bool envGiven = r.string("environment", env);
+  if (envGiven) {
+    try {
+      rs.environment = parseEnvironment(env);
+    } catch (const std::invalid_argument& e) {
+      r.fail("environment", e.what());
+    }
   }
   r.number("environment_intensity", rs.environment_intensity, 0.0f, 100.0f);
   std::string sssRes;
@@ -157,6 +168,15 @@ void readRender(const json& j, const std::string& file, RenderSettings& rs, std:
       r.fail("antialias", e.what());
     }
   }
+  std::string map;
+  if (r.string("environment_map", map)) {
+    if (map.empty()) r.fail("environment_map", "must not be empty");
+    rs.environment_map = resolveAgainstScene(scenePath, map);
+    if (!envGiven) rs.environment = Environment::Map;  // naming a map is asking for it
+  }
+  if (rs.environment == Environment::Map && rs.environment_map.empty())
+    r.fail("environment", "\"map\" needs render.environment_map (an equirectangular .hdr file)");
+  r.number("environment_rotation_deg", rs.environment_rotation_deg, -360.0f, 360.0f);
   std::string mode;
   if (r.string("mode", mode)) {
     try {
@@ -205,13 +225,7 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
   std::string mesh;
   if (r.string("mesh", mesh)) {
     if (mesh.empty()) r.fail("mesh", "must not be empty");
-    if (mesh.rfind("builtin:", 0) == 0) {
-      scene.mesh = mesh;
-    } else {
-      std::filesystem::path p(mesh);
-      if (p.is_relative()) p = path.parent_path() / p;
-      scene.mesh = p.lexically_normal().string();
-    }
+    scene.mesh = mesh.rfind("builtin:", 0) == 0 ? mesh : resolveAgainstScene(path, mesh);
   }
   std::string up;
   if (r.string("up", up)) {
@@ -225,7 +239,7 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
   if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
   if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);
   if (const json* m = r.object("material")) applyMaterialJson(scene.material, *m, file, "material.", warnings);
-  if (const json* rs = r.object("render")) readRender(*rs, file, scene.render, warnings);
+  if (const json* rs = r.object("render")) readRender(*rs, path, scene.render, warnings);
   r.warnUnknown(warnings);
   return scene;
 }

@@ -7,6 +7,7 @@
 // against the least number of bytes the declared elements need.
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 #include <vector>
@@ -104,6 +105,16 @@ double loadValue(Type t, const unsigned char* p, bool swap) {
     case Type::Float64: return loadRaw<double>(p, swap);
   }
   return 0.0;
+}
+
+// An index as the file gave it, for a message. Float properties can hold anything: a cast of
+// inf, nan or 1e30 to an integer is undefined (fuzz_ply found "inf" here), so those are printed
+// as the number they are.
+std::string indexText(double x) {
+  if (std::isfinite(x) && std::abs(x) < 9e15 && x == std::floor(x)) return std::to_string(static_cast<long long>(x));
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
 }
 
 class PlyParser {
@@ -388,8 +399,8 @@ private:
         for (uint64_t j = 0; j < n; ++j) {
           double x = value(p.type, e, i);
           if (!(x >= 0) || x >= static_cast<double>(vertexCount_))
-            bodyFail("face " + std::to_string(i) + ": vertex index " + std::to_string(static_cast<long long>(x)) +
-                     " is out of range (the file has " + withThousands(vertexCount_) + " vertices)");
+            bodyFail("face " + std::to_string(i) + ": vertex index " + indexText(x) + " is out of range (the file has " +
+                     withThousands(vertexCount_) + " vertices)");
           polygon.push_back(static_cast<uint32_t>(x));
         }
         for (size_t j = 1; j + 1 < polygon.size(); ++j) {

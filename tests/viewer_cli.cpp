@@ -17,7 +17,19 @@ namespace {
 using test::runMarble;
 using test::tempDir;
 
-const char* kXvfb = "xvfb-run -a -s '-screen 0 1024x768x24'";
+// A virtual X server for one command. xvfb-run's own temporary folder is avoided (-f names the
+// authority file in a folder of ours): its clean-up failed now and then when tests ran in
+// parallel, turning a passing viewer run into exit code 5.
+struct XauthorityFolder {
+  std::filesystem::path dir = tempDir("xvfb");
+  ~XauthorityFolder() { std::filesystem::remove_all(dir); }
+};
+std::string xvfb() {
+  static XauthorityFolder folder;
+  static int runs = 0;
+  const auto file = folder.dir / ("Xauthority-" + std::to_string(++runs));
+  return "xvfb-run -a -f " + file.string() + " -s '-screen 0 1024x768x24'";
+}
 
 bool isBackground(const glm::u8vec4& px) {  // the default scene's background, as displayed
   return std::abs(px.r - 48) <= 3 && std::abs(px.g - 28) <= 3 && std::abs(px.b - 8) <= 3;
@@ -36,7 +48,7 @@ TEST(ViewerCli, ABrokenShaderIsOneLineAndExitOne) {
   std::filesystem::create_directories(dir / "shaders");
   std::ofstream(dir / "shaders" / "lighting.frag.glsl") << "#version 450 core\nvoid main() { nonsense; }\n";
   const auto r = runMarble("view --frames 2 --width 320 --height 240",
-                           std::string(kXvfb) + " env MARBLE_SHADER_DIR=" + (dir / "shaders").string());
+                           xvfb() + " env MARBLE_SHADER_DIR=" + (dir / "shaders").string());
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("marble view: " + (dir / "shaders" / "lighting.frag.glsl").string() + ":2: error"),
@@ -48,7 +60,7 @@ TEST(ViewerCli, ABrokenShaderIsOneLineAndExitOne) {
 TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
   const auto dir = tempDir("viewer-shot");
   const auto shot = dir / "shot.png";
-  const auto r = runMarble("view --frames 4 --width 800 --height 500 --screenshot " + shot.string(), kXvfb);
+  const auto r = runMarble("view --frames 4 --width 800 --height 500 --screenshot " + shot.string(), xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const ImageRGBA8 img = readPng(shot);
   ASSERT_EQ(img.width, 800);
@@ -99,14 +111,14 @@ TEST(ViewerCli, OpensAMeshFileWithAPreset) {
   const auto dir = tempDir("viewer-mesh");
   const auto shot = dir / "cube.png";
   const auto r = runMarble("view " + std::string(MARBLE_TEST_FIXTURES) + "/mesh/cube_flat.obj --preset carrara --frames 2 "
-                               "--width 400 --height 300 --screenshot " + shot.string(), kXvfb);
+                               "--width 400 --height 300 --screenshot " + shot.string(), xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(readPng(shot).width, 400);
   std::filesystem::remove_all(dir);
 }
 
 TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {
-  const auto r = runMarble("view /nonexistent/thing.obj --frames 1", kXvfb);
+  const auto r = runMarble("view /nonexistent/thing.obj --frames 1", xvfb());
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("/nonexistent/thing.obj"), std::string::npos) << r.output;
@@ -116,7 +128,7 @@ TEST(ViewerCli, BadSceneFileIsOneLineAndExitTwo) {
   const auto dir = tempDir("viewer-badscene");
   const auto scene = dir / "bad.json";
   { std::ofstream(scene) << "{\"camera\": {\"fov_y_deg\": 500}}"; }
-  const auto r = runMarble("view " + scene.string() + " --frames 1", kXvfb);
+  const auto r = runMarble("view " + scene.string() + " --frames 1", xvfb());
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("camera.fov_y_deg"), std::string::npos) << r.output;
@@ -129,10 +141,10 @@ TEST(ViewerCli, OpensWithAnEnvironmentMapAndABadOneIsOneLineAndExitTwo) {
   { std::ofstream(dir / "bad.hdr") << "not an image"; }
   const auto shot = dir / "env.png";
   auto r = runMarble("view builtin:sphere --environment-map " + (dir / "sky.hdr").string() +
-                         " --frames 2 --width 400 --height 300 --screenshot " + shot.string(), kXvfb);
+                         " --frames 2 --width 400 --height 300 --screenshot " + shot.string(), xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(readPng(shot).width, 400);
-  r = runMarble("view --environment-map " + (dir / "bad.hdr").string() + " --frames 1", kXvfb);
+  r = runMarble("view --environment-map " + (dir / "bad.hdr").string() + " --frames 1", xvfb());
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("bad.hdr: not a Radiance .hdr file"), std::string::npos) << r.output;

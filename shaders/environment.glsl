@@ -1,4 +1,4 @@
-// Light from around the object for the `marble` mode, one of two kinds picked by u_env_kind:
+// Light from around the object for the `marble` mode, one of two kinds (ENV_KIND, below):
 // the procedural studio (marble_shading.glsl, no file needed) or an equirectangular map,
 // prefiltered on the CPU once per load (src/marble/environment/). Both give
 //   env_diffuse(n):             irradiance / PI for a surface facing n

@@ -32,4 +32,10 @@ void setScreenPassState() {
   glDisable(GL_SCISSOR_TEST);
 }
 
+void drawFullscreenTriangle(GLuint program, GLuint emptyVao) {
+  glUseProgram(program);
+  glBindVertexArray(emptyVao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 }  // namespace marble::gl

@@ -116,4 +116,8 @@ void setMeshPassState();
 // Sets what a full-screen pass relies on: no depth test, blending or culling.
 void setScreenPassState();
 
+// One triangle covering the viewport, drawn with `program` (fullscreen.vert.glsl builds it from
+// gl_VertexID; the core profile still wants a vertex array bound: `emptyVao`).
+void drawFullscreenTriangle(GLuint program, GLuint emptyVao);
+
 }  // namespace marble::gl

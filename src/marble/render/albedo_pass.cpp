@@ -49,9 +49,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
   p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
   applyPatternUniforms(p.id(), material);
-  glUseProgram(p.id());
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
 }

@@ -28,9 +28,7 @@ void FxaaPass::run(GLuint displayFbo, GLuint displayImage, GLuint targetFbo, int
   scissorTo(rect);
   glBindTextureUnit(0, displayImage);
   program_.set("u_texel", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
-  glUseProgram(program_.id());
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
 }

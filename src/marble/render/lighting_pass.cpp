@@ -77,9 +77,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);
   setEnvironmentUniforms(p, settings, environment);
-  glUseProgram(p.id());
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
 }

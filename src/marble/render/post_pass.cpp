@@ -52,9 +52,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     setEnvironmentUniforms(p, settings, view.environment);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
-  glUseProgram(p.id());
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
 }

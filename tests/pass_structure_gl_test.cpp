@@ -154,5 +154,15 @@ TEST(ProgramVariants, CompilesEachSetOfDefinesOnceAndReportsErrorsByFile) {
     EXPECT_NE(std::string(e.what()).find("variant_test.frag.glsl"), std::string::npos) << e.what();
   }
   EXPECT_EQ(variants.compiledCount(), 2u);
+  // The per-frame path: a number finds the program; the defines are built only once.
+  int built = 0;
+  const auto make = [&] {
+    ++built;
+    return std::vector<std::string>{"VALUE 0.5"};
+  };
+  EXPECT_EQ(variants.get(7u, make).id(), b) << "the key leads to the program of its defines";
+  EXPECT_EQ(variants.get(7u, make).id(), b);
+  EXPECT_EQ(built, 1);
+  EXPECT_EQ(variants.compiledCount(), 2u);
   std::filesystem::remove_all(dir);
 }

@@ -5,8 +5,10 @@
 // picks the render mode, noise basis or mapping at run time pays for all of them per pixel.
 // Compiled as constants, the unused branches vanish (the geometry pass went from 66 to 37 ms
 // on the dragon at 800x800; docs/performance.md). On a GPU it costs nothing either way.
+#include <cstdint>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "marble/gl/program.h"
@@ -22,6 +24,17 @@ public:
   // use. Throws ShaderError (file and line) if it does not compile.
   const Program& get(const std::vector<std::string>& defines);
 
+  // The same, for the per-frame path: `key` (a small number the caller derives from what the
+  // defines encode) finds a program already built without building any strings; `defines()`
+  // is called only the first time a key is seen.
+  template <typename MakeDefines>
+  const Program& get(uint32_t key, MakeDefines defines) {
+    if (auto it = byKey_.find(key); it != byKey_.end()) return *it->second;
+    const Program& program = get(defines());
+    byKey_.emplace(key, &program);
+    return program;
+  }
+
   // Compiles every listed variant now (e.g. after a shader reload, so that an error shows
   // while the previous programs are still in use).
   void compile(const std::vector<std::vector<std::string>>& variants);
@@ -31,7 +44,8 @@ public:
 private:
   const ShaderLibrary* library_;
   std::vector<ShaderStageSource> stages_;
-  std::map<std::vector<std::string>, Program> programs_;
+  std::map<std::vector<std::string>, Program> programs_;  // node-based: the pointers below stay valid
+  std::unordered_map<uint32_t, const Program*> byKey_;
 };
 
 }  // namespace marble::gl

@@ -45,7 +45,9 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
   glBindTextures(0, 2, textures);
-  const gl::Program& p = programs_.get(variantFor(material));
+  const gl::Program& p = programs_.get(
+      static_cast<uint32_t>(material.basis) * 3u + static_cast<uint32_t>(material.mapping),
+      [&] { return variantFor(material); });
   p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
   p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
   applyPatternUniforms(p.id(), material);

@@ -59,7 +59,10 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   if (settings.mode != RenderMode::LightDepth) scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(0, 5, textures);
-  const gl::Program& p = programs_.get(variantFor(settings.mode, environmentDefine(settings, environment)));
+  const int envKind = environmentKind(settings, environment);
+  const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
+    return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));
+  });
   setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));

@@ -38,8 +38,11 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   }
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, in.entering, in.albedo, in.normal, in.lightShadow};
   glBindTextures(0, 7, textures);
-  const gl::Program& p = programs_.get(
-      {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", environmentDefine(settings, view.environment)});
+  const int envKind = environmentKind(settings, view.environment);
+  const gl::Program& p = programs_.get((marble ? 2u : 0u) + static_cast<uint32_t>(envKind), [&] {
+    return std::vector<std::string>{marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0",
+                                    "ENV_KIND " + std::to_string(envKind)};
+  });
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);
   p.set("u_exposure_scale", std::exp2(settings.exposure));

@@ -17,7 +17,10 @@
 //      half a texel (0.5 - distance / span length); at the other end not at all;
 //   6. fetches once, bilinearly, moved across the edge by the larger of (5) and (2).
 layout(location = 0) out vec4 o_color;
-layout(binding = 0) uniform sampler2D u_image;  // RGBA8 display image, GL_LINEAR, clamped to edge
+// RGBA8 display image, GL_LINEAR, clamped to edge; alpha: the luma of the colour (the post pass
+// computes it once per pixel). Neighbours' lumas are read four at a time (textureGather of
+// alpha): on llvmpipe every texture read costs about as much as the rest of a simple pass.
+layout(binding = 0) uniform sampler2D u_image;
 uniform vec2 u_texel;                           // 1 / image size
 
 // Lottes' defaults for the quality path: contrast threshold 0.166 (0.063 "overkill" ... 0.333
@@ -35,22 +38,23 @@ float searchStep(int i) { return i < 4 ? 1.0 : i == 4 ? 1.5 : i < 8 ? 2.0 : i ==
 // mask (2.5x this pass's cost, measured); a real loop stops when all pixels of a SIMD group are done.
 uniform int u_search_steps;
 
-// Luma of the display-referred colour: Rec. 601 weights on the sRGB-encoded values, as FXAA
-// expects (perceptual, so thresholds mean the same in dark and bright areas).
-float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
-
-ivec2 g_lastTexel;  // set first thing in main: texelFetch outside the image is undefined
-float lumaAt(ivec2 p) { return luma(texelFetch(u_image, clamp(p, ivec2(0), g_lastTexel), 0).rgb); }
-float lumaAt(vec2 uv) { return luma(textureLod(u_image, uv, 0.0).rgb); }
+// Luma of the display-referred colour (Rec. 601 weights on the sRGB-encoded values, as FXAA
+// expects: perceptual, so thresholds mean the same in dark and bright areas), from alpha.
+float lumaAt(vec2 uv) { return textureLod(u_image, uv, 0.0).a; }
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  g_lastTexel = textureSize(u_image, 0) - 1;
-  vec3 centre = texelFetch(u_image, p, 0).rgb;
+  vec2 corner = vec2(p) * u_texel;  // the texel's lower-left corner
   // Rows grow upward in GL: "north" is +y. The algorithm is symmetric, the names only help reading.
-  float m = luma(centre);
-  float n = lumaAt(p + ivec2(0, 1)), s = lumaAt(p + ivec2(0, -1));
-  float e = lumaAt(p + ivec2(1, 0)), w = lumaAt(p + ivec2(-1, 0));
+  // A gather at a texel corner returns the four texels around it as (upper-left, upper-right,
+  // lower-right, lower-left); clamping to the edge handles the image border.
+  vec4 upperRight = textureGather(u_image, corner + u_texel, 3);          // n, ne, e, m
+  vec4 lowerLeft = textureGather(u_image, corner, 3);                     // w, m, s, sw
+  vec4 upperLeft = textureGather(u_image, corner + vec2(0.0, u_texel.y), 3);  // nw, n, m, w
+  vec4 lowerRight = textureGather(u_image, corner + vec2(u_texel.x, 0.0), 3); // m, e, se, s
+  vec3 centre = texelFetch(u_image, p, 0).rgb;
+  float m = upperRight.w;
+  float n = upperRight.x, e = upperRight.z, w = lowerLeft.x, s = lowerLeft.z;
 
   // 1. Local contrast.
   float maxLuma = max(m, max(max(n, s), max(e, w)));
@@ -60,8 +64,7 @@ void main() {
     o_color = vec4(centre, 1.0);
     return;
   }
-  float nw = lumaAt(p + ivec2(-1, 1)), ne = lumaAt(p + ivec2(1, 1));
-  float sw = lumaAt(p + ivec2(-1, -1)), se = lumaAt(p + ivec2(1, -1));
+  float nw = upperLeft.x, ne = upperRight.y, sw = lowerLeft.w, se = lowerRight.z;
 
   // 2. Sub-pixel aliasing: tent-weighted 3x3 average (edges 2, corners 1) against the centre;
   // smoothstep and squaring keep it small unless the centre really stands out.

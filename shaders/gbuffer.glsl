@@ -1,4 +1,12 @@
-// G-buffer encoding shared by the geometry pass (writer) and the lighting pass (reader).
+// G-buffer encoding shared by the geometry pass (writer) and the screen passes (readers).
+
+// Depth: the depth buffer's value z of a perspective projection with planes near_far, as the
+// distance along the view axis (scene units).
+float linear_depth(float z, vec2 near_far) {
+  float n = near_far.x, f = near_far.y;
+  return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
+}
+
 // Normals: octahedral mapping into two signed-normalized 16-bit channels
 // (Cigolle et al. 2014, "A Survey of Efficient Representations for Independent Unit Vectors";
 // worst-case angular error about 0.002 degrees at 16 bits).

@@ -44,6 +44,10 @@ uniform float u_ior;
 uniform float u_roughness;
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
+// Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):
+// output texel h is lit at full-resolution pixel h * u_scale, the pixel the subsurface blur
+// takes it to stand for (subsurface_common.glsl, representative_depth).
+uniform int u_scale;
 
 // Keep in step with marble::RenderMode.
 const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
@@ -131,23 +135,26 @@ void main() {
     o_color = vec4(vec3(t), 1.0);
     return;
   }
-  float depth = texture(u_depth, v_uv).r;
+  ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
+  vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
+  float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
     o_color = vec4(0.0);
     return;
   }
-  vec3 P = surface_point(v_uv, depth);
-  vec3 N = decode_normal(texture(u_normal, v_uv).xy);
-  vec3 albedo = texture(u_albedo, v_uv).rgb;
+  vec3 P = surface_point(uv, depth);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
 
   vec3 c;
   if (u_mode == MODE_MARBLE) {
-    // Alpha 1 marks the surface: the half-resolution blur averages it into coverage.
-    o_diffuse = vec4(marble_entering(P, N, V, L), 1.0);
+    // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
+    // cleared background, is no stone).
+    o_diffuse = vec4(marble_entering(P, N, V, L), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

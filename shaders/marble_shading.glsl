@@ -41,21 +41,37 @@ vec3 env_brdf_approx(vec3 F0, float roughness, float NoV) {
   return F0 * AB.x + AB.y;
 }
 
-// Percentage-closer filtering (Reeves et al. 1987) with the hardware's depth comparison:
-// each of the 4 taps is itself a bilinear 2x2 comparison, so 16 texels are weighed in all.
-// The point is first pushed out along its normal, against self-shadow acne.
-float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
+// Where P is looked up in the light's depth map: texture coordinates and the depth to compare,
+// or false outside the map (nothing there casts a shadow). The point is first pushed out along
+// its normal, against self-shadow acne.
+bool shadow_lookup(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out vec3 uvz) {
   vec4 clip = light_view_proj * vec4(P + N * (2.0 * texel_world), 1.0);
   vec3 ndc = clip.xyz / clip.w;
-  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;
-  vec3 uvz = ndc * 0.5 + 0.5;
+  uvz = ndc * 0.5 + 0.5;
   uvz.z -= 1e-4;
+  return all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
+}
+
+// Percentage-closer filtering (Reeves et al. 1987) with the hardware's depth comparison:
+// each of the 4 taps is itself a bilinear 2x2 comparison, so 16 texels are weighed in all.
+float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
+  vec3 uvz;
+  if (!shadow_lookup(P, N, light_view_proj, texel_world, uvz)) return 1.0;
   vec2 texel = 1.0 / vec2(textureSize(u_light_shadow, 0));
   float lit = texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, -0.5) * texel, uvz.z)) +
               texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, -0.5) * texel, uvz.z)) +
               texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, 0.5) * texel, uvz.z)) +
               texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, 0.5) * texel, uvz.z));
   return lit * 0.25;
+}
+
+// One bilinear 2x2 comparison: a quarter of pcf_visibility's cost, with an edge one texel
+// narrower. The post pass shadows the reflected light with it -- the highlight, already
+// shaped by the GGX lobe -- where the four taps were a third of the pass's time on llvmpipe.
+float bilinear_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
+  vec3 uvz;
+  if (!shadow_lookup(P, N, light_view_proj, texel_world, uvz)) return 1.0;
+  return texture(u_light_shadow, uvz);
 }
 
 // --- procedural studio environment (no file needed) ---
@@ -72,15 +88,21 @@ vec3 studio_background(vec3 d) {
   return mix(vec3(0.02), vec3(0.12, 0.12, 0.13), smoothstep(-0.4, 0.7, d.y));
 }
 // Radiance seen along d, blurred over `blur` radians (a stand-in for prefiltering by
-// roughness). Widening a box keeps its power: radiance scales by (r / (r + blur))^2.
-vec3 studio_radiance(vec3 d, float blur) {
+// roughness); blur_cs = (cos(blur), sin(blur)), given by the caller, which has them once per
+// frame. Widening a box keeps its power: radiance scales by (r / (r + blur))^2.
+vec3 studio_radiance(vec3 d, float blur, vec2 blur_cs) {
   vec3 c = studio_background(d);
   for (int i = 0; i < SOFTBOXES; ++i) {
     Softbox b = softbox(i);
     float r = b.radius;
     float k = r / (r + blur);
     // Compared in cosine space (no acos per pixel): inside the box's cone, fading at its edge.
-    c += b.radiance * k * k * smoothstep(cos(r + 0.02 + blur), cos(max(r - 0.02 - blur, 0.0)), dot(d, b.axis));
+    // The cone's edges cos(r + 0.02 + blur) and cos(max(r - 0.02 - blur, 0)) by the angle-sum
+    // identities, so the only trigonometry is the compile-time cos and sin of r +- 0.02
+    // (llvmpipe evaluates cos() per pixel, uniform argument or not).
+    float outer = cos(r + 0.02) * blur_cs.x - sin(r + 0.02) * blur_cs.y;
+    float inner = blur >= r - 0.02 ? 1.0 : cos(r - 0.02) * blur_cs.x + sin(r - 0.02) * blur_cs.y;
+    c += b.radiance * k * k * smoothstep(outer, inner, dot(d, b.axis));
   }
   return c;
 }

@@ -14,7 +14,6 @@ in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
 layout(binding = 2) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
-layout(binding = 3) uniform sampler2D u_entering;  // marble: entering light, full resolution
 layout(binding = 4) uniform sampler2D u_albedo;
 layout(binding = 5) uniform sampler2D u_normal;
 layout(binding = 6) uniform sampler2DShadow u_light_shadow;
@@ -24,6 +23,7 @@ const int u_compose_marble = COMPOSE_MARBLE;
 uniform int u_output_linear;      // 1: the linear HDR image with coverage in alpha (--hdr)
 uniform int u_tone_map;
 uniform int u_paint_background;   // 0 for views that are not of the camera's G-buffer
+uniform int u_luma_alpha;         // 1: alpha holds the display colour's luma, for FXAA (else 1)
 uniform float u_exposure_scale;   // 2^exposure
 uniform vec3 u_background;
 uniform float u_ior;
@@ -33,6 +33,10 @@ uniform float u_env_intensity;
 #include "marble_shading.glsl"
 #include "environment.glsl"
 #include "marble_light.glsl"
+
+// FXAA's luma (fxaa.frag.glsl): Rec. 601 weights on the display-encoded values, computed
+// here once per pixel instead of nine or more times per pixel there.
+float fxaa_luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 
 // Khronos PBR Neutral tone mapper (Khronos 3D Commerce, 2024): keeps base colours within
 // [0, 0.8] as they are, compresses highlights, desaturates the brightest toward white.
@@ -64,11 +68,8 @@ vec3 marble_compose(float depth) {
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
-  float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  // Where no half-resolution neighbour on the same surface exists (thin slivers), the
-  // unblurred light.
-  vec4 b = upsample_blurred(u_blurred, ivec2(gl_FragCoord.xy), depth);
-  vec3 diffuse = b.a > 0.0 ? b.rgb : texture(u_entering, v_uv).rgb;
+  float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
+  vec3 diffuse = upsample_blurred(u_blurred, ivec2(gl_FragCoord.xy), depth);
   return diffuse * texture(u_albedo, v_uv).rgb +
          marble_reflected(N, V, L, E, visible, f0_from_ior(u_ior), u_roughness, u_env_intensity);
 }
@@ -88,5 +89,6 @@ void main() {
   if (u_tone_map == 1) c = srgb_encode(pbr_neutral(c * u_exposure_scale));
   // The background colour is a display colour: it is not tone mapped.
   if (u_paint_background == 1 && !surface) c = u_background;
-  o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
+  c = clamp(c, 0.0, 1.0);
+  o_color = vec4(c, u_luma_alpha == 1 ? fxaa_luma(c) : 1.0);
 }

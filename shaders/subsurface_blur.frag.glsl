@@ -6,19 +6,23 @@
 // its width on screen follows the millimetre scale and the surface's depth, and samples
 // across a silhouette (a depth jump, or the background) are left out.
 //
-// Both passes run at half resolution by default: the profile is smooth, so a quarter of the
-// pixels carry it (render.subsurface_resolution "full" runs them at full resolution). Blur
-// texel h stands for the full-resolution pixel h * scale: its depth decides whether it is
-// stone and which taps are on the same surface. Alpha is coverage (1 on stone, 0 on the
-// background) between the passes and the view depth after them, for the post pass's
-// depth-aware upsample (subsurface_common.glsl).
+// Both passes run at half resolution by default, as the lighting pass that feeds them: the
+// profile is smooth, so a quarter of the pixels carry it (render.subsurface_resolution "full"
+// runs them at full resolution). Blur texel h stands for the full-resolution pixel h * scale.
+// Alpha is that pixel's view depth (0: no stone) in the input, between the passes and after
+// them: it says which taps are on the same surface here and, in the post pass, which texels
+// the depth-aware upsample may use (subsurface_common.glsl). One read per tap, then: on
+// llvmpipe each texture read costs about as much over the frame as the rest of a tap.
+// Only the surface is shaded (its depth test: BlurDepthPass).
+#include "gbuffer.glsl"
 #include "subsurface_common.glsl"
 
 layout(location = 0) out vec4 o_color;
-layout(binding = 0) uniform sampler2D u_entering;  // full resolution (first pass) or half (second)
-uniform int u_input_full;          // 1: u_entering is full resolution
+// The lighting pass's entering light (first pass) or the first pass's result (second), at the
+// blur's resolution; alpha: view depth, 0 off the stone.
+layout(binding = 0) uniform sampler2D u_entering;
 uniform vec2 u_direction;          // (1,0) then (0,1)
-uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans on screen)
+uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans in texels)
 uniform float u_step_mm;           // spacing of the taps, mm (u_reach_mm / u_taps)
 uniform vec3 u_weights[10];        // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
 
@@ -26,34 +30,20 @@ const int MAX_TAPS = 9;            // kMaxTaps in subsurface_blur_pass.cpp
 
 void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);
-  float z = representative_depth(h);
-  if (z >= 1.0) {
-    o_color = vec4(0.0);  // background: no light, no coverage
-    return;
-  }
-  float depth = view_depth(z);
-  float reach_mm = u_reach_mm;
-  // Taps are read with bilinear filtering at fractional positions (a profile narrower than a
-  // texel still blurs a little, as it should), in the input's own texels. Alpha is coverage
-  // (the background is cleared to 0), so a tap half on the background counts half.
-  int k = u_input_full == 1 ? u_scale : 1;  // input pixels per blur texel
-  vec2 input_size = vec2(textureSize(u_entering, 0));
-  vec2 centre = vec2(h * k) + 0.5;  // the representative pixel, in input texels
-  float input_px_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale / k) * depth);
+  ivec2 last = textureSize(u_entering, 0) - 1;
+  float depth = texelFetch(u_entering, h, 0).a;
+  // Blur texels per mm at this depth; each tap is read at the texel nearest its distance (taps
+  // are at least a texel apart where the profile is widest, subsurfaceTaps).
+  float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {
-    vec2 p = centre + u_direction * (float(i) * u_step_mm * input_px_per_mm);
-    // The tap's depth: that of the full-resolution pixel its input texel stands for.
-    float zi = texelFetch(u_depth, ivec2(floor(p)) * (u_scale / k), 0).r;
-    if (zi >= 1.0) continue;
-    // Across a silhouette: the neighbour is more than the reach away in depth.
-    if (abs(view_depth(zi) - depth) * u_mm_per_unit > reach_mm) continue;
+    ivec2 t = clamp(h + ivec2(round(u_direction * (float(i) * u_step_mm * texels_per_mm))), ivec2(0), last);
+    vec4 e = texelFetch(u_entering, t, 0);
+    // Off the stone, or across a silhouette (more than the reach away in depth): left out.
+    if (e.a <= 0.0 || abs(e.a - depth) * u_mm_per_unit > u_reach_mm) continue;
     vec3 w = u_weights[abs(i)];
-    vec4 e = texture(u_entering, p / input_size);
-    sum += w * e.rgb;  // premultiplied by coverage
-    weight += w * e.a;
+    sum += w * e.rgb;
+    weight += w;
   }
-  // Alpha: coverage (1) between the passes; after the second, the texel's view depth, which
-  // the post pass's depth-aware upsample compares (0 = background).
-  o_color = vec4(sum / max(weight, vec3(1e-8)), u_input_full == 1 ? 1.0 : depth);
+  o_color = depth > 0.0 ? vec4(sum / max(weight, vec3(1e-8)), depth) : vec4(0.0);
 }

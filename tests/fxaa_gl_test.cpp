@@ -10,6 +10,7 @@
 
 #include "gl_support.h"
 #include "marble/render/fxaa_pass.h"
+#include "marble/render/post_pass.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -40,16 +41,30 @@ struct Edge {
 
 void PrintTo(const Edge& e, std::ostream* os) { *os << e.angleDeg << " degrees"; }
 
-// GL's row order (row 0 at the bottom) throughout; grey values, RGBA8.
+// The display image's alpha as the post pass writes it for FXAA: the colour's luma.
+uint8_t lumaByte(const uint8_t* rgb) {
+  const float l = fxaaLuma(glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f);
+  return static_cast<uint8_t>(std::lround(std::clamp(l, 0.0f, 1.0f) * 255.0f));
+}
+
+// GL's row order (row 0 at the bottom) throughout; grey values, RGBA8, luma in alpha.
 std::vector<uint8_t> edgeImage(const Edge& e) {
   std::vector<uint8_t> px(static_cast<size_t>(kWidth) * kHeight * 4);
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       uint8_t* p = &px[(static_cast<size_t>(y) * kWidth + x) * 4];
       p[0] = p[1] = p[2] = e.aliased(x, y);
-      p[3] = 255;
+      p[3] = lumaByte(p);
     }
   return px;
+}
+
+// The colour channels alone (FXAA's output is opaque; its input carries luma in alpha).
+std::vector<uint8_t> rgbOf(const std::vector<uint8_t>& rgba) {
+  std::vector<uint8_t> rgb;
+  for (size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), rgba.begin() + static_cast<ptrdiff_t>(i),
+                                                         rgba.begin() + static_cast<ptrdiff_t>(i + 3));
+  return rgb;
 }
 
 struct FxaaFixture : ::testing::Test {
@@ -61,7 +76,7 @@ struct FxaaFixture : ::testing::Test {
     const gl::Texture input = gl::makeTexture2D(GL_RGBA8, kWidth, kHeight, GL_LINEAR);
     glTextureSubImage2D(input.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     OffscreenTarget target(kWidth, kHeight);
-    pass.run(0, input.id(), target.fbo(), kWidth, kHeight, ScreenRect{0, 0, kWidth, kHeight});
+    pass.run(input.id(), target.fbo(), kWidth, kHeight, ScreenRect{0, 0, kWidth, kHeight}, glm::vec3(0.0f));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     ImageRGBA8 out = target.read();
     flipRows(out);  // back to GL's order
@@ -133,20 +148,23 @@ TEST_F(FxaaFixture, AFlatPictureAndASoftGradientAreUnchanged) {
       p[0] = static_cast<uint8_t>(40 + x);  // one step per pixel: far below the contrast threshold
       p[1] = static_cast<uint8_t>(90 + y / 2);
       p[2] = 200;
-      p[3] = 255;
+      p[3] = lumaByte(p);
     }
-  EXPECT_EQ(run(px), px);
+  const std::vector<uint8_t> out = run(px);
+  EXPECT_EQ(rgbOf(out), rgbOf(px));
+  for (size_t i = 3; i < out.size(); i += 4) ASSERT_EQ(out[i], 255) << "opaque";
 }
 
-// The renderer filters only the object's rectangle and copies the rest: inside, the result
-// is the whole-frame filter's; outside, the input unchanged.
-TEST_F(FxaaFixture, ARectangleIsFilteredAsInTheWholeFrameAndTheRestIsCopied) {
+// The renderer filters only the object's rectangle, outside which the picture is background:
+// inside, the result is the whole-frame filter's; outside, the background, opaque.
+TEST_F(FxaaFixture, ARectangleIsFilteredAsInTheWholeFrameAndTheRestIsBackground) {
   const std::vector<uint8_t> px = edgeImage(Edge{30.0, 1.0});
   const std::vector<uint8_t> whole = run(px);
   OffscreenTarget display(kWidth, kHeight), target(kWidth, kHeight);
   glTextureSubImage2D(display.texture(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
   const ScreenRect rect{20, 10, 40, 30};
-  pass.run(display.fbo(), display.texture(), target.fbo(), kWidth, kHeight, rect);
+  const glm::vec3 background(0.2f, 0.4f, 0.6f);
+  pass.run(display.texture(), target.fbo(), kWidth, kHeight, rect, background);
   ImageRGBA8 out = target.read();
   flipRows(out);
   int filteredInside = 0;
@@ -154,9 +172,14 @@ TEST_F(FxaaFixture, ARectangleIsFilteredAsInTheWholeFrameAndTheRestIsCopied) {
     for (int x = 0; x < kWidth; ++x) {
       const size_t i = (static_cast<size_t>(y) * kWidth + x) * 4;
       const bool inside = x >= rect.x && x < rect.x + rect.width && y >= rect.y && y < rect.y + rect.height;
-      const auto& expected = inside ? whole : px;
-      EXPECT_EQ(out.pixels[i], expected[i]) << x << "," << y << (inside ? " inside" : " outside");
-      filteredInside += inside && whole[i] != px[i];
+      if (inside) {
+        EXPECT_EQ(out.pixels[i], whole[i]) << x << "," << y << " inside";
+        filteredInside += whole[i] != px[i];
+      } else {
+        EXPECT_EQ(out.pixels[i], 51) << x << "," << y << " outside";  // 0.2 x 255
+        EXPECT_EQ(out.pixels[i + 2], 153);
+      }
+      EXPECT_EQ(out.pixels[i + 3], 255) << x << "," << y << " opaque";
     }
   EXPECT_GT(filteredInside, 10) << "the edge crosses the rectangle";
 }

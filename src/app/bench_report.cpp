@@ -27,6 +27,7 @@ void row(const char* label, const std::vector<double>& values, const std::string
 void printBenchTable(const BenchResult& r) {
   std::printf("marble bench: %s, %dx%d, mode %s, motion %s, %d frames after %d warm-up\n", r.input.c_str(), r.width,
               r.height, r.mode.c_str(), r.motion.c_str(), r.frames, r.warmup);
+  if (r.passTiming == "serial") std::printf("passes serialized (--serial-passes): each timed by the wall clock\n");
   std::printf("GL: %s; %s\n", r.glRenderer.c_str(), r.glVersion.c_str());
   std::printf("triangles %zu, mesh load %.1f ms, upload %.1f ms\n\n", r.triangles, r.loadMs, r.uploadMs);
   std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
@@ -50,6 +51,7 @@ void printBenchJson(const BenchResult& r) {
   j["mode"] = r.mode;
   j["motion"] = r.motion;
   j["frames"] = r.frames;
+  j["pass_timing"] = r.passTiming;
   j["warmup"] = r.warmup;
   j["triangles"] = r.triangles;
   j["frame_ms_median"] = rounded(frame.median);

@@ -18,6 +18,7 @@ struct BenchResult {
   std::string input;        // what was benchmarked, as the user named it
   int width = 0, height = 0;
   std::string mode, motion;
+  std::string passTiming = "gpu-queries";  // or "serial" (--serial-passes)
   int frames = 0, warmup = 0;
   size_t triangles = 0;
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)

@@ -75,6 +75,9 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
   cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");
   cmd.add_flag("--json", o.json, "Print one JSON object instead of the table");
+  cmd.add_flag("--serial-passes", o.serialPasses,
+               "Finish each pass before the next and time it by the wall clock (whole cost of each pass, "
+               "vertex work included; frames get slower)");
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -91,6 +94,7 @@ int runBenchCommand(const BenchOptions& o) {
     r.motion = benchMotionName(motion);
     r.frames = o.frames;
     r.warmup = o.warmup;
+    if (o.serialPasses) r.passTiming = "serial";
 
     double t0 = wallMs();
     const Mesh mesh = loadSceneMesh(base);
@@ -101,6 +105,7 @@ int runBenchCommand(const BenchOptions& o) {
     HeadlessContext context;
     r.glRenderer = context.renderer();
     r.glVersion = glString(GL_VERSION);
+    PassTimer::setSerialized(o.serialPasses);
     Renderer renderer(std::move(shaders));
     t0 = wallMs();
     renderer.setMesh(mesh);

@@ -15,6 +15,7 @@ struct BenchOptions {
   int warmup = 3;
   std::string motion = "none";
   bool json = false;
+  bool serialPasses = false;  // --serial-passes
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);

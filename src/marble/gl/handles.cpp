@@ -27,9 +27,17 @@ void setMeshPassState() {
 
 void setScreenPassState() {
   glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
+}
+
+void setSurfaceOnlyScreenPassState() {
+  setScreenPassState();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);  // the triangle lies on the far plane (depth 1): passes where d < 1
+  glDepthMask(GL_FALSE);    // nothing written, so sampling the same depth texture is defined
 }
 
 void drawFullscreenTriangle(GLuint program, GLuint emptyVao) {

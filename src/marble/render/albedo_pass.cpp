@@ -25,13 +25,15 @@ void AlbedoPass::compileAll() {
     }
 }
 
-void AlbedoPass::resize(int width, int height) {
-  if (width == width_ && height == height_ && fbo_) return;
+void AlbedoPass::resize(int width, int height, GLuint depthTexture) {
+  if (width == width_ && height == height_ && depthTexture == depth_ && fbo_) return;
   width_ = width;
   height_ = height;
+  depth_ = depthTexture;
   albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  gl::attachSurfaceDepth(fbo_.id(), depthTexture);
 }
 
 void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
@@ -39,7 +41,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
-  gl::setScreenPassState();
+  gl::setSurfaceOnlyScreenPassState();
   const float zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
   scissorTo(rect);

@@ -14,8 +14,9 @@ namespace marble {
 class AlbedoPass {
 public:
   explicit AlbedoPass(const ShaderLibrary& shaders);
-  void resize(int width, int height);
-  // Draws inside `rect` (the mesh's screen rectangle); the rest is cleared to zero.
+  // `depthTexture`: the G-buffer's, of the same size (its depth test limits the pass to the surface).
+  void resize(int width, int height, GLuint depthTexture);
+  // Draws the surface inside `rect` (the mesh's screen rectangle); the rest is cleared to zero.
   void run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
            const Material& material, const ScreenRect& rect);
   GLuint albedoTexture() const { return albedo_.id(); }
@@ -31,6 +32,7 @@ private:
   gl::Texture albedo_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
+  GLuint depth_ = 0;
   PassTimer timer_;
 };
 

@@ -1,6 +1,7 @@
 #include "marble/render/environment_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace marble {
@@ -49,6 +50,11 @@ int environmentKind(const RenderSettings& settings, const EnvironmentMap* map) {
 
 std::string environmentDefine(const RenderSettings& settings, const EnvironmentMap* map) {
   return "ENV_KIND " + std::to_string(environmentKind(settings, map));
+}
+
+void setStudioBlurUniform(const gl::Program& program, float roughness) {
+  const float blur = kStudioBlurPerRoughness * roughness;
+  program.set("u_studio_blur_cs", glm::vec2(std::cos(blur), std::sin(blur)));
 }
 
 void setEnvironmentUniforms(const gl::Program& p, const RenderSettings& settings, const EnvironmentMap* map) {

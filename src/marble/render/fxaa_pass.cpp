@@ -14,17 +14,19 @@ FxaaPass::FxaaPass(const ShaderLibrary& shaders)
   program_.set("u_search_steps", kSearchSteps);
 }
 
-void FxaaPass::run(GLuint displayFbo, GLuint displayImage, GLuint targetFbo, int width, int height,
-                   const ScreenRect& rect) {
+void FxaaPass::run(GLuint displayImage, GLuint targetFbo, int width, int height, const ScreenRect& rect,
+                   const glm::vec3& background) {
   timer_.begin();
   gl::setScreenPassState();
-  // llvmpipe runs the whole edge search for every pixel it shades (both sides of every branch),
-  // so flat areas are copied instead of filtered.
-  if (rect.x > 0 || rect.y > 0 || rect.width < width || rect.height < height)
-    glBlitNamedFramebuffer(displayFbo, targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
   glViewport(0, 0, width, height);
+  // llvmpipe runs the whole edge search for every pixel it shades (both sides of every branch),
+  // so the flat background around the rectangle is cleared instead of filtered.
+  if (rect.x > 0 || rect.y > 0 || rect.width < width || rect.height < height) {
+    const glm::vec4 clear(background, 1.0f);
+    scissorTo({0, 0, width, height});  // the target may be larger than the frame
+    glClearBufferfv(GL_COLOR, 0, &clear.x);
+  }
   scissorTo(rect);
   glBindTextureUnit(0, displayImage);
   program_.set("u_texel", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));

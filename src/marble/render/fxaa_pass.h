@@ -11,10 +11,12 @@ namespace marble {
 class FxaaPass {
 public:
   explicit FxaaPass(const ShaderLibrary& shaders);
-  // `displayImage`: the picture as displayed (RGBA8, sRGB-encoded), width x height, filtered
-  // GL_LINEAR and clamped to its edge (the search reads between texels).
-  // Only `rect` is filtered; the rest of the image is copied to the target unchanged.
-  void run(GLuint displayFbo, GLuint displayImage, GLuint targetFbo, int width, int height, const ScreenRect& rect);
+  // `displayImage`: the picture as displayed (RGBA8, sRGB-encoded, its luma in alpha), width x
+  // height, filtered GL_LINEAR and clamped to its edge (the search reads between texels).
+  // Only `rect` is filtered; outside it the image holds nothing but `background` (the post
+  // pass's clear), which the target is cleared to (opaque: the luma in alpha stays behind).
+  void run(GLuint displayImage, GLuint targetFbo, int width, int height, const ScreenRect& rect,
+           const glm::vec3& background);
   PassTimer& timer() { return timer_; }
 
 private:

@@ -22,19 +22,28 @@ void LightingPass::compileAll() {
         programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind)));
 }
 
-void LightingPass::resize(int width, int height) {
-  if (width == width_ && height == height_ && fbo_) return;
+void LightingPass::resize(int width, int height, int enteringScale, GLuint depthTexture, GLuint enteringDepth) {
+  if (width == width_ && height == height_ && enteringScale == enteringScale_ && depthTexture == depth_ &&
+      enteringDepth == enteringDepth_ && fbo_)
+    return;
+  enteringDepth_ = enteringDepth;
   width_ = width;
   height_ = height;
+  enteringScale_ = enteringScale;
+  enteringWidth_ = (width + enteringScale - 1) / enteringScale;  // rounded up, as the blur's
+  enteringHeight_ = (height + enteringScale - 1) / enteringScale;
+  depth_ = depthTexture;
   hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
-  entering_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+  entering_ = gl::makeTexture2D(GL_RGBA16F, enteringWidth_, enteringHeight_, GL_LINEAR);
   // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+  gl::attachSurfaceDepth(fbo_.id(), depthTexture);
   enteringFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
   const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
   glNamedFramebufferDrawBuffers(enteringFbo_.id(), 2, bufs);
+  gl::attachSurfaceDepth(enteringFbo_.id(), enteringDepth);
 }
 
 // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).
@@ -48,15 +57,21 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   const RenderSettings& settings = scene.render;
   const bool marble = settings.mode == RenderMode::Marble;
   const GLuint fbo = marble ? enteringFbo_.id() : fbo_.id();
+  const bool wholeFrame = settings.mode == RenderMode::LightDepth;  // the light's own map, shown whole
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glViewport(0, 0, width_, height_);
-  gl::setScreenPassState();
-  // Outside the rectangle there is no surface: zero light.
+  glViewport(0, 0, marble ? enteringWidth_ : width_, marble ? enteringHeight_ : height_);
+  if (wholeFrame)
+    gl::setScreenPassState();
+  else
+    gl::setSurfaceOnlyScreenPassState();
+  // Outside the rectangle, and on the background, there is no surface: zero light.
   const float zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
-  // The light's own map is shown whole; every other output only where the mesh can be.
-  if (settings.mode != RenderMode::LightDepth) scissorTo(rect);
+  if (marble)
+    scissorTo(scaledDown(rect, enteringScale_));
+  else if (!wholeFrame)
+    scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(0, 5, textures);
   const int envKind = environmentKind(settings, environment);
@@ -79,6 +94,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);
+  p.set("u_scale", marble ? enteringScale_ : 1);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();

@@ -2,7 +2,8 @@
 // Pass 3: screen space. Reads the G-buffer and the light's distance map; writes the render
 // mode's picture, linear and unclamped, into its own RGBA16F target (read by PostPass and by
 // `--hdr`) -- or, for `marble`, the light entering the stone (read by the subsurface blur and
-// the post pass, which adds the reflected light).
+// the post pass, which adds the reflected light), at the blur's resolution (half by default):
+// the blur spreads it over millimetres, so a quarter of the pixels carry it.
 #include "marble/gl/program_variants.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
@@ -19,15 +20,21 @@ struct LightingInputs {
 class LightingPass {
 public:
   explicit LightingPass(const ShaderLibrary& shaders);
-  void resize(int width, int height);
-  // Draws inside `rect` only (everything else is cleared to zero), except the light-depth view.
+  // `enteringScale`: full-resolution pixels per texel of the entering light (the blur's, 1 or 2);
+  // `depthTexture`: the G-buffer's, `enteringDepth`: the one of the entering light's resolution
+  // (BlurDepthPass): their depth test limits the pass to the surface.
+  void resize(int width, int height, int enteringScale, GLuint depthTexture, GLuint enteringDepth);
+  // Draws the surface inside `rect` only (everything else is cleared to zero), except the
+  // light-depth view, which shows the light's map whole.
   void run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            const Material& material, const Scene& scene, float lightTexelWorld, const ScreenRect& rect,
            const EnvironmentMap* environment);  // used when the scene asks for a map; null: none loaded
   GLuint hdrTexture() const { return hdr_.id(); }  // every mode but `marble`: the picture
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
   GLuint fbo() const { return fbo_.id(); }  // hdrTexture's
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
+  size_t bytes() const {
+    return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>(enteringWidth_) * enteringHeight_ * 8;
+  }
   PassTimer& timer() { return timer_; }
   // Compiles the program of every mode now (after a shader reload).
   void compileAll();
@@ -37,7 +44,8 @@ private:
   gl::ProgramVariants programs_;
   gl::Texture hdr_, entering_;
   gl::Framebuffer fbo_, enteringFbo_;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, enteringWidth_ = 0, enteringHeight_ = 0, enteringScale_ = 0;
+  GLuint depth_ = 0, enteringDepth_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
 };

@@ -8,6 +8,12 @@ OffscreenTarget::OffscreenTarget(int width, int height, GLenum internalFormat)
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
 }
 
+void OffscreenTarget::attachDepth(GLuint depthTexture) {
+  if (depthTexture == depth_) return;
+  depth_ = depthTexture;
+  gl::attachSurfaceDepth(fbo_.id(), depthTexture);
+}
+
 ImageRGBA8 OffscreenTarget::read() const {
   ImageRGBA8 img{width_, height_, std::vector<uint8_t>(static_cast<size_t>(width_) * height_ * 4)};
   glNamedFramebufferReadBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);

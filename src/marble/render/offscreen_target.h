@@ -16,11 +16,15 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   ImageRGBA8 read() const;  // top row first; RGBA8 targets only
+  // Gives the framebuffer `depthTexture` (of the same size) as its depth buffer, for a pass
+  // limited to the surface (gl::setSurfaceOnlyScreenPassState). Re-attaching the same one does nothing.
+  void attachDepth(GLuint depthTexture);
 
 private:
   int width_, height_;
   gl::Texture color_;
   gl::Framebuffer fbo_;
+  GLuint depth_ = 0;
 };
 
 }  // namespace marble

@@ -2,8 +2,9 @@
 // Last pass: linear HDR light to the target framebuffer. For `marble` it also composes the
 // frame (the subsurface-blurred light times the albedo, plus the reflected light: GGX and the
 // environment), then exposes, tone maps (Khronos PBR Neutral) and sRGB-encodes it; the
-// paper's modes and the buffer views pass through unchanged. It draws only inside the mesh's
-// screen rectangle; the rest of the target is cleared to the background colour.
+// paper's modes and the buffer views pass through unchanged. It draws only the surface inside
+// the mesh's screen rectangle (the target has the G-buffer's depth attached:
+// gl::setSurfaceOnlyScreenPassState); the rest of the target is cleared to the background colour.
 #include "marble/gl/program_variants.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
@@ -17,7 +18,7 @@ struct PostInputs {
   GLuint hdr = 0;    // every mode but `marble`: the lighting pass's picture
   GLuint depth = 0;  // the G-buffer's depth (where the background is)
   // `marble` only:
-  GLuint blurred = 0, entering = 0, albedo = 0, normal = 0, lightShadow = 0;
+  GLuint blurred = 0, albedo = 0, normal = 0, lightShadow = 0;
 };
 
 // The frame's camera and light (the `marble` composition needs them).
@@ -28,13 +29,19 @@ struct PostView {
   const EnvironmentMap* environment;  // the loaded map, or null
 };
 
+// FXAA's luma of a display colour (fxaa_luma in post.frag.glsl).
+float fxaaLuma(const glm::vec3& displayColor);
+
 class PostPass {
 public:
   explicit PostPass(const ShaderLibrary& shaders);
-  // linearOutput: write the linear HDR picture (coverage in alpha) instead of the display
-  // picture -- what `--hdr` saves, composed by the same code as what is shown.
+  // What the pass writes: the display picture (alpha 1), the display picture with its luma in
+  // alpha (what FXAA reads), or the linear HDR picture with coverage in alpha -- what `--hdr`
+  // saves, composed by the same code as what is shown.
+  enum class Output { Display, DisplayWithLuma, Linear };
+  // targetFbo: of the frame's size, with the G-buffer's depth attached (OffscreenTarget::attachDepth).
   void run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width, int height,
-           const ScreenRect& rect, bool linearOutput = false);
+           const ScreenRect& rect, Output output);
   PassTimer& timer() { return timer_; }
   void compileAll();
 

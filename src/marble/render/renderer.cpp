@@ -7,10 +7,11 @@ namespace marble {
 
 struct Renderer::Passes {
   explicit Passes(const ShaderLibrary& s)
-      : lightDepth(s), geometry(s), albedo(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
+      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   AlbedoPass albedo;
+  BlurDepthPass blurDepth;
   LightingPass lighting;
   SubsurfaceBlurPass blur;
   PostPass post;
@@ -92,7 +93,7 @@ void Renderer::reloadShaders() {
 void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
-  times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = false;
+  times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
@@ -116,7 +117,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const ScreenRect rect =
       projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
   if (viewMoved || !samePattern(scene.material, lastMaterial_)) {
-    passes_->albedo.resize(width, height);
+    passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
                         scene.material, rect);
     times_.albedoRan = true;
@@ -134,14 +135,23 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
                                (scene.render.mode == RenderMode::Marble || !times_.albedoRan);
   const bool marble = scene.render.mode == RenderMode::Marble;
   if (!lightingCurrent) {
+    const int scale = subsurfaceScale(scene.render);
+    if (marble) {
+      const bool remade = passes_->blurDepth.resize(width, height, scale, passes_->geometry.depthTexture());
+      if (remade || viewMoved || !blurDepthValid_) {
+        passes_->blurDepth.run(rect);
+        blurDepthValid_ = true;
+        times_.blurDepthRan = scale != 1;
+      }
+    }
     const LightingInputs in{passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
                             passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture()};
-    passes_->lighting.resize(width, height);
+    passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(), passes_->blurDepth.depthTexture());
     passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect, environment());
     if (marble) {
-      passes_->blur.resize(width, height, subsurfaceScale(scene.render));
-      passes_->blur.run({passes_->lighting.enteringTexture(), passes_->geometry.depthTexture()}, camera, scene, height,
+      passes_->blur.resize(width, height, scale, passes_->blurDepth.depthTexture());
+      passes_->blur.run({passes_->lighting.enteringTexture()}, camera, scene, height,
                         rect);
     }
     times_.lightingRan = true;
@@ -154,26 +164,34 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastRect_ = rect;
   lastLightTexelWorld_ = lightTexelWorld;
 
-  // Antialiasing: the post pass writes the display image (resized with the frame), FXAA takes
-  // it to the target.
+  // The post pass writes the display image (resized with the frame); FXAA or a copy takes it
+  // to the target.
   const bool fxaa = scene.render.antialias == Antialias::Fxaa;
-  if (fxaa && (!displayImage_ || displayImage_->width() != width || displayImage_->height() != height))
-    displayImage_.emplace(width, height);
-  if (!fxaa) displayImage_.reset();
-  const GLuint postTarget = fxaa ? displayImage_->fbo() : targetFbo;
-  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment()}, postTarget, width, height, rect);
-  if (fxaa) {
+  OffscreenTarget& display = surfaceTarget(displayImage_, width, height, GL_RGBA8);
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment()}, display.fbo(), width, height,
+                    rect, fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display);
+  if (!fxaa) {
+    glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+  } else {
     // FXAA changes nothing on flat background: outside the object's rectangle (grown by the
     // filter's reach) the display image is copied as it is.
     const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;
     const ScreenRect aaRect = wholeFrame ? ScreenRect{0, 0, width, height} : grown(rect, 4, width, height);
-    passes_->fxaa.run(displayImage_->fbo(), displayImage_->texture(), targetFbo, width, height, aaRect);
+    passes_->fxaa.run(display.texture(), targetFbo, width, height, aaRect, glm::clamp(scene.render.background, 0.0f, 1.0f));
   }
+}
+
+OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height,
+                                         GLenum format) {
+  if (!target || target->width() != width || target->height() != height) target.emplace(width, height, format);
+  target->attachDepth(passes_->geometry.depthTexture());
+  return *target;
 }
 
 PostInputs Renderer::postInputs() const {
   return {passes_->lighting.hdrTexture(),      passes_->geometry.depthTexture(), passes_->blur.resultTexture(),
-          passes_->lighting.enteringTexture(), passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
+          passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
           passes_->lightDepth.depthTexture()};
 }
 
@@ -187,12 +205,13 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.postMs = get(passes_->post.timer());
   times_.floorMs = get(passes_->floor.timer());
   times_.fxaaMs = get(passes_->fxaa.timer());
+  times_.blurDepthMs = get(passes_->blurDepth.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
+         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0);
 }
 
@@ -201,13 +220,12 @@ ImageRGBF Renderer::readHdr() {
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   if (!geometryValid_ || w <= 0 || h <= 0) return img;
   // The last frame once more, through the same post pass, into a float target, linear.
-  if (!hdrReadback_ || hdrReadback_->width() != w || hdrReadback_->height() != h)
-    hdrReadback_.emplace(w, h, GL_RGBA32F);
-  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment()}, hdrReadback_->fbo(), w,
-                    h, lastRect_, /*linearOutput=*/true);
+  OffscreenTarget& readback = surfaceTarget(hdrReadback_, w, h, GL_RGBA32F);
+  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment()},
+                    readback.fbo(), w, h, lastRect_, PostPass::Output::Linear);
   // RGB: linear light; A: coverage (the post pass writes 1 on the object, 0 elsewhere).
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, hdrReadback_->fbo());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, readback.fbo());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
   img.alpha.resize(static_cast<size_t>(w) * h);

@@ -14,13 +14,13 @@
 
 #include "marble/gl/shader_library.h"
 #include "marble/render/albedo_pass.h"
+#include "marble/render/blur_depth_pass.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/floor_pass.h"
 #include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_depth_pass.h"
-#include "marble/render/offscreen_target.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
@@ -32,8 +32,8 @@ namespace marble {
 
 struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
-         fxaaMs = 0;
-  bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false;
+         fxaaMs = 0, blurDepthMs = 0;
+  bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
 };
 
 class Renderer {
@@ -66,7 +66,7 @@ public:
   size_t glBytes() const;
 
   // Forget cached passes (the next frame runs all of them).
-  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = false; }
+  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = false; }
 
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
@@ -87,6 +87,7 @@ private:
   Material lastMaterial_{};
   // The lighting (and blur) result is reused when none of its inputs changed.
   bool lightingValid_ = false;
+  bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's
   Scene lastLightingScene_{};
   // The last frame, for readHdr.
   int lastWidth_ = 0, lastHeight_ = 0;
@@ -96,8 +97,11 @@ private:
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  // `target`, (re)made at this size and format, with the G-buffer's depth attached.
+  OffscreenTarget& surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height, GLenum format);
   const EnvironmentMap* environment() const { return environment_ ? &*environment_ : nullptr; }
-  // With antialiasing on, the post pass writes this display image and FXAA reads it.
+  // The post pass writes this display image (with the G-buffer's depth, so it shades only the
+  // surface); FXAA, or a copy, takes it to the target.
   std::optional<OffscreenTarget> displayImage_;
 };
 

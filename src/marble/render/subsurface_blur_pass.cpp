@@ -8,8 +8,8 @@ namespace marble {
 namespace {
 // Taps per side at most; keep in step with MAX_TAPS in subsurface_blur.frag.glsl.
 constexpr int kMaxTaps = 9;
-// Taps closer than this (in blur texels) would add nothing a bilinear read does not.
-constexpr float kTexelsPerTap = 0.5f;
+// Taps are read at whole texels (subsurface_blur.frag.glsl): closer than one would read the same texel twice.
+constexpr float kTexelsPerTap = 1.0f;
 }  // namespace
 
 glm::vec3 burleyShapeD(const Material& m) {
@@ -25,9 +25,10 @@ int subsurfaceScale(const RenderSettings& settings) {
   return settings.subsurface_resolution == SubsurfaceResolution::Half ? 2 : 1;
 }
 
-void SubsurfaceBlurPass::resize(int width, int height, int scale) {
+void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTexture) {
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;  // rounded up
-  if (w == width_ && h == height_ && resultFbo_) return;
+  if (w == width_ && h == height_ && depthTexture == depth_ && resultFbo_) return;
+  depth_ = depthTexture;
   width_ = w;
   height_ = h;
   horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
@@ -36,6 +37,8 @@ void SubsurfaceBlurPass::resize(int width, int height, int scale) {
   resultFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
   glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+  gl::attachSurfaceDepth(horizontalFbo_.id(), depthTexture);
+  gl::attachSurfaceDepth(resultFbo_.id(), depthTexture);
 }
 
 float subsurfaceReachMm(const Material& m) {
@@ -70,7 +73,7 @@ void setSubsurfaceUniforms(const gl::Program& p, const CameraMatrices& camera, c
 void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene,
                              int height, const ScreenRect& rect) {
   timer_.begin();
-  gl::setScreenPassState();
+  gl::setSurfaceOnlyScreenPassState();
   glViewport(0, 0, width_, height_);
   // The taps' weights: the 1D Burley profile exp(-x/d) + exp(-x/(3d)) at x = i * step, out to
   // 2 x the widest d -- with as many taps as that reach spans on screen (the dragon filling an
@@ -95,17 +98,13 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   glClearNamedFramebufferfv(horizontalFbo_.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(resultFbo_.id(), GL_COLOR, 0, zero);
   scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
-  const GLuint first[] = {in.entering, in.depth};
-  glBindTextures(0, 2, first);
+  glBindTextureUnit(0, in.entering);
   program_.set("u_direction", glm::vec2(1, 0));
-  program_.set("u_input_full", 1);
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
-  const GLuint second[] = {horizontal_.id(), in.depth};
-  glBindTextures(0, 2, second);
+  glBindTextureUnit(0, horizontal_.id());
   program_.set("u_direction", glm::vec2(0, 1));
-  program_.set("u_input_full", 0);
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   scissorOff();

@@ -1,7 +1,7 @@
 #pragma once
 // Screen-space subsurface scattering for the `marble` mode: two separable passes over the
-// light that entered the stone (shaders/subsurface_blur.frag.glsl), at half resolution, inside
-// the mesh's screen rectangle; alpha is coverage. The post pass upsamples it (depth-aware),
+// light that entered the stone (shaders/subsurface_blur.frag.glsl), at half resolution, on the
+// surface inside the mesh's screen rectangle; alpha is the view depth. The post pass upsamples it (depth-aware),
 // multiplies by the albedo and adds the reflected light.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
@@ -12,14 +12,15 @@
 namespace marble {
 
 struct SubsurfaceBlurInputs {
-  GLuint entering, depth;  // full resolution
+  GLuint entering;  // at the blur's resolution; alpha: view depth (0 off the stone)
 };
 
 class SubsurfaceBlurPass {
 public:
   explicit SubsurfaceBlurPass(const ShaderLibrary& shaders);
-  // The frame's size; the pass's targets are 1/scale of it (subsurfaceScale).
-  void resize(int width, int height, int scale);
+  // The frame's size; the pass's targets are 1/scale of it (subsurfaceScale). `depthTexture`:
+  // of that size (BlurDepthPass): its depth test limits the blur to the surface.
+  void resize(int width, int height, int scale, GLuint depthTexture);
   // `height`: the frame's (full-resolution) height; `rect`: the mesh's full-resolution rectangle.
   void run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene, int height,
            const ScreenRect& rect);
@@ -34,6 +35,7 @@ private:
   gl::Texture horizontal_, result_;
   gl::Framebuffer horizontalFbo_, resultFbo_;
   int width_ = 0, height_ = 0;
+  GLuint depth_ = 0;
   PassTimer timer_;
 };
 
@@ -50,7 +52,7 @@ int subsurfaceScale(const RenderSettings& settings);
 // How far the blur reaches each way, mm: 2 x the widest d.
 float subsurfaceReachMm(const Material& m);
 
-// Taps per side (1..9): enough that neighbours are at most half a blur texel apart where the
+// Taps per side (1..9): enough that neighbours are at most a blur texel apart where the
 // profile is widest on screen (`height`: the full-resolution frame's).
 int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height);
 

@@ -62,11 +62,11 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
 TEST(CliBench, MotionsRunThePassesTheyChange) {
   struct Case {
     const char* motion;
-    int lightDepth, geometry, albedo, lighting;
+    int lightDepth, geometry, albedo, lighting, blurDepth;
   };
-  for (const Case& c : {Case{"none", 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3}, Case{"light", 3, 0, 0, 3},
-                        Case{"both", 3, 3, 3, 3}, Case{"params", 0, 0, 0, 0}, Case{"scattering", 0, 0, 0, 3},
-                        Case{"pattern", 0, 0, 3, 0}}) {
+  for (const Case& c : {Case{"none", 0, 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3, 3}, Case{"light", 3, 0, 0, 3, 0},
+                        Case{"both", 3, 3, 3, 3, 3}, Case{"params", 0, 0, 0, 0, 0}, Case{"scattering", 0, 0, 0, 3, 0},
+                        Case{"pattern", 0, 0, 3, 0, 0}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
     EXPECT_EQ(j.value("motion", ""), c.motion);
@@ -74,10 +74,21 @@ TEST(CliBench, MotionsRunThePassesTheyChange) {
     EXPECT_EQ(j["pass_runs"].value("geometry", -1), c.geometry) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("albedo", -1), c.albedo) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("lighting", -1), c.lighting) << c.motion;
+    EXPECT_EQ(j["pass_runs"].value("blur_depth", -1), c.blurDepth) << c.motion << ": the blur's depth follows the view only";
     if (c.geometry == 0) {
       EXPECT_EQ(j["passes"].value("geometry", -1.0), 0.0) << "a cached pass costs nothing";
     }
   }
+}
+
+TEST(CliBench, SerialPassesAreTimedByTheWallClock) {
+  const auto j = benchJson("--motion camera --serial-passes");
+  EXPECT_EQ(j.value("pass_timing", ""), "serial");
+  for (const char* pass : {"geometry", "albedo", "blur_depth", "lighting", "subsurface_blur", "post", "fxaa"})
+    EXPECT_GT(j["passes"].value(pass, 0.0), 0.0) << pass << " runs every frame of an orbit";
+  EXPECT_EQ(benchJson("").value("pass_timing", ""), "gpu-queries");
+  EXPECT_FALSE(benchJson("--subsurface-resolution full")["passes"].contains("blur_depth"))
+      << "at full resolution the G-buffer's depth serves";
 }
 
 TEST(CliBench, FloorModeTimesTheFloorPass) {

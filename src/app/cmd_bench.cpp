@@ -33,13 +33,16 @@ std::string glString(GLenum name) {
   return s ? s : "";
 }
 
-// The passes a frame of these settings runs, in order. The subsurface blur exists only for
-// `marble`, FXAA only when antialiasing is on; the floor mode is one pass and nothing else.
+// The passes a frame of these settings runs, in order. The subsurface blur (and its depth
+// buffer, at half resolution) exists only for `marble`, FXAA only when antialiasing is on; the
+// floor mode is one pass and nothing else.
 std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
   if (settings.mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
-  std::vector<PassSeries> s = {
-      {"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"albedo", {}, 0, {}}, {"lighting", {}, 0, {}}};
-  if (settings.mode == RenderMode::Marble) s.push_back({"subsurface_blur", {}, 0, {}});
+  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"albedo", {}, 0, {}}};
+  const bool marble = settings.mode == RenderMode::Marble;
+  if (marble && settings.subsurface_resolution == SubsurfaceResolution::Half) s.push_back({"blur_depth", {}, 0, {}});
+  s.push_back({"lighting", {}, 0, {}});
+  if (marble) s.push_back({"subsurface_blur", {}, 0, {}});
   s.push_back({"post", {}, 0, {}});
   if (settings.antialias == Antialias::Fxaa) s.push_back({"fxaa", {}, 0, {}});
   return s;
@@ -59,6 +62,7 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
     if (p.name == "albedo") ran = t.albedoRan, ms = t.albedoMs;
+    if (p.name == "blur_depth") ran = t.blurDepthRan, ms = t.blurDepthMs;
     p.ms.push_back(ran ? ms : 0.0);
     if (ran) {
       ++p.runs;

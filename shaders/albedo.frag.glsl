@@ -5,13 +5,12 @@
 // re-runs alone when only the pattern changes.
 #include "gbuffer.glsl"
 #include "marble_pattern.glsl"
+#include "pattern_at_pixel.glsl"
 
 in vec2 v_uv;
 layout(location = 0) out vec4 o_albedo;
 layout(binding = 0) uniform sampler2D u_depth;
 layout(binding = 1) uniform sampler2D u_normal;
-uniform mat4 u_inv_model_view_proj;      // clip space -> the mesh's object space
-uniform mat3 u_world_to_object_normal;   // transpose of the model matrix's 3x3
 
 void main() {
   float z = texture(u_depth, v_uv).r;
@@ -19,7 +18,5 @@ void main() {
     o_albedo = vec4(0.0);
     return;
   }
-  vec4 p = u_inv_model_view_proj * vec4(vec3(v_uv, z) * 2.0 - 1.0, 1.0);
-  vec3 objectNormal = normalize(u_world_to_object_normal * decode_normal(texture(u_normal, v_uv).xy));
-  o_albedo = vec4(marble_albedo(p.xyz / p.w, objectNormal), 1.0);
+  o_albedo = vec4(albedo_at_pixel(v_uv, z, decode_normal(texture(u_normal, v_uv).xy)), 1.0);
 }

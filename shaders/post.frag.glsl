@@ -5,15 +5,32 @@
 // change of gloss re-runs this pass only); then exposure, the Khronos PBR Neutral tone map
 // and the sRGB transfer function. The paper's modes and the buffer views were never
 // colour-managed: they pass through as they are.
+//
+// The `marble` frame's diffuse part (blurred light x albedo) comes from one of three sources,
+// a constant of the program (DIFFUSE_SOURCE, chosen per frame by the renderer from what changed):
+//   0  the albedo changed (the view moved, or the pattern): the pattern is evaluated here, and
+//      the albedo and the diffuse part are also written out (o_albedo, o_diffuse) for later frames;
+//   1  the light changed, the albedo did not: the stored albedo, the diffuse part written out;
+//   2  neither changed (gloss, exposure, background): the stored diffuse part, one read.
+// On llvmpipe every texture read costs about as much over the frame as a simple pass's
+// arithmetic, and a pass of its own costs more: the albedo pass is not run for `marble`.
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
 #include "subsurface_common.glsl"
 
+#if COMPOSE_MARBLE == 1 && DIFFUSE_SOURCE == 0
+#include "marble_pattern.glsl"
+#include "pattern_at_pixel.glsl"
+#endif
+
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_diffuse;  // DIFFUSE_SOURCE 0 and 1: blurred light x albedo, linear
+layout(location = 2) out vec4 o_albedo;   // DIFFUSE_SOURCE 0: the pattern's colour
 layout(binding = 0) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
 layout(binding = 2) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
+layout(binding = 3) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
 layout(binding = 4) uniform sampler2D u_albedo;
 layout(binding = 5) uniform sampler2D u_normal;
 layout(binding = 6) uniform sampler2DShadow u_light_shadow;
@@ -61,25 +78,50 @@ vec3 srgb_encode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
-// The `marble` frame at a surface pixel: diffused light x albedo + reflected light.
+// A frame drawn from stored values must equal one that computed them: values are used as
+// their textures store them -- the albedo as 8-bit (RGBA8), the diffuse part as half floats
+// (RGBA16F), both rounded to nearest as the conversions on store are.
+vec3 as_stored_unorm8(vec3 v) { return roundEven(clamp(v, 0.0, 1.0) * 255.0) / 255.0; }
+vec3 as_stored_half(vec3 v) {
+  return vec3(unpackHalf2x16(packHalf2x16(v.rg)), unpackHalf2x16(packHalf2x16(vec2(v.b, 0.0))).x);
+}
+
+// The diffuse part at a surface pixel: the subsurface-blurred light x the albedo (see the top).
+vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
+#if DIFFUSE_SOURCE == 2
+  return texelFetch(u_diffuse, px, 0).rgb;
+#else
+#if DIFFUSE_SOURCE == 0
+  vec3 albedo = as_stored_unorm8(albedo_at_pixel(v_uv, depth, N));
+  o_albedo = vec4(albedo, 1.0);
+#else
+  vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
+#endif
+  vec3 d = as_stored_half(upsample_blurred(u_blurred, px, depth) * albedo);
+  o_diffuse = vec4(d, 1.0);
+  return d;
+#endif
+}
+
+// The `marble` frame at a surface pixel: the diffuse part + reflected light.
 vec3 marble_compose(float depth) {
+  ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 P = surface_point(v_uv, depth);
-  vec3 N = decode_normal(texture(u_normal, v_uv).xy);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  vec3 diffuse = upsample_blurred(u_blurred, ivec2(gl_FragCoord.xy), depth);
-  return diffuse * texture(u_albedo, v_uv).rgb +
+  return marble_diffuse(px, depth, N) +
          marble_reflected(N, V, L, E, visible, f0_from_ior(u_ior), u_roughness, u_env_intensity);
 }
 
 void main() {
-  float depth = texture(u_depth, v_uv).r;
+  float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) c = surface ? marble_compose(depth) : vec3(0.0);
-  else c = texture(u_hdr, v_uv).rgb;
+  else c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
   if (u_output_linear == 1) {
     // Coverage: where the camera saw the object. The light-depth view (no background to
     // paint) shows the light's map: all of it is content.

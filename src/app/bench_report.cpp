@@ -33,9 +33,12 @@ void printBenchTable(const BenchResult& r) {
   std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
   row("frame (wall)", r.frameMs);
   for (const auto& p : r.passes) {
-    const std::string label = "  " + p.name + " (GPU)";
+    const std::string label = "  " + p.name + (r.passTiming == "serial" ? " (wall)" : " (GPU)");
     row(label.c_str(), p.ms, std::to_string(p.runs) + "/" + std::to_string(r.frames));
   }
+  if (r.mode == "marble")
+    std::printf("  post's diffuse part from: the pattern %d, the stored albedo %d, stored %d (frames)\n",
+                r.diffuseSources[0], r.diffuseSources[1], r.diffuseSources[2]);
   row("CPU submit", r.cpuSubmitMs);
   row("CPU all threads", r.cpuProcessMs);
   std::printf("\nrss %.1f MiB (peak %.1f MiB), GL textures and buffers %.1f MiB\n", mib(r.rssBytes),
@@ -68,6 +71,9 @@ void printBenchJson(const BenchResult& r) {
   j["passes"] = passes;                  // median over all frames, 0 for a cached frame
   j["passes_when_run_ms"] = whenRun;     // median over the frames in which the pass ran
   j["pass_runs"] = runs;
+  if (r.mode == "marble")
+    j["post_diffuse_sources"] = {{"pattern", r.diffuseSources[0]}, {"stored_albedo", r.diffuseSources[1]},
+                                 {"stored", r.diffuseSources[2]}};
   j["cpu_submit_ms_median"] = rounded(spreadOf(r.cpuSubmitMs).median);
   j["cpu_process_ms_median"] = rounded(spreadOf(r.cpuProcessMs).median);
   j["rss_bytes"] = r.rssBytes;

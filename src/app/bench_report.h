@@ -2,6 +2,7 @@
 // What `marble bench` measured, and its two printed forms: a table for people, one JSON
 // object for machines (keys listed in docs/performance.md, "Frame benchmark").
 #include <cstddef>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct BenchResult {
   std::vector<double> cpuSubmitMs;   // CPU of the calling thread while the frame is submitted
   std::vector<double> cpuProcessMs;  // CPU of every thread of the process over the whole frame
   std::vector<PassSeries> passes;
+  // `marble`: frames whose post pass took the diffuse part from the pattern (evaluated there),
+  // the stored albedo, the stored diffuse part (DiffuseSource).
+  std::array<int, 3> diffuseSources{};
   size_t rssBytes = 0, peakRssBytes = 0, glBytes = 0;
 };
 

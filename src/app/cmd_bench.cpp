@@ -38,8 +38,11 @@ std::string glString(GLenum name) {
 // floor mode is one pass and nothing else.
 std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
   if (settings.mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
-  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}, {"albedo", {}, 0, {}}};
+  // `marble` has no albedo pass: its post pass evaluates the pattern when it changed
+  // (post_diffuse_sources counts how often).
   const bool marble = settings.mode == RenderMode::Marble;
+  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}};
+  if (!marble) s.push_back({"albedo", {}, 0, {}});
   if (marble && settings.subsurface_resolution == SubsurfaceResolution::Half) s.push_back({"blur_depth", {}, 0, {}});
   s.push_back({"lighting", {}, 0, {}});
   if (marble) s.push_back({"subsurface_blur", {}, 0, {}});
@@ -136,6 +139,7 @@ int runBenchCommand(const BenchOptions& o) {
       r.cpuSubmitMs.push_back(thread1 - thread0);
       r.cpuProcessMs.push_back(process1 - process0);
       recordPasses(r.passes, times);
+      if (times.diffuseSource >= 0) ++r.diffuseSources[static_cast<size_t>(times.diffuseSource)];
     }
     if (GLenum err = glGetError(); err != GL_NO_ERROR)
       throw EnvironmentError("OpenGL error " + std::to_string(err) + " while benchmarking");

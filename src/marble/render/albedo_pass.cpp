@@ -7,12 +7,23 @@ namespace marble {
 AlbedoPass::AlbedoPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "albedo.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  programs_.get(variantFor(Material{}));  // the default material's, so a broken shader shows at once
+  programs_.get(patternDefines(Material{}));  // the default material's, so a broken shader shows at once
 }
 
-std::vector<std::string> AlbedoPass::variantFor(const Material& m) {
+std::vector<std::string> patternDefines(const Material& m) {
   return {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
           "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+}
+
+uint32_t patternVariantKey(const Material& m) {
+  return static_cast<uint32_t>(m.basis) * 3u + static_cast<uint32_t>(m.mapping);
+}
+
+void setPatternUniforms(const gl::Program& p, const glm::mat4& model, const CameraMatrices& camera,
+                        const Material& material) {
+  p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
+  p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
+  applyPatternUniforms(p.id(), material);
 }
 
 void AlbedoPass::compileAll() {
@@ -21,7 +32,7 @@ void AlbedoPass::compileAll() {
       Material m;
       m.basis = b;
       m.mapping = p;
-      programs_.get(variantFor(m));
+      programs_.get(patternDefines(m));
     }
 }
 
@@ -47,12 +58,8 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
   glBindTextures(0, 2, textures);
-  const gl::Program& p = programs_.get(
-      static_cast<uint32_t>(material.basis) * 3u + static_cast<uint32_t>(material.mapping),
-      [&] { return variantFor(material); });
-  p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
-  p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
-  applyPatternUniforms(p.id(), material);
+  const gl::Program& p = programs_.get(patternVariantKey(material), [&] { return patternDefines(material); });
+  setPatternUniforms(p, model, camera, material);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();

@@ -11,6 +11,14 @@
 
 namespace marble {
 
+// The pattern's program variant (PAT_BASIS, PAT_MAPPING) and its key (0..5), for every pass
+// that evaluates the pattern.
+std::vector<std::string> patternDefines(const Material& m);
+uint32_t patternVariantKey(const Material& m);
+// The uniforms of shaders/pattern_at_pixel.glsl (the view) and of marble_pattern.glsl (the material).
+void setPatternUniforms(const gl::Program& program, const glm::mat4& model, const CameraMatrices& camera,
+                        const Material& material);
+
 class AlbedoPass {
 public:
   explicit AlbedoPass(const ShaderLibrary& shaders);
@@ -26,7 +34,6 @@ public:
   void compileAll();
 
 private:
-  static std::vector<std::string> variantFor(const Material& m);
   gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
   gl::Texture albedo_;

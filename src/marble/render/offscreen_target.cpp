@@ -8,10 +8,15 @@ OffscreenTarget::OffscreenTarget(int width, int height, GLenum internalFormat)
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
 }
 
-void OffscreenTarget::attachDepth(GLuint depthTexture) {
-  if (depthTexture == depth_) return;
-  depth_ = depthTexture;
-  gl::attachSurfaceDepth(fbo_.id(), depthTexture);
+void OffscreenTarget::attach(GLenum attachment, GLuint texture) {
+  for (auto& [point, id] : attached_)
+    if (point == attachment) {
+      if (id != texture) glNamedFramebufferTexture(fbo_.id(), attachment, texture, 0);
+      id = texture;
+      return;
+    }
+  glNamedFramebufferTexture(fbo_.id(), attachment, texture, 0);
+  attached_.emplace_back(attachment, texture);
 }
 
 ImageRGBA8 OffscreenTarget::read() const {

@@ -2,6 +2,9 @@
 // A colour framebuffer of a fixed size for headless rendering (RGBA8 unless told), with
 // read-back of the RGBA8 kind. Its texture is filtered GL_LINEAR and clamped, so a later pass
 // can sample it (FXAA does).
+#include <utility>
+#include <vector>
+
 #include "marble/core/image.h"
 #include "marble/gl/handles.h"
 
@@ -16,15 +19,17 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   ImageRGBA8 read() const;  // top row first; RGBA8 targets only
-  // Gives the framebuffer `depthTexture` (of the same size) as its depth buffer, for a pass
-  // limited to the surface (gl::setSurfaceOnlyScreenPassState). Re-attaching the same one does nothing.
-  void attachDepth(GLuint depthTexture);
+  // Attaches `texture` (of the same size) at `attachment` of the framebuffer, besides its own
+  // colour at GL_COLOR_ATTACHMENT0: e.g. the G-buffer's depth (GL_DEPTH_ATTACHMENT), for a
+  // pass limited to the surface (gl::setSurfaceOnlyScreenPassState). Re-attaching the same
+  // texture at the same place does nothing.
+  void attach(GLenum attachment, GLuint texture);
 
 private:
   int width_, height_;
   gl::Texture color_;
   gl::Framebuffer fbo_;
-  GLuint depth_ = 0;
+  std::vector<std::pair<GLenum, GLuint>> attached_;
 };
 
 }  // namespace marble

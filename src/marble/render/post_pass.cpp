@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "marble/render/albedo_pass.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
@@ -10,19 +11,54 @@ namespace marble {
 
 float fxaaLuma(const glm::vec3& displayColor) { return glm::dot(displayColor, glm::vec3(0.299f, 0.587f, 0.114f)); }
 
+namespace {
+std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource source, const Material& material) {
+  std::vector<std::string> d = {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", "ENV_KIND " + std::to_string(envKind),
+                                "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2)};
+  if (marble && source == DiffuseSource::Pattern)
+    for (std::string& p : patternDefines(material)) d.push_back(std::move(p));
+  return d;
+}
+}  // namespace
+
 PostPass::PostPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  programs_.get({"COMPOSE_MARBLE 1", environmentDefine(RenderSettings{}, nullptr)});  // a broken shader shows at once
+  // The default material's first frame, so a broken shader shows at once.
+  program(true, kEnvStudio, DiffuseSource::Pattern, Material{});
+}
+
+const gl::Program& PostPass::program(bool marble, int envKind, DiffuseSource source, const Material& material) {
+  const uint32_t s = marble ? static_cast<uint32_t>(source) : 2u;
+  const uint32_t pattern = marble && source == DiffuseSource::Pattern ? patternVariantKey(material) : 0u;
+  const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | pattern << 4;
+  return programs_.get(key, [&] { return variantDefines(marble, envKind, source, material); });
 }
 
 void PostPass::compileAll() {
-  for (const char* compose : {"COMPOSE_MARBLE 0", "COMPOSE_MARBLE 1"})
-    for (int kind : {kEnvStudio, kEnvMap}) programs_.get({compose, "ENV_KIND " + std::to_string(kind)});
+  for (int kind : {kEnvStudio, kEnvMap}) {
+    program(false, kind, DiffuseSource::Stored, Material{});
+    program(true, kind, DiffuseSource::Stored, Material{});
+    program(true, kind, DiffuseSource::StoredAlbedo, Material{});
+    for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
+      for (PatternMapping m : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
+        Material material;
+        material.basis = b;
+        material.mapping = m;
+        program(true, kind, DiffuseSource::Pattern, material);
+      }
+  }
+}
+
+void PostPass::resize(int width, int height) {
+  if (width == width_ && height == height_ && diffuse_) return;
+  width_ = width;
+  height_ = height;
+  diffuse_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_NEAREST);
 }
 
 void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width,
-                   int height, const ScreenRect& rect, Output output) {
+                   int height, const ScreenRect& rect, Output output, DiffuseSource source) {
   const bool linearOutput = output == Output::Linear;
   const RenderSettings& settings = scene.render;
   const bool marble = settings.mode == RenderMode::Marble;
@@ -44,13 +80,15 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     glClearBufferfv(GL_COLOR, 0, &clear.x);
     scissorTo(rect);
   }
-  const GLuint textures[] = {in.hdr, in.depth, in.blurred, 0, in.albedo, in.normal, in.lightShadow};  // unit 3 unused
+  // The outputs this source writes besides the picture (post.frag.glsl): the diffuse part at 1,
+  // the albedo at 2.
+  const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  const GLsizei outputs = !marble || source == DiffuseSource::Stored ? 1 : source == DiffuseSource::StoredAlbedo ? 2 : 3;
+  glNamedFramebufferDrawBuffers(targetFbo, outputs, all);
+  const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
   glBindTextures(0, 7, textures);
   const int envKind = environmentKind(settings, view.environment);
-  const gl::Program& p = programs_.get((marble ? 2u : 0u) + static_cast<uint32_t>(envKind), [&] {
-    return std::vector<std::string>{marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0",
-                                    "ENV_KIND " + std::to_string(envKind)};
-  });
+  const gl::Program& p = program(marble, envKind, source, scene.material);
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_luma_alpha", output == Output::DisplayWithLuma ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);
@@ -63,6 +101,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     p.set("u_roughness", scene.material.roughness);
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
+    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

@@ -21,12 +21,23 @@ struct PostInputs {
   GLuint blurred = 0, albedo = 0, normal = 0, lightShadow = 0;
 };
 
-// The frame's camera and light (the `marble` composition needs them).
+// The frame's camera and light (the `marble` composition needs them), and the model matrix
+// (for the pattern, DiffuseSource::Pattern).
 struct PostView {
   const CameraMatrices& camera;
   const LightMatrices& light;
   float lightTexelWorld;
   const EnvironmentMap* environment;  // the loaded map, or null
+  const glm::mat4& model;
+};
+
+// Where a `marble` frame's diffuse part (blurred light x albedo) comes from: DIFFUSE_SOURCE in
+// shaders/post.frag.glsl, which explains the choice. The renderer picks the cheapest one whose
+// inputs are current.
+enum class DiffuseSource {
+  Pattern = 0,       // the albedo changed: evaluated here, and written to the albedo texture
+  StoredAlbedo = 1,  // the light changed: the albedo texture's
+  Stored = 2,        // neither: the diffuse texture written by an earlier frame
 };
 
 // FXAA's luma of a display colour (fxaa_luma in post.frag.glsl).
@@ -39,15 +50,24 @@ public:
   // alpha (what FXAA reads), or the linear HDR picture with coverage in alpha -- what `--hdr`
   // saves, composed by the same code as what is shown.
   enum class Output { Display, DisplayWithLuma, Linear };
-  // targetFbo: of the frame's size, with the G-buffer's depth attached (OffscreenTarget::attachDepth).
+  // targetFbo: of the frame's size, with the G-buffer's depth attached (OffscreenTarget::attach)
+  // and, for `marble` from DiffuseSource Pattern or StoredAlbedo, diffuseTexture() at
+  // GL_COLOR_ATTACHMENT1 and (Pattern) the albedo texture at GL_COLOR_ATTACHMENT2, which the
+  // pass writes too.
   void run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width, int height,
-           const ScreenRect& rect, Output output);
+           const ScreenRect& rect, Output output, DiffuseSource source);
+  void resize(int width, int height);
+  GLuint diffuseTexture() const { return diffuse_.id(); }  // `marble`: blurred light x albedo, RGBA16F
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
   PassTimer& timer() { return timer_; }
   void compileAll();
 
 private:
+  const gl::Program& program(bool marble, int envKind, DiffuseSource source, const Material& material);
   gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
+  gl::Texture diffuse_;
+  int width_ = 0, height_ = 0;
   PassTimer timer_;
 };
 

@@ -116,10 +116,15 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   }
   const ScreenRect rect =
       projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
-  if (viewMoved || !samePattern(scene.material, lastMaterial_)) {
-    passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
+  const bool marble = scene.render.mode == RenderMode::Marble;
+  if (viewMoved || !samePattern(scene.material, lastMaterial_)) albedoValid_ = false;
+  passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
+  // `marble` evaluates the pattern in its post pass (DiffuseSource::Pattern); the other modes
+  // read the albedo in the lighting pass.
+  if (!albedoValid_ && !marble) {
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
                         scene.material, rect);
+    albedoValid_ = true;
     times_.albedoRan = true;
   }
   lastLight_ = light;
@@ -131,9 +136,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   // for `marble` -- on the albedo (a pattern change re-runs the albedo pass alone). The
   // other modes read the albedo in the lighting pass.
   const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !viewMoved &&
-                               sameLightingInputs(scene, lastLightingScene_) &&
-                               (scene.render.mode == RenderMode::Marble || !times_.albedoRan);
-  const bool marble = scene.render.mode == RenderMode::Marble;
+                               sameLightingInputs(scene, lastLightingScene_) && (marble || !times_.albedoRan);
   if (!lightingCurrent) {
     const int scale = subsurfaceScale(scene.render);
     if (marble) {
@@ -165,11 +168,21 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastLightTexelWorld_ = lightTexelWorld;
 
   // The post pass writes the display image (resized with the frame); FXAA or a copy takes it
-  // to the target.
+  // to the target. For `marble` it also writes what later frames can reuse: the diffuse part,
+  // and the albedo when it evaluated the pattern.
   const bool fxaa = scene.render.antialias == Antialias::Fxaa;
+  passes_->post.resize(width, height);
   OffscreenTarget& display = surfaceTarget(displayImage_, width, height, GL_RGBA8);
-  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment()}, display.fbo(), width, height,
-                    rect, fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display);
+  display.attach(GL_COLOR_ATTACHMENT1, passes_->post.diffuseTexture());
+  display.attach(GL_COLOR_ATTACHMENT2, passes_->albedo.albedoTexture());
+  const DiffuseSource source = !albedoValid_                            ? DiffuseSource::Pattern
+                               : times_.lightingRan || !diffuseValid_ ? DiffuseSource::StoredAlbedo
+                                                                      : DiffuseSource::Stored;
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model}, display.fbo(), width,
+                    height, rect, fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
+  times_.diffuseSource = marble ? static_cast<int>(source) : -1;
+  albedoValid_ = true;
+  diffuseValid_ = marble;  // other modes do not write it
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
@@ -185,7 +198,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
 OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height,
                                          GLenum format) {
   if (!target || target->width() != width || target->height() != height) target.emplace(width, height, format);
-  target->attachDepth(passes_->geometry.depthTexture());
+  target->attach(GL_DEPTH_ATTACHMENT, passes_->geometry.depthTexture());
   return *target;
 }
 
@@ -211,7 +224,7 @@ PassTimes Renderer::passTimes(bool wait) {
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
+         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0);
 }
 
@@ -221,8 +234,9 @@ ImageRGBF Renderer::readHdr() {
   if (!geometryValid_ || w <= 0 || h <= 0) return img;
   // The last frame once more, through the same post pass, into a float target, linear.
   OffscreenTarget& readback = surfaceTarget(hdrReadback_, w, h, GL_RGBA32F);
-  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment()},
-                    readback.fbo(), w, h, lastRect_, PostPass::Output::Linear);
+  // The diffuse part the frame stored (`marble`); nothing else is written.
+  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment(), lastModel_},
+                    readback.fbo(), w, h, lastRect_, PostPass::Output::Linear, DiffuseSource::Stored);
   // RGB: linear light; A: coverage (the post pass writes 1 on the object, 0 elsewhere).
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, readback.fbo());

@@ -34,6 +34,9 @@ struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
          fxaaMs = 0, blurDepthMs = 0;
   bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
+  // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
+  // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
+  int diffuseSource = -1;
 };
 
 class Renderer {
@@ -66,7 +69,7 @@ public:
   size_t glBytes() const;
 
   // Forget cached passes (the next frame runs all of them).
-  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = false; }
+  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = false; }
 
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
@@ -88,6 +91,8 @@ private:
   // The lighting (and blur) result is reused when none of its inputs changed.
   bool lightingValid_ = false;
   bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's
+  bool albedoValid_ = false;     // the albedo texture holds the current view's and pattern's
+  bool diffuseValid_ = false;    // the post pass's diffuse part is the current frame's (`marble`)
   Scene lastLightingScene_{};
   // The last frame, for readHdr.
   int lastWidth_ = 0, lastHeight_ = 0;

@@ -8,7 +8,9 @@ namespace marble {
 namespace {
 // Taps per side at most; keep in step with MAX_TAPS in subsurface_blur.frag.glsl.
 constexpr int kMaxTaps = 9;
-// Taps are read at whole texels (subsurface_blur.frag.glsl): closer than one would read the same texel twice.
+// Taps a texel apart: the profile sampled as finely as the (bilinearly read) light it blurs.
+// (Half a texel apart: twice the taps, +1 ms on the dragon at 800x800, for SSIM against Cycles
+// within +-0.006 on the reference scenes, docs/quality.md.)
 constexpr float kTexelsPerTap = 1.0f;
 }  // namespace
 

@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include "gl_support.h"
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "marble/gl/program_variants.h"
 #include "marble/render/screen_rect.h"
 
@@ -45,6 +47,33 @@ TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
   Renderer fresh;
   fresh.setMesh(builtinMesh("sphere"));
   EXPECT_EQ(meanAbsDiff(after, renderImage(fresh, s)), 0.0);
+}
+
+// isCurrent: whether the target still holds what render() would draw (the viewer and the
+// benchmark skip such frames). Any change of the scene, model, target or size, or of what the
+// renderer holds (mesh, environment), makes it false; so does invalidateOutput().
+TEST_F(PassFixture, IsCurrentTellsWhenAFrameWouldDrawTheSame) {
+  renderer.setMesh(builtinMesh("sphere"));
+  const Scene s = marbleScene("sphere", 64);
+  const glm::mat4 one(1.0f);
+  OffscreenTarget target(64, 64), other(64, 64);
+  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "nothing drawn yet";
+  renderer.render(s, one, target.fbo(), 64, 64);
+  EXPECT_TRUE(renderer.isCurrent(s, one, target.fbo(), 64, 64));
+  EXPECT_FALSE(renderer.isCurrent(s, one, other.fbo(), 64, 64)) << "another target";
+  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 63)) << "another size";
+  EXPECT_FALSE(renderer.isCurrent(s, glm::scale(one, glm::vec3(1.01f)), target.fbo(), 64, 64)) << "the model moved";
+  Scene brighter = s;
+  brighter.render.exposure = 1.0f;
+  EXPECT_FALSE(renderer.isCurrent(brighter, one, target.fbo(), 64, 64)) << "any field of the scene";
+  renderer.invalidateOutput();
+  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64));
+  renderer.render(s, one, target.fbo(), 64, 64);
+  renderer.setMesh(builtinMesh("torus"));
+  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "a new mesh";
+  renderer.render(s, one, target.fbo(), 64, 64);
+  renderer.clearEnvironmentMap();
+  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "the environment";
 }
 
 TEST_F(PassFixture, ScatteringChangeReRunsLightingAndBlurButNotGeometry) {

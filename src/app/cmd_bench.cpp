@@ -51,17 +51,17 @@ std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
   return s;
 }
 
-// A cached pass did not run this frame: it costs 0, whatever its timer still remembers.
-// Passes without a "ran" flag run every frame of the modes that have them.
+// A cached pass did not run this frame: it costs 0, whatever its timer still remembers. The
+// post pass and FXAA run whenever anything changed (a frame with no change draws nothing).
 void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
   for (auto& p : series) {
     double ms = 0;
     bool ran = true;
-    if (p.name == "floor") ms = t.floorMs;
+    if (p.name == "floor") ran = t.floorRan, ms = t.floorMs;
     if (p.name == "lighting") ran = t.lightingRan, ms = t.lightingMs;
     if (p.name == "subsurface_blur") ran = t.lightingRan, ms = t.subsurfaceBlurMs;
-    if (p.name == "post") ms = t.postMs;
-    if (p.name == "fxaa") ms = t.fxaaMs;
+    if (p.name == "post") ran = t.postRan, ms = t.postMs;
+    if (p.name == "fxaa") ran = t.fxaaRan, ms = t.fxaaMs;
     if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
     if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
     if (p.name == "albedo") ran = t.albedoRan, ms = t.albedoMs;
@@ -127,13 +127,15 @@ int runBenchCommand(const BenchOptions& o) {
     for (int i = 0; i < o.warmup + o.frames; ++i) {
       const Scene scene = sceneAtFrame(base, motion, i);  // outside the timed part: harness, not renderer
       const double wall0 = wallMs(), thread0 = threadCpuMs(), process0 = processCpuMs();
-      renderer.render(scene, model, target.fbo(), r.width, r.height);
+      // As the viewer does: a frame with nothing changed is not drawn (Renderer::isCurrent).
+      const bool drawn = !renderer.isCurrent(scene, model, target.fbo(), r.width, r.height);
+      if (drawn) renderer.render(scene, model, target.fbo(), r.width, r.height);
       const double thread1 = threadCpuMs();
       // llvmpipe (like any GPU) works after the calls return; glFinish makes the frame's
       // whole cost land inside the measurement.
       glFinish();
       const double wall1 = wallMs(), process1 = processCpuMs();
-      const PassTimes times = renderer.passTimes(true);
+      const PassTimes times = drawn ? renderer.passTimes(true) : PassTimes{};  // not drawn: no pass ran
       if (i < o.warmup) continue;
       r.frameMs.push_back(wall1 - wall0);
       r.cpuSubmitMs.push_back(thread1 - thread0);

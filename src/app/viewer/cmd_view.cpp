@@ -184,7 +184,12 @@ int runViewCommand(const ViewOptions& o) {
       const ViewRect r = viewRect(w, s.panelWidth);  // this frame's panel width
       if (r.width > 0) {
         if (!view || view->width() != r.width || view->height() != r.height) view.emplace(r.width, r.height);
-        renderer.render(frameScene(s), modelMatrix(s), view->fbo(), r.width, r.height);
+        // The view image keeps its content: an unchanged frame (nothing moved or edited) is not
+        // drawn again, and an idle viewer costs no rendering.
+        const Scene scene = frameScene(s);
+        const glm::mat4 model = modelMatrix(s);
+        if (!renderer.isCurrent(scene, model, view->fbo(), r.width, r.height))
+          renderer.render(scene, model, view->fbo(), r.width, r.height);
       }
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, fw, fh);

@@ -71,12 +71,12 @@ void Renderer::setMesh(const Mesh& mesh) {
 
 void Renderer::setEnvironmentMap(const PrefilteredEnvironment& environment) {
   environment_.emplace(environment);
-  lightingValid_ = false;
+  lightingValid_ = outputValid_ = false;
 }
 
 void Renderer::clearEnvironmentMap() {
   environment_.reset();
-  lightingValid_ = false;
+  lightingValid_ = outputValid_ = false;
 }
 
 void Renderer::reloadShaders() {
@@ -94,9 +94,14 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;
+  times_.postRan = times_.fxaaRan = times_.floorRan = false;
+  times_.diffuseSource = -1;
+  outputValid_ = true;
+  lastOutput_ = OutputKey{scene, model, targetFbo, width, height};
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
+    times_.floorRan = true;
     return;
   }
   const LightMatrices light = lightMatrices(scene.light);
@@ -181,6 +186,8 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model}, display.fbo(), width,
                     height, rect, fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
   times_.diffuseSource = marble ? static_cast<int>(source) : -1;
+  times_.postRan = true;
+  times_.fxaaRan = fxaa;
   albedoValid_ = true;
   diffuseValid_ = marble;  // other modes do not write it
   if (!fxaa) {

@@ -34,6 +34,7 @@ struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
          fxaaMs = 0, blurDepthMs = 0;
   bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
+  bool postRan = false, fxaaRan = false, floorRan = false;  // false only when the whole frame was unchanged
   // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
   // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
   int diffuseSource = -1;
@@ -69,7 +70,19 @@ public:
   size_t glBytes() const;
 
   // Forget cached passes (the next frame runs all of them).
-  void invalidate() { lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = false; }
+  // Whether `targetFbo` still holds what render() would draw now: the last call drew this
+  // scene, model and size into it and nothing the frame depends on changed since (mesh,
+  // environment map, shaders). A caller whose target keeps its content between frames (the
+  // viewer's view image, the benchmark's target) skips render() then: an unchanged frame runs
+  // no pass at all. (The renderer cannot know that by itself: a new target may get the name of
+  // a deleted one.) Call invalidateOutput() after drawing into the target by other means.
+  bool isCurrent(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) const {
+    return outputValid_ && lastOutput_ == OutputKey{scene, model, targetFbo, width, height};
+  }
+  void invalidateOutput() { outputValid_ = false; }
+  void invalidate() {
+    lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
+  }
 
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
@@ -93,6 +106,16 @@ private:
   bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's
   bool albedoValid_ = false;     // the albedo texture holds the current view's and pattern's
   bool diffuseValid_ = false;    // the post pass's diffuse part is the current frame's (`marble`)
+  // What the last frame drew, and where: a call with the same draws nothing.
+  struct OutputKey {
+    Scene scene;
+    glm::mat4 model{1.0f};
+    GLuint target = 0;
+    int width = 0, height = 0;
+    bool operator==(const OutputKey&) const = default;
+  };
+  OutputKey lastOutput_;
+  bool outputValid_ = false;  // the target holds lastOutput_'s frame
   Scene lastLightingScene_{};
   // The last frame, for readHdr.
   int lastWidth_ = 0, lastHeight_ = 0;

@@ -17,6 +17,7 @@ struct Camera {
   glm::vec3 target{0.0f, 0.0f, 0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float fov_y_deg = 40.0f;
+  bool operator==(const Camera&) const = default;
 };
 
 enum class LightType { Point, Directional };
@@ -26,6 +27,7 @@ struct Light {
   glm::vec3 position{3.0f, 3.0f, 3.0f};  // for a directional light: the direction it comes from
   glm::vec3 color{1.0f, 1.0f, 1.0f};
   float intensity = 1.0f;
+  bool operator==(const Light&) const = default;
 };
 
 // The render modes, by their exact command-line names (issue 4).
@@ -64,6 +66,7 @@ struct RenderSettings {
   Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
   std::string environment_map;                // the .hdr (resolved against the scene's folder); used when Map
   float environment_rotation_deg = 0.0f;      // turns the map about +Y (yaw)
+  bool operator==(const RenderSettings&) const = default;
 };
 
 struct Scene {
@@ -76,6 +79,7 @@ struct Scene {
   Light light;
   Material material;
   RenderSettings render;
+  bool operator==(const Scene&) const = default;
 };
 
 // Limits on what a scene may ask for.

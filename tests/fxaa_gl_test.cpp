@@ -76,7 +76,7 @@ struct FxaaFixture : ::testing::Test {
     const gl::Texture input = gl::makeTexture2D(GL_RGBA8, kWidth, kHeight, GL_LINEAR);
     glTextureSubImage2D(input.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     OffscreenTarget target(kWidth, kHeight);
-    pass.run(input.id(), target.fbo(), kWidth, kHeight, ScreenRect{0, 0, kWidth, kHeight}, glm::vec3(0.0f));
+    pass.run(input.id(), target.fbo(), kWidth, kHeight, {ScreenRect{0, 0, kWidth, kHeight}}, glm::vec3(0.0f));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     ImageRGBA8 out = target.read();
     flipRows(out);  // back to GL's order
@@ -155,23 +155,25 @@ TEST_F(FxaaFixture, AFlatPictureAndASoftGradientAreUnchanged) {
   for (size_t i = 3; i < out.size(); i += 4) ASSERT_EQ(out[i], 255) << "opaque";
 }
 
-// The renderer filters only the object's rectangle, outside which the picture is background:
+// The renderer filters only spans around the object, outside which the picture is background:
 // inside, the result is the whole-frame filter's; outside, the background, opaque.
-TEST_F(FxaaFixture, ARectangleIsFilteredAsInTheWholeFrameAndTheRestIsBackground) {
+TEST_F(FxaaFixture, SpansAreFilteredAsInTheWholeFrameAndTheRestIsBackground) {
   const std::vector<uint8_t> px = edgeImage(Edge{30.0, 1.0});
   const std::vector<uint8_t> whole = run(px);
   OffscreenTarget display(kWidth, kHeight), target(kWidth, kHeight);
   glTextureSubImage2D(display.texture(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
-  const ScreenRect rect{20, 10, 40, 30};
+  // Two spans, as the renderer's rows of tiles: [20, 60) x [10, 25) and [28, 44) x [25, 40).
+  const std::vector<ScreenRect> spans{{20, 10, 40, 15}, {28, 25, 16, 15}};
   const glm::vec3 background(0.2f, 0.4f, 0.6f);
-  pass.run(display.texture(), target.fbo(), kWidth, kHeight, rect, background);
+  pass.run(display.texture(), target.fbo(), kWidth, kHeight, spans, background);
   ImageRGBA8 out = target.read();
   flipRows(out);
   int filteredInside = 0;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const size_t i = (static_cast<size_t>(y) * kWidth + x) * 4;
-      const bool inside = x >= rect.x && x < rect.x + rect.width && y >= rect.y && y < rect.y + rect.height;
+      bool inside = false;
+      for (const ScreenRect& r : spans) inside |= x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
       if (inside) {
         EXPECT_EQ(out.pixels[i], whole[i]) << x << "," << y << " inside";
         filteredInside += whole[i] != px[i];
@@ -181,5 +183,23 @@ TEST_F(FxaaFixture, ARectangleIsFilteredAsInTheWholeFrameAndTheRestIsBackground)
       }
       EXPECT_EQ(out.pixels[i + 3], 255) << x << "," << y << " opaque";
     }
-  EXPECT_GT(filteredInside, 10) << "the edge crosses the rectangle";
+  EXPECT_GT(filteredInside, 10) << "the edge crosses the spans";
+}
+
+// In the renderer FXAA draws only the spans of screen tiles the mesh can cover: the picture
+// must be exactly the one FXAA over the whole frame gives, for meshes of every kind.
+TEST_F(FxaaFixture, TheRenderersSpansGiveTheWholeFramePicture) {
+  for (const char* mesh : {"sculpture", "torus", "slab", "sphere"}) {
+    Renderer renderer;
+    renderer.setMesh(builtinMesh(mesh));
+    Scene s;
+    s.render.width = 160;
+    s.render.height = 120;
+    s.camera.position = glm::vec3(1.0f, 1.4f, 2.2f);  // close and from above: the object fills much of the frame
+    const ImageRGBA8 spans = renderImage(renderer, s);
+    OffscreenTarget whole(160, 120);
+    pass.run(renderer.displayImageTexture(), whole.fbo(), 160, 120, {ScreenRect{0, 0, 160, 120}},
+             glm::clamp(s.render.background, 0.0f, 1.0f));
+    EXPECT_EQ(spans.pixels, whole.read().pixels) << mesh;
+  }
 }

@@ -66,6 +66,8 @@ Renderer::~Renderer() = default;
 
 void Renderer::setMesh(const Mesh& mesh) {
   mesh_.emplace(mesh);
+  meshCells_ = OccupancyGrid(mesh);
+  aaSpansWidth_ = 0;  // made anew for this mesh
   invalidate();
 }
 
@@ -194,12 +196,25 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
-    // FXAA changes nothing on flat background: outside the object's rectangle (grown by the
-    // filter's reach) the display image is copied as it is.
+    // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
+    // their neighbours); the rest of the target is the background.
     const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;
-    const ScreenRect aaRect = wholeFrame ? ScreenRect{0, 0, width, height} : grown(rect, 4, width, height);
-    passes_->fxaa.run(display.texture(), targetFbo, width, height, aaRect, glm::clamp(scene.render.background, 0.0f, 1.0f));
+    const std::vector<ScreenRect> whole{{0, 0, width, height}};
+    passes_->fxaa.run(display.texture(), targetFbo, width, height,
+                      wholeFrame ? whole : aaSpans(camera.viewProj * model, width, height),
+                      glm::clamp(scene.render.background, 0.0f, 1.0f));
   }
+}
+
+const std::vector<ScreenRect>& Renderer::aaSpans(const glm::mat4& mvp, int width, int height) {
+  if (width != aaSpansWidth_ || height != aaSpansHeight_ || !sameMatrix(mvp, aaSpansMvp_)) {
+    // Margin 2: FXAA changes a pixel only if one of its neighbours differs (one pixel), plus rounding.
+    aaSpans_ = coveredSpans(meshCells_, mvp, width, height, 2);
+    aaSpansMvp_ = mvp;
+    aaSpansWidth_ = width;
+    aaSpansHeight_ = height;
+  }
+  return aaSpans_;
 }
 
 OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height,

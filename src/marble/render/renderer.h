@@ -24,6 +24,7 @@
 #include "marble/render/lighting_pass.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
+#include "marble/render/screen_tiles.h"
 #include "marble/render/subsurface_blur_pass.h"
 #include "marble/core/image.h"
 #include "marble/scene/scene.h"
@@ -80,6 +81,9 @@ public:
     return outputValid_ && lastOutput_ == OutputKey{scene, model, targetFbo, width, height};
   }
   void invalidateOutput() { outputValid_ = false; }
+  // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
+  // antialiasing: for tests and tools.
+  GLuint displayImageTexture() const { return displayImage_ ? displayImage_->texture() : 0; }
   void invalidate() {
     lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
   }
@@ -93,6 +97,12 @@ private:
   ShaderLibrary shaders_;
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
+  OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)
+  // FXAA's spans for the last view (model-view-projection and size) they were made for.
+  std::vector<ScreenRect> aaSpans_;
+  glm::mat4 aaSpansMvp_{0.0f};
+  int aaSpansWidth_ = 0, aaSpansHeight_ = 0;
+  const std::vector<ScreenRect>& aaSpans(const glm::mat4& mvp, int width, int height);
   std::optional<EnvironmentMap> environment_;
   PassTimes times_;
   // What the cached passes were made from.

@@ -13,6 +13,11 @@ struct ScreenRect {
   bool empty() const { return width <= 0 || height <= 0; }
 };
 
+// The box [lo, hi] (object space) projected by `mvp` onto a width x height target: the pixel
+// bounds of its eight corners. False when a corner is behind the camera (no finite bounds).
+bool projectBox(const glm::vec3& lo, const glm::vec3& hi, const glm::mat4& mvp, int width, int height, glm::vec2& min,
+                glm::vec2& max);
+
 // The pixels of a width x height target that the box [lo, hi] (object space) can cover
 // under `mvp`, grown by `marginPx` and clamped to the target. If any corner is behind the
 // camera the whole target is returned (the box's projection is then unbounded).

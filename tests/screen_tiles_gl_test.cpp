@@ -1,0 +1,85 @@
+// The spans FXAA draws (src/marble/render/screen_tiles.h): every pixel a mesh covers, with its
+// neighbours, lies in one; on a mesh that leaves much of its bounding rectangle empty they cover
+// less than the rectangle; a cell behind the camera gives the whole target.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl_support.h"
+#include "marble/mesh/mesh.h"
+#include "marble/render/screen_tiles.h"
+#include "marble/render/view_setup.h"
+
+using namespace marble;
+using namespace marble::test;
+
+namespace {
+
+bool inSpans(const std::vector<ScreenRect>& spans, int x, int y) {
+  for (const ScreenRect& r : spans)
+    if (x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(ScreenTiles, EveryCoveredPixelAndItsNeighboursLieInASpan) {
+  HeadlessContext& context = glContext();
+  (void)context;
+  for (const char* name : {"sculpture", "torus", "slab", "sphere"}) {
+    const Mesh mesh = builtinMesh(name);
+    Renderer renderer;
+    renderer.setMesh(mesh);
+    Scene s;
+    s.render.width = 200;
+    s.render.height = 150;
+    s.render.mode = RenderMode::Normal;  // every covered pixel differs from the background
+    s.render.antialias = Antialias::None;
+    s.camera.position = glm::vec3(1.3f, 0.9f, 2.4f);
+    const ImageRGBA8 img = renderImage(renderer, s);
+    const std::vector<ScreenRect> spans =
+        coveredSpans(OccupancyGrid(mesh), cameraMatrices(s.camera, 200.0f / 150.0f).viewProj, 200, 150, 2);
+    const glm::u8vec4 bg = img.at(0, 0);
+    int covered = 0, spanArea = 0;
+    for (const ScreenRect& r : spans) spanArea += r.width * r.height;
+    for (int y = 0; y < 150; ++y)
+      for (int x = 0; x < 200; ++x) {
+        if (img.at(x, y) == bg) continue;
+        ++covered;
+        const int glY = 149 - y;  // the image's rows run top down, the spans' bottom up
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = glY + dy;
+            if (nx < 0 || ny < 0 || nx >= 200 || ny >= 150) continue;
+            ASSERT_TRUE(inSpans(spans, nx, ny)) << name << ": pixel " << nx << "," << ny;
+          }
+      }
+    EXPECT_GT(covered, 1000) << name;
+    EXPECT_LT(spanArea, 200 * 150) << name << ": not the whole frame";
+  }
+}
+
+TEST(ScreenTiles, ATorusLeavesItsHoleOut) {
+  const Mesh mesh = builtinMesh("torus");
+  Camera camera;
+  // Straight down the axis, close: the hole (radius 0.43 of 1) about 130 pixels across the middle.
+  camera.position = glm::vec3(0.0f, 3.0f, 0.01f);
+  camera.fov_y_deg = 30.0f;
+  const std::vector<ScreenRect> spans = coveredSpans(OccupancyGrid(mesh), cameraMatrices(camera, 1.0f).viewProj, 512, 512, 2);
+  EXPECT_FALSE(inSpans(spans, 256, 256)) << "the centre of the hole";
+  EXPECT_TRUE(inSpans(spans, 256, 256 + 200)) << "the ring";
+}
+
+TEST(ScreenTiles, ACellBehindTheCameraGivesTheWholeTarget) {
+  const Mesh mesh = builtinMesh("sphere");
+  Camera inside;
+  inside.position = glm::vec3(0.0f, 0.0f, 0.2f);  // within the mesh's box
+  const std::vector<ScreenRect> spans = coveredSpans(OccupancyGrid(mesh), cameraMatrices(inside, 1.0f).viewProj, 64, 48, 2);
+  ASSERT_EQ(spans.size(), 1u);
+  EXPECT_EQ(spans[0], (ScreenRect{0, 0, 64, 48}));
+}
+
+TEST(ScreenTiles, AnEmptyMeshHasNoCells) {
+  EXPECT_TRUE(OccupancyGrid(Mesh{}).lowerCorners().empty());
+  EXPECT_TRUE(coveredSpans(OccupancyGrid(Mesh{}), glm::mat4(1.0f), 64, 64, 2).empty());
+}

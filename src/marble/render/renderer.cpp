@@ -140,8 +140,8 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   lastMaterial_ = scene.material;
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   // Lighting and blur depend on neither the exposure nor the background (post-only), nor --
-  // for `marble` -- on the albedo (a pattern change re-runs the albedo pass alone). The
-  // other modes read the albedo in the lighting pass.
+  // for `marble` -- on the albedo (a pattern change re-runs only the post pass, which evaluates
+  // it). The other modes read the albedo in the lighting pass.
   const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !viewMoved &&
                                sameLightingInputs(scene, lastLightingScene_) && (marble || !times_.albedoRan);
   if (!lightingCurrent) {

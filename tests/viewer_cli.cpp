@@ -117,6 +117,24 @@ TEST(ViewerCli, OpensAMeshFileWithAPreset) {
   std::filesystem::remove_all(dir);
 }
 
+// --turntable starts the panel's turntable: the object turns between frames, so two runs with a
+// different number of frames end on different pictures; off, they are the same.
+TEST(ViewerCli, TurntableTurnsTheObjectBetweenFrames) {
+  const auto dir = tempDir("viewer-turntable");
+  auto shot = [&](const std::string& name, const std::string& args) {
+    const auto png = dir / name;
+    const auto r = runMarble("view --frames 12 --width 400 --height 300 --screenshot " + png.string() + " " + args, xvfb());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return readPng(png);
+  };
+  const ImageRGBA8 still = shot("still.png", "");
+  const ImageRGBA8 turned = shot("turned.png", "--turntable object --turntable-speed 900");
+  int differing = 0;
+  for (size_t i = 0; i < still.pixels.size(); i += 4) differing += still.pixels[i] != turned.pixels[i];
+  EXPECT_GT(differing, 500) << "the object turned";
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {
   const auto r = runMarble("view /nonexistent/thing.obj --frames 1", xvfb());
   EXPECT_EQ(r.exitCode, 2) << r.output;

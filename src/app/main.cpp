@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   viewCmd->add_option("--frames", view.frames, "Draw this many frames, then exit (0 = run until closed)")->check(CLI::Range(0, 1000000000));
   viewCmd->add_option("--screenshot", view.screenshot, "After the last frame, save the whole window (panel included) as PNG");
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from $MARBLE_SHADER_DIR, else the source tree's shaders/");
+  viewCmd->add_option("--turntable", view.turntable, "Start turning: off (default), object or light (the panel's turntable)");
+  viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;
   auto* textureCmd = app.add_subcommand("texture", "Write the marble pattern's stages as PNGs (the paper's Figures 3 and 4)");

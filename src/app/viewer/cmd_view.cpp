@@ -9,6 +9,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <cctype>
+#include <cstdio>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -110,9 +111,23 @@ glm::mat4 modelMatrix(const ViewerState& s) {
 
 }  // namespace
 
+static Turntable parseTurntable(const std::string& name) {
+  if (name == "off") return Turntable::Off;
+  if (name == "object") return Turntable::Object;
+  if (name == "light") return Turntable::Light;
+  throw InputError("--turntable", "", "expected off, object or light, got \"" + name + "\"");
+}
+
 int runViewCommand(const ViewOptions& o) {
   return reportErrors("view", [&] {
     ViewerState s;
+    s.turntable = parseTurntable(o.turntable);
+    if (!std::isfinite(o.turntableSpeed) || std::abs(o.turntableSpeed) > 3600.0f) {
+      char got[32];
+      std::snprintf(got, sizeof got, "%g", static_cast<double>(o.turntableSpeed));
+      throw InputError("--turntable-speed", "", std::string("expected -3600 to 3600 degrees per second, got ") + got);
+    }
+    s.turntableDegPerSec = o.turntableSpeed;
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up

@@ -10,6 +10,8 @@ struct ViewOptions {
   int frames = 0;          // 0 = until closed
   std::string screenshot;  // saved after the last frame when set
   bool dev = false;        // shader hot reload from the source tree
+  std::string turntable = "off";  // off, object, light: start turning (as the panel's turntable)
+  float turntableSpeed = 15.0f;   // degrees per second
 };
 
 int runViewCommand(const ViewOptions& o);

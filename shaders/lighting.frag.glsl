@@ -81,21 +81,18 @@ float transmission_thickness(vec3 p) {
   vec4 clip = u_light_view_proj * vec4(p, 1.0);
   vec3 ndc = clip.xyz / clip.w;
   if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
-  ivec2 size = textureSize(u_light_distance, 0);
-  vec2 t = (ndc.xy * 0.5 + 0.5) * vec2(size) - 0.5;  // texel centres at integers
-  ivec2 base = ivec2(floor(t));
-  vec2 f = t - vec2(base);
-  float sum = 0.0, weight = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    ivec2 o = ivec2(k & 1, k >> 1);
-    float entered = texelFetch(u_light_distance, clamp(base + o, ivec2(0), size - 1), 0).r;
-    float w = mix(1.0 - f.x, f.x, float(o.x)) * mix(1.0 - f.y, f.y, float(o.y));
-    // "Nothing hit" is stored as far + 1000 (LightDepthPass).
-    if (entered < u_light_near_far.y + 1.0) {
-      sum += w * entered;
-      weight += w;
-    }
-  }
+  vec2 size = vec2(textureSize(u_light_distance, 0));
+  vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;  // texel centres at integers
+  vec2 base = floor(t);
+  vec2 f = t - base;
+  // The four texels around p in one gather (the corner between them; clamped to the map's edge
+  // like the sampler), in textureGather's order: (0,1), (1,1), (1,0), (0,0).
+  vec4 entered = textureGather(u_light_distance, (base + 1.0) / size, 0);
+  vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // bilinear
+  // "Nothing hit" is stored as far + 1000 (LightDepthPass): such texels weigh nothing.
+  w *= vec4(lessThan(entered, vec4(u_light_near_far.y + 1.0)));
+  float weight = w.x + w.y + w.z + w.w;
+  float sum = dot(w, entered);
   if (weight <= 0.0) return 0.0;
   return max(light_distance_of(p) - sum / weight, 0.0);
 }

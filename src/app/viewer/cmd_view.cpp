@@ -197,14 +197,15 @@ int runViewCommand(const ViewOptions& o) {
         continue;
       }
       const ViewRect r = viewRect(w, s.panelWidth);  // this frame's panel width
+      bool viewDrawn = false;
       if (r.width > 0) {
         if (!view || view->width() != r.width || view->height() != r.height) view.emplace(r.width, r.height);
         // The view image keeps its content: an unchanged frame (nothing moved or edited) is not
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
-        if (!renderer.isCurrent(scene, model, view->fbo(), r.width, r.height))
-          renderer.render(scene, model, view->fbo(), r.width, r.height);
+        viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
+        if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
       }
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, fw, fh);
@@ -231,7 +232,8 @@ int runViewCommand(const ViewOptions& o) {
         s.requestScreenshot = false;
       }
       glfwSwapBuffers(w);
-      s.passTimes = renderer.passTimes();
+      // An undrawn frame ran no pass (the panel says "cached" for each).
+      s.passTimes = viewDrawn ? renderer.passTimes() : PassTimes{};
       s.frameMs.push_back(std::chrono::duration<float, std::milli>(now - last).count());
       if (s.frameMs.size() > 120) s.frameMs.pop_front();
       last = now;

@@ -38,14 +38,18 @@ void drawPerformanceSection(ViewerState& s) {
   ImGui::TextUnformatted("GPU time per pass:");
   passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
   passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer (normal, depth) from the camera. Re-runs when the camera, mesh or size changes.");
-  passLine("albedo", t.albedoMs, t.albedoRan, "The marble pattern, once per visible pixel. Re-runs with the geometry or when the pattern changes.");
-  passLine("lighting", t.lightingMs, t.lightingRan, "Screen-space shading inside the object's rectangle. Marble mode: the light entering the stone; re-runs when the light, view, scattering, IOR or translucency changes. Other modes: when anything but exposure and background changes.");
-  if (s.scene.render.mode == RenderMode::Marble)
+  const bool marble = s.scene.render.mode == RenderMode::Marble;
+  if (!marble)
+    passLine("albedo", t.albedoMs, t.albedoRan, "The marble pattern, once per visible pixel. Re-runs with the geometry or when the pattern changes. (Marble mode evaluates it in the post pass.)");
+  if (marble && s.scene.render.subsurface_resolution == SubsurfaceResolution::Half)
+    passLine("blur depth", t.blurDepthMs, t.blurDepthRan, "The depth at the blur's half resolution, so the lighting and blur shade only the object. Re-runs with the geometry.");
+  passLine("lighting", t.lightingMs, t.lightingRan, "Screen-space shading of the object's pixels. Marble mode: the light entering the stone, at the blur's resolution; re-runs when the light, view, scattering, IOR or translucency changes. Other modes: when anything but exposure and background changes.");
+  if (marble)
     passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");
-  passLine("post", t.postMs, true, "Marble mode: blurred light x albedo + reflections (gloss changes re-run only this), then tone mapping. Output to the view. Runs every frame.");
+  passLine("post", t.postMs, t.postRan, "Marble mode: blurred light x albedo + reflections, then tone mapping; evaluates the pattern when the view or pattern changed, reuses the stored diffuse part when only gloss, exposure or background changed. Runs whenever anything changed.");
   if (s.scene.render.mode != RenderMode::Floor && s.scene.render.antialias == Antialias::Fxaa)
-    passLine("fxaa", t.fxaaMs, true, "Antialiasing (FXAA) of the displayed picture: blends across contrast edges. Runs every frame.");
-  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, true, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
+    passLine("fxaa", t.fxaaMs, t.fxaaRan, "Antialiasing (FXAA) of the displayed picture, on the tiles the object can cover: blends across contrast edges. Runs whenever anything changed.");
+  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, t.floorRan, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
 }
 
 }  // namespace marble::viewer

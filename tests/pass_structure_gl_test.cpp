@@ -30,6 +30,13 @@ struct PassFixture : ::testing::Test {
   Renderer renderer;
 };
 
+// The same scene drawn by a renderer with no caches: what a cached frame must equal.
+ImageRGBA8 freshRender(const std::string& mesh, const Scene& s) {
+  Renderer fresh;
+  fresh.setMesh(builtinMesh(mesh));
+  return renderImage(fresh, s);
+}
+
 }  // namespace
 
 TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
@@ -44,9 +51,7 @@ TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
   EXPECT_FALSE(t.lightingRan);
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::Stored)) << "the diffuse part is reused";
   EXPECT_GT(meanAbsDiff(before, after), 0.2) << "the highlight must change";
-  Renderer fresh;
-  fresh.setMesh(builtinMesh("sphere"));
-  EXPECT_EQ(meanAbsDiff(after, renderImage(fresh, s)), 0.0);
+  EXPECT_EQ(meanAbsDiff(after, freshRender("sphere", s)), 0.0);
 }
 
 // isCurrent: whether the target still holds what render() would draw (the viewer and the
@@ -86,12 +91,10 @@ TEST_F(PassFixture, ScatteringChangeReRunsLightingAndBlurButNotGeometry) {
   EXPECT_FALSE(t.geometryRan);
   EXPECT_TRUE(t.lightingRan);
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::StoredAlbedo)) << "the albedo is reused";
-  Renderer fresh;
-  fresh.setMesh(builtinMesh("sphere"));
   // Different programs (the fresh frame evaluates the pattern): the stored values are used as
   // stored on both sides, but the two compilations may round a value differently -- one level
   // in one pixel was seen; a real difference would move thousands.
-  EXPECT_LT(meanAbsDiff(cached, renderImage(fresh, s)), 0.01);
+  EXPECT_LT(meanAbsDiff(cached, freshRender("sphere", s)), 0.01);
 }
 
 TEST_F(PassFixture, PatternChangeReRunsOnlyThePatternAndMatchesAFreshRender) {
@@ -105,9 +108,7 @@ TEST_F(PassFixture, PatternChangeReRunsOnlyThePatternAndMatchesAFreshRender) {
   EXPECT_FALSE(t.albedoRan) << "`marble` evaluates the pattern in its post pass";
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::Pattern));
   EXPECT_FALSE(t.lightingRan) << "the light entering the stone does not depend on its albedo";
-  Renderer fresh;
-  fresh.setMesh(builtinMesh("sphere"));
-  EXPECT_EQ(meanAbsDiff(cached, renderImage(fresh, s)), 0.0);
+  EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
 }
 
 // The albedo texture is written by the albedo pass (other modes) or by marble's post pass; a
@@ -118,15 +119,13 @@ TEST_F(PassFixture, ModesShareTheAlbedoWhicheverPassWroteIt) {
   Scene marble = marbleScene("sphere", 64);
   Scene paper = marble;
   paper.render.mode = RenderMode::Paper;
-  Renderer fresh;
-  fresh.setMesh(builtinMesh("sphere"));
   renderImage(renderer, marble);
-  EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), renderImage(fresh, paper)), 0.0) << "albedo from marble's post";
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), freshRender("sphere", paper)), 0.0) << "albedo from marble's post";
   EXPECT_FALSE(renderer.passTimes(true).albedoRan);
   paper.material.vein_color = marble.material.vein_color = glm::vec3(0.1f, 0.3f, 0.6f);
-  EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), renderImage(fresh, paper)), 0.0);
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), freshRender("sphere", paper)), 0.0);
   EXPECT_TRUE(renderer.passTimes(true).albedoRan) << "the paper's mode runs the albedo pass";
-  EXPECT_EQ(meanAbsDiff(renderImage(renderer, marble), renderImage(fresh, marble)), 0.0) << "albedo from the albedo pass";
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, marble), freshRender("sphere", marble)), 0.0) << "albedo from the albedo pass";
   EXPECT_EQ(renderer.passTimes(true).diffuseSource, static_cast<int>(DiffuseSource::StoredAlbedo));
 }
 

@@ -198,21 +198,21 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;
-    const std::vector<ScreenRect> whole{{0, 0, width, height}};
-    passes_->fxaa.run(display.texture(), targetFbo, width, height,
-                      wholeFrame ? whole : aaSpans(camera.viewProj * model, width, height),
+    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;  // the light's map: all content
+    passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
                       glm::clamp(scene.render.background, 0.0f, 1.0f));
   }
 }
 
-const std::vector<ScreenRect>& Renderer::aaSpans(const glm::mat4& mvp, int width, int height) {
-  if (width != aaSpansWidth_ || height != aaSpansHeight_ || !sameMatrix(mvp, aaSpansMvp_)) {
+const std::vector<ScreenRect>& Renderer::aaSpans(const glm::mat4& mvp, int width, int height, bool wholeFrame) {
+  if (width != aaSpansWidth_ || height != aaSpansHeight_ || wholeFrame != aaSpansWholeFrame_ ||
+      !sameMatrix(mvp, aaSpansMvp_)) {
     // Margin 2: FXAA changes a pixel only if one of its neighbours differs (one pixel), plus rounding.
-    aaSpans_ = coveredSpans(meshCells_, mvp, width, height, 2);
+    aaSpans_ = wholeFrame ? std::vector<ScreenRect>{{0, 0, width, height}} : coveredSpans(meshCells_, mvp, width, height, 2);
     aaSpansMvp_ = mvp;
     aaSpansWidth_ = width;
     aaSpansHeight_ = height;
+    aaSpansWholeFrame_ = wholeFrame;
   }
   return aaSpans_;
 }

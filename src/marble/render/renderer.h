@@ -98,11 +98,13 @@ private:
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
   OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)
-  // FXAA's spans for the last view (model-view-projection and size) they were made for.
+  // FXAA's spans (the whole frame for views that are not of the mesh), made once per view
+  // (model-view-projection and size).
   std::vector<ScreenRect> aaSpans_;
   glm::mat4 aaSpansMvp_{0.0f};
   int aaSpansWidth_ = 0, aaSpansHeight_ = 0;
-  const std::vector<ScreenRect>& aaSpans(const glm::mat4& mvp, int width, int height);
+  bool aaSpansWholeFrame_ = false;
+  const std::vector<ScreenRect>& aaSpans(const glm::mat4& mvp, int width, int height, bool wholeFrame);
   std::optional<EnvironmentMap> environment_;
   PassTimes times_;
   // What the cached passes were made from.

@@ -8,10 +8,12 @@
 #include "cmd_presets.h"
 #include "cmd_render.h"
 #include "cmd_texture.h"
+#include "marble/core/allocator_tuning.h"
 #include "viewer/cmd_view.h"
 
 int main(int argc, char** argv) {
   using namespace marble;
+  keepFreedMemoryForReuse();  // before any GL context: llvmpipe frees and re-faults its buffers per frame
   CLI::App app{"marble - real-time marble rendering: procedural veins, subsurface light, Fresnel reflectance.\n"
                "Without an input, every command uses the built-in default scene."};
   app.require_subcommand(1);

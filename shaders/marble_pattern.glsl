@@ -50,10 +50,44 @@ PatParams marble_params() {
   return P;
 }
 
+#ifdef PAT_TURBULENCE_GRID
+// The turbulence baked at integer texels (src/marble/noise/turbulence_grid.h: with the value
+// basis and power-of-two octaves, one linearly filtered fetch is the six octaves, exactly up
+// to rounding). Defined by the passes with the grid's dimensions, 3 (solid) or 2; the program
+// is specialized for it with PAT_MAPPING, so only the mapping's own lines run.
+#if PAT_TURBULENCE_GRID == 3
+layout(binding = 8) uniform sampler3D u_pat_turbulence_grid;
+float pat_grid_turbulence3(vec3 q) { return texture(u_pat_turbulence_grid, (q + 0.5) / u_pat_resolution).r; }
+#else
+layout(binding = 8) uniform sampler2D u_pat_turbulence_grid;
+// Texel i holds the value at q = i: its centre is at (i + 0.5) / W.
+float pat_grid_turbulence2(vec2 q) { return texture(u_pat_turbulence_grid, (q + 0.5) / u_pat_resolution).r; }
+float pat_grid_pattern2(PatParams P, vec2 q) { return pat_sine(pat_ramp2(P, q), pat_grid_turbulence2(q), P.turbPower); }
+#endif
+
+// pat_value_at (pattern_core.glsl) with the grid's turbulence.
+float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
+  PatParams P = marble_params();
+  vec3 q = pat_texel_pos(P, objectPos);
+#if PAT_TURBULENCE_GRID == 3
+  return pat_sine(pat_ramp3(P, q), pat_grid_turbulence3(q), P.turbPower);
+#elif PAT_MAPPING == 0  // PAT_MAP_PLANAR
+  return pat_grid_pattern2(P, pat_planar_texel(P, q));
+#else
+  vec3 w = pat_triplanar_weights(objectNormal);
+  float v = 0.0f;
+  if (w.x > 0.0f) v += w.x * pat_grid_pattern2(P, vec2(q.z, q.y));
+  if (w.y > 0.0f) v += w.y * pat_grid_pattern2(P, vec2(q.x, q.z));
+  if (w.z > 0.0f) v += w.z * pat_grid_pattern2(P, vec2(q.x, q.y));
+  return v;
+#endif
+}
+#else
 float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
   return pat_value_at(marble_params(), objectPos, objectNormal);
 }
+#endif
 
 vec3 marble_albedo(vec3 objectPos, vec3 objectNormal) {
-  return pat_albedo(marble_params(), objectPos, objectNormal);
+  return pat_color(marble_params(), marble_pattern_value(objectPos, objectNormal));
 }

@@ -231,21 +231,19 @@ float pat_turbulence3(PatParams P, vec3 q) {
   return sum / (2.0f * P.turbSize);
 }
 
-// ramp: x*xPeriod/W + y*yPeriod/H (+ z*zPeriod/W); turbulence in [0,1). Result in [0,1].
+// ramp: pat_ramp2/3 below; turbulence in [0,1). Result in [0,1].
 float pat_sine(float ramp, float turbulence, float turbPower) {
   return abs(sin(PAT_PI * (ramp + turbPower * turbulence)));
 }
 
+// The sine's linear part: x*xPeriod/W + y*yPeriod/H (+ z*zPeriod/W).
+float pat_ramp2(PatParams P, vec2 q) { return (q.x * P.period.x + q.y * P.period.y) / P.resolution; }
+float pat_ramp3(PatParams P, vec3 q) { return (q.x * P.period.x + q.y * P.period.y + q.z * P.period.z) / P.resolution; }
+
 // The paper's 2D texture at texel q (s along x, t along y).
-float pat_pattern2(PatParams P, vec2 q) {
-  float ramp = (q.x * P.period.x + q.y * P.period.y) / P.resolution;
-  return pat_sine(ramp, pat_turbulence2(P, q), P.turbPower);
-}
+float pat_pattern2(PatParams P, vec2 q) { return pat_sine(pat_ramp2(P, q), pat_turbulence2(P, q), P.turbPower); }
 // Solid marble at texel-space point q.
-float pat_pattern3(PatParams P, vec3 q) {
-  float ramp = (q.x * P.period.x + q.y * P.period.y + q.z * P.period.z) / P.resolution;
-  return pat_sine(ramp, pat_turbulence3(P, q), P.turbPower);
-}
+float pat_pattern3(PatParams P, vec3 q) { return pat_sine(pat_ramp3(P, q), pat_turbulence3(P, q), P.turbPower); }
 
 // ---- mappings ----------------------------------------------------------------------------
 
@@ -259,20 +257,26 @@ float pat_mirror(float s, float W) {
   return W - abs(m - W);
 }
 
-// Value before colouring, in [0,1].
-float pat_value_at(PatParams P, vec3 objectPos, vec3 objectNormal) {
-  vec3 q = pat_texel_pos(P, objectPos);
-  if (P.mapping == PAT_MAP_SOLID) return pat_pattern3(P, q);
-  if (P.mapping == PAT_MAP_PLANAR) {
-    // The paper: s, t from object x, z; constant along y (stretch), mirrored beyond the bounds.
-    return pat_pattern2(P, vec2(pat_mirror(q.x, P.resolution), pat_mirror(q.z, P.resolution)));
-  }
-  // Triplanar: three planar projections (no mirroring; the texture tiles) blended by the
-  // normal's components to the 4th power.
+// The paper's planar mapping: s, t from object x, z; constant along y (stretch), mirrored
+// beyond the bounds.
+vec2 pat_planar_texel(PatParams P, vec3 q) { return vec2(pat_mirror(q.x, P.resolution), pat_mirror(q.z, P.resolution)); }
+
+// Triplanar: three planar projections (no mirroring; the texture tiles) blended by the
+// normal's components to the 4th power. Planes (z, y), (x, z), (x, y) take w.x, w.y, w.z.
+vec3 pat_triplanar_weights(vec3 objectNormal) {
   vec3 w = abs(objectNormal);
   w = w * w;
   w = w * w;
-  w = w / max(w.x + w.y + w.z, 1e-20f);
+  return w / max(w.x + w.y + w.z, 1e-20f);
+}
+
+// Value before colouring, in [0,1]. (marble_pattern.glsl repeats this dispatch once, with the
+// turbulence read from its baked grid instead of evaluated.)
+float pat_value_at(PatParams P, vec3 objectPos, vec3 objectNormal) {
+  vec3 q = pat_texel_pos(P, objectPos);
+  if (P.mapping == PAT_MAP_SOLID) return pat_pattern3(P, q);
+  if (P.mapping == PAT_MAP_PLANAR) return pat_pattern2(P, pat_planar_texel(P, q));
+  vec3 w = pat_triplanar_weights(objectNormal);
   float v = 0.0f;
   if (w.x > 0.0f) v += w.x * pat_pattern2(P, vec2(q.z, q.y));
   if (w.y > 0.0f) v += w.y * pat_pattern2(P, vec2(q.x, q.z));

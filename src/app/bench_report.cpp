@@ -28,6 +28,7 @@ void printBenchTable(const BenchResult& r) {
   std::printf("marble bench: %s, %dx%d, mode %s, motion %s, %d frames after %d warm-up\n", r.input.c_str(), r.width,
               r.height, r.mode.c_str(), r.motion.c_str(), r.frames, r.warmup);
   if (r.passTiming == "serial") std::printf("passes serialized (--serial-passes): each timed by the wall clock\n");
+  if (!r.turbulenceGrid) std::printf("turbulence evaluated per pixel (--turbulence-grid off)\n");
   std::printf("GL: %s; %s\n", r.glRenderer.c_str(), r.glVersion.c_str());
   std::printf("triangles %zu, mesh load %.1f ms, upload %.1f ms\n\n", r.triangles, r.loadMs, r.uploadMs);
   std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
@@ -55,6 +56,7 @@ void printBenchJson(const BenchResult& r) {
   j["motion"] = r.motion;
   j["frames"] = r.frames;
   j["pass_timing"] = r.passTiming;
+  j["turbulence_grid"] = r.turbulenceGrid;
   j["warmup"] = r.warmup;
   j["triangles"] = r.triangles;
   j["frame_ms_median"] = rounded(frame.median);

@@ -20,6 +20,7 @@ struct BenchResult {
   int width = 0, height = 0;
   std::string mode, motion;
   std::string passTiming = "gpu-queries";  // or "serial" (--serial-passes)
+  bool turbulenceGrid = true;              // --turbulence-grid
   int frames = 0, warmup = 0;
   size_t triangles = 0;
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)

@@ -85,6 +85,10 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_flag("--serial-passes", o.serialPasses,
                "Finish each pass before the next and time it by the wall clock (whole cost of each pass, "
                "vertex work included; frames get slower)");
+  cmd.add_option("--turbulence-grid", o.turbulenceGrid,
+                 "on (default): the pattern's turbulence read from its baked grid where that is exact; off: "
+                 "evaluated per pixel (the same picture within rounding; to compare the two)")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -114,6 +118,8 @@ int runBenchCommand(const BenchOptions& o) {
     r.glVersion = glString(GL_VERSION);
     PassTimer::setSerialized(o.serialPasses);
     Renderer renderer(std::move(shaders));
+    renderer.setTurbulenceGridEnabled(o.turbulenceGrid == "on");
+    r.turbulenceGrid = o.turbulenceGrid == "on";
     t0 = wallMs();
     renderer.setMesh(mesh);
     glFinish();

@@ -16,6 +16,7 @@ struct BenchOptions {
   std::string motion = "none";
   bool json = false;
   bool serialPasses = false;  // --serial-passes
+  std::string turbulenceGrid = "on";  // --turbulence-grid on|off
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);

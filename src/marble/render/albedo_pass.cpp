@@ -1,29 +1,35 @@
 #include "marble/render/albedo_pass.h"
 
 #include "marble/noise/pattern_uniforms.h"
+#include "marble/noise/turbulence_grid.h"
+#include "marble/render/turbulence_texture.h"
 
 namespace marble {
 
 AlbedoPass::AlbedoPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "albedo.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  programs_.get(patternDefines(Material{}));  // the default material's, so a broken shader shows at once
+  programs_.get(patternDefines(Material{}, 0));  // the default material's, so a broken shader shows at once
 }
 
-std::vector<std::string> patternDefines(const Material& m) {
-  return {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
-          "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+std::vector<std::string> patternDefines(const Material& m, GLuint turbulenceGrid) {
+  std::vector<std::string> d = {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
+                                "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+  if (turbulenceGrid != 0) d.push_back("PAT_TURBULENCE_GRID " + std::to_string(turbulenceGridDimensions(m)));
+  return d;
 }
 
-uint32_t patternVariantKey(const Material& m) {
-  return static_cast<uint32_t>(m.basis) * 3u + static_cast<uint32_t>(m.mapping);
+uint32_t patternVariantKey(const Material& m, GLuint turbulenceGrid) {
+  // The grid's dimensions follow from the mapping: one bit says whether it is read.
+  return static_cast<uint32_t>(m.basis) * 3u + static_cast<uint32_t>(m.mapping) + (turbulenceGrid != 0 ? 6u : 0u);
 }
 
 void setPatternUniforms(const gl::Program& p, const glm::mat4& model, const CameraMatrices& camera,
-                        const Material& material) {
+                        const Material& material, GLuint turbulenceGrid) {
   p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
   p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
   applyPatternUniforms(p.id(), material);
+  if (turbulenceGrid != 0) glBindTextureUnit(kTurbulenceGridUnit, turbulenceGrid);
 }
 
 void AlbedoPass::compileAll() {
@@ -32,7 +38,8 @@ void AlbedoPass::compileAll() {
       Material m;
       m.basis = b;
       m.mapping = p;
-      programs_.get(patternDefines(m));
+      programs_.get(patternDefines(m, 0));
+      if (turbulenceGridDimensions(m) > 0) programs_.get(patternDefines(m, 1));  // any nonzero grid
     }
 }
 
@@ -48,7 +55,7 @@ void AlbedoPass::resize(int width, int height, GLuint depthTexture) {
 }
 
 void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
-                     const Material& material, const ScreenRect& rect) {
+                     const Material& material, GLuint turbulenceGrid, const ScreenRect& rect) {
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
@@ -58,8 +65,9 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
   glBindTextures(0, 2, textures);
-  const gl::Program& p = programs_.get(patternVariantKey(material), [&] { return patternDefines(material); });
-  setPatternUniforms(p, model, camera, material);
+  const gl::Program& p = programs_.get(patternVariantKey(material, turbulenceGrid),
+                                       [&] { return patternDefines(material, turbulenceGrid); });
+  setPatternUniforms(p, model, camera, material, turbulenceGrid);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();

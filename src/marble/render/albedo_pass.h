@@ -11,13 +11,15 @@
 
 namespace marble {
 
-// The pattern's program variant (PAT_BASIS, PAT_MAPPING) and its key (0..5), for every pass
-// that evaluates the pattern.
-std::vector<std::string> patternDefines(const Material& m);
-uint32_t patternVariantKey(const Material& m);
-// The uniforms of shaders/pattern_at_pixel.glsl (the view) and of marble_pattern.glsl (the material).
+// The pattern's program variant (PAT_BASIS, PAT_MAPPING, and PAT_TURBULENCE_GRID when the
+// turbulence is read from its baked grid) and its key (0..11), for every pass that evaluates
+// the pattern. `turbulenceGrid`: the grid's texture (render/turbulence_texture.h), 0 for none.
+std::vector<std::string> patternDefines(const Material& m, GLuint turbulenceGrid);
+uint32_t patternVariantKey(const Material& m, GLuint turbulenceGrid);
+// The uniforms of shaders/pattern_at_pixel.glsl (the view) and of marble_pattern.glsl (the
+// material), and the grid bound to its unit.
 void setPatternUniforms(const gl::Program& program, const glm::mat4& model, const CameraMatrices& camera,
-                        const Material& material);
+                        const Material& material, GLuint turbulenceGrid);
 
 class AlbedoPass {
 public:
@@ -26,7 +28,7 @@ public:
   void resize(int width, int height, GLuint depthTexture);
   // Draws the surface inside `rect` (the mesh's screen rectangle); the rest is cleared to zero.
   void run(GLuint depthTexture, GLuint normalTexture, const glm::mat4& model, const CameraMatrices& camera,
-           const Material& material, const ScreenRect& rect);
+           const Material& material, GLuint turbulenceGrid, const ScreenRect& rect);
   GLuint albedoTexture() const { return albedo_.id(); }
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 4; }
   PassTimer& timer() { return timer_; }

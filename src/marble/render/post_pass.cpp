@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "marble/render/albedo_pass.h"
+#include "marble/noise/turbulence_grid.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
@@ -12,11 +13,12 @@ namespace marble {
 float fxaaLuma(const glm::vec3& displayColor) { return glm::dot(displayColor, glm::vec3(0.299f, 0.587f, 0.114f)); }
 
 namespace {
-std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource source, const Material& material) {
+std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource source, const Material& material,
+                                        GLuint turbulenceGrid) {
   std::vector<std::string> d = {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", "ENV_KIND " + std::to_string(envKind),
                                 "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2)};
   if (marble && source == DiffuseSource::Pattern)
-    for (std::string& p : patternDefines(material)) d.push_back(std::move(p));
+    for (std::string& p : patternDefines(material, turbulenceGrid)) d.push_back(std::move(p));
   return d;
 }
 }  // namespace
@@ -25,27 +27,29 @@ PostPass::PostPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
   // The default material's first frame, so a broken shader shows at once.
-  program(true, kEnvStudio, DiffuseSource::Pattern, Material{});
+  program(true, kEnvStudio, DiffuseSource::Pattern, Material{}, 0);
 }
 
-const gl::Program& PostPass::program(bool marble, int envKind, DiffuseSource source, const Material& material) {
+const gl::Program& PostPass::program(bool marble, int envKind, DiffuseSource source, const Material& material,
+                                     GLuint turbulenceGrid) {
   const uint32_t s = marble ? static_cast<uint32_t>(source) : 2u;
-  const uint32_t pattern = marble && source == DiffuseSource::Pattern ? patternVariantKey(material) : 0u;
+  const uint32_t pattern = marble && source == DiffuseSource::Pattern ? patternVariantKey(material, turbulenceGrid) : 0u;
   const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | pattern << 4;
-  return programs_.get(key, [&] { return variantDefines(marble, envKind, source, material); });
+  return programs_.get(key, [&] { return variantDefines(marble, envKind, source, material, turbulenceGrid); });
 }
 
 void PostPass::compileAll() {
   for (int kind : {kEnvStudio, kEnvMap}) {
-    program(false, kind, DiffuseSource::Stored, Material{});
-    program(true, kind, DiffuseSource::Stored, Material{});
-    program(true, kind, DiffuseSource::StoredAlbedo, Material{});
+    program(false, kind, DiffuseSource::Stored, Material{}, 0);
+    program(true, kind, DiffuseSource::Stored, Material{}, 0);
+    program(true, kind, DiffuseSource::StoredAlbedo, Material{}, 0);
     for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
       for (PatternMapping m : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
         Material material;
         material.basis = b;
         material.mapping = m;
-        program(true, kind, DiffuseSource::Pattern, material);
+        program(true, kind, DiffuseSource::Pattern, material, 0);
+        if (turbulenceGridDimensions(material) > 0) program(true, kind, DiffuseSource::Pattern, material, 1);
       }
   }
 }
@@ -88,7 +92,8 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
   glBindTextures(0, 7, textures);
   const int envKind = environmentKind(settings, view.environment);
-  const gl::Program& p = program(marble, envKind, source, scene.material);
+  const GLuint grid = marble && source == DiffuseSource::Pattern ? view.turbulenceGrid : 0;
+  const gl::Program& p = program(marble, envKind, source, scene.material, grid);
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_luma_alpha", output == Output::DisplayWithLuma ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);
@@ -101,7 +106,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     p.set("u_roughness", scene.material.roughness);
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
-    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material);
+    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material, grid);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

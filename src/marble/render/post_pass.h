@@ -29,6 +29,9 @@ struct PostView {
   float lightTexelWorld;
   const EnvironmentMap* environment;  // the loaded map, or null
   const glm::mat4& model;
+  // The baked turbulence (render/turbulence_texture.h) for frames that evaluate the pattern;
+  // 0: evaluated per pixel.
+  GLuint turbulenceGrid = 0;
 };
 
 // Where a `marble` frame's diffuse part (blurred light x albedo) comes from: DIFFUSE_SOURCE in
@@ -63,7 +66,8 @@ public:
   void compileAll();
 
 private:
-  const gl::Program& program(bool marble, int envKind, DiffuseSource source, const Material& material);
+  const gl::Program& program(bool marble, int envKind, DiffuseSource source, const Material& material,
+                            GLuint turbulenceGrid);
   gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
   gl::Texture diffuse_;

@@ -130,7 +130,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   // read the albedo in the lighting pass.
   if (!albedoValid_ && !marble) {
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
-                        scene.material, rect);
+                        scene.material, turbulence_.update(scene.material), rect);
     albedoValid_ = true;
     times_.albedoRan = true;
   }
@@ -185,8 +185,10 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const DiffuseSource source = !albedoValid_                            ? DiffuseSource::Pattern
                                : times_.lightingRan || !diffuseValid_ ? DiffuseSource::StoredAlbedo
                                                                       : DiffuseSource::Stored;
-  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model}, display.fbo(), width,
-                    height, rect, fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
+  const GLuint turbulenceGrid = marble && source == DiffuseSource::Pattern ? turbulence_.update(scene.material) : 0;
+  passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model, turbulenceGrid},
+                    display.fbo(), width, height, rect,
+                    fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
   times_.diffuseSource = marble ? static_cast<int>(source) : -1;
   times_.postRan = true;
   times_.fxaaRan = fxaa;
@@ -247,7 +249,7 @@ PassTimes Renderer::passTimes(bool wait) {
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
-         (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0);
+         (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
 }
 
 ImageRGBF Renderer::readHdr() {

@@ -26,6 +26,7 @@
 #include "marble/render/post_pass.h"
 #include "marble/render/screen_tiles.h"
 #include "marble/render/subsurface_blur_pass.h"
+#include "marble/render/turbulence_texture.h"
 #include "marble/core/image.h"
 #include "marble/scene/scene.h"
 
@@ -88,6 +89,13 @@ public:
     lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
   }
 
+  // Off: the pattern's turbulence is evaluated per pixel even where a baked grid would give the
+  // same picture (turbulence_texture.h); for comparisons. On by default.
+  void setTurbulenceGridEnabled(bool enabled) {
+    turbulence_.setEnabled(enabled);
+    albedoValid_ = outputValid_ = false;
+  }
+
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
   void reloadShaders();
@@ -106,6 +114,7 @@ private:
   bool aaSpansWholeFrame_ = false;
   const std::vector<ScreenRect>& aaSpans(const glm::mat4& mvp, int width, int height, bool wholeFrame);
   std::optional<EnvironmentMap> environment_;
+  TurbulenceTexture turbulence_;  // the pattern's baked turbulence, kept across shader reloads
   PassTimes times_;
   // What the cached passes were made from.
   bool lightValid_ = false, geometryValid_ = false;

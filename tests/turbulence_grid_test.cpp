@@ -1,0 +1,110 @@
+// The baked turbulence grid (noise/turbulence_grid.h): interpolated multilinearly, as the GPU's
+// texture filter does, it gives the reference turbulence at any point -- not only at the
+// texels it was baked at -- within its 16-bit storage's rounding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "marble/noise/marble_pattern.h"
+#include "marble/noise/turbulence_grid.h"
+
+namespace marble {
+namespace {
+
+constexpr float kUnorm16HalfStep = 0.5f / 65535.0f;
+
+// GL_REPEAT + GL_LINEAR on the grid at texel coordinate q (texel i holds the value at q = i).
+float sampleGrid(const std::vector<uint16_t>& grid, int w, int dims, glm::vec3 q) {
+  const glm::vec3 i = glm::floor(q), f = q - i;
+  auto at = [&](int x, int y, int z) {
+    auto wrap = [w](int v) { return ((v % w) + w) % w; };
+    const size_t index = dims == 3 ? (static_cast<size_t>(wrap(z)) * w + wrap(y)) * w + wrap(x)
+                                   : static_cast<size_t>(wrap(y)) * w + wrap(x);
+    return grid[index] / 65535.0;
+  };
+  double v = 0.0;
+  for (int corner = 0; corner < (dims == 3 ? 8 : 4); ++corner) {
+    const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
+    const double weight = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y) * (dims == 3 ? (dz ? f.z : 1.0 - f.z) : 1.0);
+    v += weight * at(static_cast<int>(i.x) + dx, static_cast<int>(i.y) + dy, static_cast<int>(i.z) + dz);
+  }
+  return static_cast<float>(v);
+}
+
+// Largest difference between the interpolated grid and the reference at random points of
+// [-2W, 2W]^n (several periods, negative coordinates included).
+float worstDifference(const Material& m, int points) {
+  const int dims = turbulenceGridDimensions(m);
+  const std::vector<uint16_t> grid = bakeTurbulenceGrid(m);
+  EXPECT_EQ(grid.size(), static_cast<size_t>(std::pow(m.resolution, dims)));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-2.0f * m.resolution, 2.0f * m.resolution);
+  float worst = 0.0f;
+  for (int k = 0; k < points; ++k) {
+    const glm::vec3 q(u(rng), u(rng), dims == 3 ? u(rng) : 0.0f);
+    const float reference = dims == 3 ? turbulence3(m, q) : turbulence(m, glm::vec2(q));
+    worst = std::max(worst, std::fabs(sampleGrid(grid, m.resolution, dims, q) - reference));
+  }
+  return worst;
+}
+
+TEST(TurbulenceGrid, SolidGridInterpolatesToTheReferenceEverywhere) {
+  Material m;
+  m.mapping = PatternMapping::Solid;
+  m.resolution = 64;
+  m.turb_size = 16.0f;
+  m.seed = 0x5eedu;
+  ASSERT_EQ(turbulenceGridDimensions(m), 3);
+  EXPECT_LT(worstDifference(m, 20000), kUnorm16HalfStep + 1e-6f);
+}
+
+TEST(TurbulenceGrid, PlanarGridInterpolatesToTheReferenceEverywhere) {
+  Material m;  // the paper's resolution and octaves
+  m.mapping = PatternMapping::Planar;
+  ASSERT_EQ(turbulenceGridDimensions(m), 2);
+  EXPECT_LT(worstDifference(m, 20000), kUnorm16HalfStep + 1e-6f);
+  m.mapping = PatternMapping::Triplanar;
+  m.turb_size = 1.0f;  // one octave: the white noise itself, interpolated
+  m.resolution = 8;
+  ASSERT_EQ(turbulenceGridDimensions(m), 2);
+  EXPECT_LT(worstDifference(m, 5000), kUnorm16HalfStep + 1e-6f);
+}
+
+TEST(TurbulenceGrid, OnlyExactCasesAreBaked) {
+  Material m;
+  m.mapping = PatternMapping::Solid;
+  EXPECT_EQ(turbulenceGridDimensions(m), 3);
+  Material perlin = m;
+  perlin.basis = NoiseBasis::Perlin;  // the fade curve is not multilinear
+  EXPECT_EQ(turbulenceGridDimensions(perlin), 0);
+  Material notPowerOfTwo = m;
+  notPowerOfTwo.turb_size = 24.0f;  // octaves of 1.5 texels
+  EXPECT_EQ(turbulenceGridDimensions(notPowerOfTwo), 0);
+  Material fractional = m;
+  fractional.turb_size = 0.5f;
+  EXPECT_EQ(turbulenceGridDimensions(fractional), 0);
+  Material notDividing = m;
+  notDividing.resolution = 100;  // 32 does not divide it: the octave's lattice does not wrap at W
+  EXPECT_EQ(turbulenceGridDimensions(notDividing), 0);
+  Material tooLarge = m;
+  tooLarge.resolution = 512;  // 256 MiB
+  EXPECT_EQ(turbulenceGridDimensions(tooLarge), 0);
+  tooLarge.mapping = PatternMapping::Planar;  // 512^2 is small
+  EXPECT_EQ(turbulenceGridDimensions(tooLarge), 2);
+  EXPECT_THROW(bakeTurbulenceGrid(perlin), std::logic_error);
+}
+
+TEST(TurbulenceGrid, KeyChangesOnlyWithWhatTheGridDependsOn) {
+  Material a;
+  Material b = a;
+  b.turb_power = 9.0f;  // applied after the turbulence
+  b.vein_color = {0, 0, 1};
+  b.pattern_scale = 3.0f;
+  EXPECT_EQ(turbulenceGridKey(a), turbulenceGridKey(b));
+  b.seed = a.seed + 1;
+  EXPECT_NE(turbulenceGridKey(a), turbulenceGridKey(b));
+}
+
+}  // namespace
+}  // namespace marble

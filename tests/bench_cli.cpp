@@ -97,6 +97,15 @@ TEST(CliBench, SerialPassesAreTimedByTheWallClock) {
       << "at full resolution the G-buffer's depth serves";
 }
 
+TEST(CliBench, TurbulenceGridCanBeTurnedOffToCompare) {
+  const auto on = benchJson("--motion pattern");
+  const auto off = benchJson("--motion pattern --turbulence-grid off");
+  EXPECT_TRUE(on.value("turbulence_grid", false));
+  EXPECT_FALSE(off.value("turbulence_grid", true));
+  // The grid is GL memory the renderer holds (256^3 x 2 bytes for the default solid marble).
+  EXPECT_GE(on.value("gl_bytes", 0.0) - off.value("gl_bytes", 0.0), 256.0 * 256 * 256 * 2);
+}
+
 TEST(CliBench, OtherModesHaveAnAlbedoPass) {
   const auto j = benchJson("--mode paper --motion pattern");
   EXPECT_EQ(j["pass_runs"].value("albedo", -1), 3);
@@ -129,7 +138,8 @@ TEST(CliBench, TablePrintsSpreadPassesAndMemory) {
 
 TEST(CliBench, BadInputIsOneLineAndExitTwo) {
   for (const std::string& args : {kSmall + " --motion wobble", std::string("bench --width 64 --height 64 --frames 0"), std::string("bench --width 64 --height 64 --warmup -1"),
-                                 kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj"}) {
+                                 kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj",
+                                 kSmall + " --turbulence-grid maybe"}) {
     const auto r = runMarble(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
     EXPECT_EQ(countLines(r.output), 1u) << args << "\n" << r.output;

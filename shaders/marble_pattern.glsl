@@ -74,12 +74,8 @@ float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
 #elif PAT_MAPPING == 0  // PAT_MAP_PLANAR
   return pat_grid_pattern2(P, pat_planar_texel(P, q));
 #else
-  vec3 w = pat_triplanar_weights(objectNormal);
-  float v = 0.0f;
-  if (w.x > 0.0f) v += w.x * pat_grid_pattern2(P, vec2(q.z, q.y));
-  if (w.y > 0.0f) v += w.y * pat_grid_pattern2(P, vec2(q.x, q.z));
-  if (w.z > 0.0f) v += w.z * pat_grid_pattern2(P, vec2(q.x, q.y));
-  return v;
+  return pat_triplanar_mix(pat_triplanar_weights(objectNormal), pat_grid_pattern2(P, vec2(q.z, q.y)),
+                           pat_grid_pattern2(P, vec2(q.x, q.z)), pat_grid_pattern2(P, vec2(q.x, q.y)));
 #endif
 }
 #else

@@ -270,18 +270,17 @@ vec3 pat_triplanar_weights(vec3 objectNormal) {
   return w / max(w.x + w.y + w.z, 1e-20f);
 }
 
+// The three planes' values (zy, xz, xy) blended by pat_triplanar_weights.
+float pat_triplanar_mix(vec3 w, float zy, float xz, float xy) { return w.x * zy + w.y * xz + w.z * xy; }
+
 // Value before colouring, in [0,1]. (marble_pattern.glsl repeats this dispatch once, with the
 // turbulence read from its baked grid instead of evaluated.)
 float pat_value_at(PatParams P, vec3 objectPos, vec3 objectNormal) {
   vec3 q = pat_texel_pos(P, objectPos);
   if (P.mapping == PAT_MAP_SOLID) return pat_pattern3(P, q);
   if (P.mapping == PAT_MAP_PLANAR) return pat_pattern2(P, pat_planar_texel(P, q));
-  vec3 w = pat_triplanar_weights(objectNormal);
-  float v = 0.0f;
-  if (w.x > 0.0f) v += w.x * pat_pattern2(P, vec2(q.z, q.y));
-  if (w.y > 0.0f) v += w.y * pat_pattern2(P, vec2(q.x, q.z));
-  if (w.z > 0.0f) v += w.z * pat_pattern2(P, vec2(q.x, q.y));
-  return v;
+  return pat_triplanar_mix(pat_triplanar_weights(objectNormal), pat_pattern2(P, vec2(q.z, q.y)),
+                           pat_pattern2(P, vec2(q.x, q.z)), pat_pattern2(P, vec2(q.x, q.y)));
 }
 
 // ---- colour ramp ----------------------------------------------------------------------------

@@ -20,13 +20,10 @@ int largestChannelDifference(const ImageRGBA8& a, const ImageRGBA8& b) {
   return worst;
 }
 
-// The second frame that evaluates the pattern (the first only asks for the grid).
 ImageRGBA8 renderWithGrid(const Scene& s, bool grid, size_t* gridBytes = nullptr) {
   Renderer renderer;
   renderer.setTurbulenceGridEnabled(grid);
   renderer.setMesh(builtinMesh("sculpture"));
-  renderImage(renderer, s);
-  renderer.invalidate();
   ImageRGBA8 image = renderImage(renderer, s);
   if (gridBytes) *gridBytes = renderer.glBytes();
   return image;
@@ -58,38 +55,17 @@ TEST(TurbulenceGridRender, PicturesMatchPerPixelEvaluation) {
   }
 }
 
-TEST(TurbulenceGridRender, OneFrameBakesNoGrid) {
-  glContext();
-  Scene s;
-  s.mesh = "builtin:sculpture";
-  s.render.width = s.render.height = 32;
-  Renderer once, never;
-  never.setTurbulenceGridEnabled(false);
-  once.setMesh(builtinMesh("sculpture"));
-  never.setMesh(builtinMesh("sculpture"));
-  renderImage(once, s);
-  renderImage(never, s);
-  EXPECT_EQ(once.glBytes(), never.glBytes()) << "a single picture (marble render) does not pay the bake";
-}
-
 TEST(TurbulenceGridRender, GridIsKeptWhileOnlyWhatFollowsTheTurbulenceChanges) {
   glContext();
   TurbulenceTexture grid;
   Material m;
-  EXPECT_EQ(grid.update(m), 0u) << "the first request is evaluated per pixel";
-  EXPECT_EQ(grid.bytes(), 0u) << "and bakes nothing";
   const GLuint first = grid.update(m);
-  ASSERT_NE(first, 0u) << "the second bakes";
+  ASSERT_NE(first, 0u);
   m.turb_power = 8.0f;
   m.vein_color = {0.1f, 0.2f, 0.3f};
   EXPECT_EQ(grid.update(m), first) << "not baked again";
-  Material other = m;
-  other.seed = m.seed + 1;
-  EXPECT_EQ(grid.update(other), 0u) << "a new turbulence: asked for once, not baked yet";
-  EXPECT_EQ(grid.update(m), first) << "the held grid still serves its own turbulence";
   m.basis = NoiseBasis::Perlin;
   EXPECT_EQ(grid.update(m), 0u) << "Perlin's basis is evaluated per pixel";
-  EXPECT_EQ(grid.update(m), 0u);
   grid.setEnabled(false);
   m.basis = NoiseBasis::Value;
   EXPECT_EQ(grid.update(m), 0u);

@@ -7,10 +7,6 @@ GLuint TurbulenceTexture::update(const Material& m) {
   const TurbulenceGridKey key = turbulenceGridKey(m);
   if (key.dimensions == 0) return 0;
   if (texture_ && key == key_) return texture_.id();
-  const bool askedBefore = requested_ && key == requestedKey_;
-  requestedKey_ = key;
-  requested_ = true;
-  if (!askedBefore) return 0;
   const std::vector<uint16_t> grid = bakeTurbulenceGrid(m);
   const int w = m.resolution;
   // 16-bit unsigned normalized: turbulence is in [0,1); half a step is 7.6e-6. Linear

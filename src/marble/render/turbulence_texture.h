@@ -15,11 +15,9 @@ inline constexpr GLuint kTurbulenceGridUnit = 8;
 
 class TurbulenceTexture {
 public:
-  // The grid of m's turbulence, or 0: the pattern is then evaluated per pixel. 0 when m's
-  // turbulence has no exact grid (or grids are disabled), and the first time a turbulence is
-  // asked for: a single frame (`marble render`) or a seed being clicked through would pay the
-  // bake (256^3: ~0.36 s on two cores) for one use. The second request for the same turbulence
-  // bakes it; later ones return it.
+  // The grid of m's turbulence, baked now if it is not the one held (a 256^3 grid: about
+  // 0.2 s on two cores), or 0 when m's turbulence has no exact grid (or grids are disabled):
+  // the pattern is then evaluated per pixel.
   GLuint update(const Material& m);
   // Off: every pass evaluates the pattern per pixel (to compare the two; the pictures agree
   // within rounding, tests/turbulence_grid_gl_test.cpp).
@@ -28,9 +26,7 @@ public:
 
 private:
   bool enabled_ = true;
-  TurbulenceGridKey key_;          // what texture_ holds
-  TurbulenceGridKey requestedKey_;  // the turbulence last asked for
-  bool requested_ = false;
+  TurbulenceGridKey key_;
   gl::Texture texture_;
   size_t bytes_ = 0;
 };

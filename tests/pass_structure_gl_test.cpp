@@ -129,6 +129,25 @@ TEST_F(PassFixture, ModesShareTheAlbedoWhicheverPassWroteIt) {
   EXPECT_EQ(renderer.passTimes(true).diffuseSource, static_cast<int>(DiffuseSource::StoredAlbedo));
 }
 
+// Views of buffers show no pattern: they do not evaluate it, and a shading mode after them
+// still gets the right albedo.
+TEST_F(PassFixture, BufferViewsDoNotEvaluateThePattern) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 48);
+  for (RenderMode mode : {RenderMode::Normal, RenderMode::Depth, RenderMode::Position, RenderMode::Thickness,
+                          RenderMode::LightDepth}) {
+    s.render.mode = mode;
+    renderImage(renderer, s);
+    EXPECT_FALSE(renderer.passTimes(true).albedoRan) << renderModeName(mode);
+  }
+  s.render.mode = RenderMode::Paper;
+  const ImageRGBA8 paper = renderImage(renderer, s);
+  EXPECT_TRUE(renderer.passTimes(true).albedoRan);
+  EXPECT_EQ(meanAbsDiff(paper, freshRender("sphere", s)), 0.0);
+  s.render.mode = RenderMode::Marble;
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, s), freshRender("sphere", s)), 0.0);
+}
+
 TEST_F(PassFixture, ScreenRectangleHoldsEveryPixelOfTheObject) {
   // In the `normal` view every covered pixel differs from the background; all of them must lie
   // inside the rectangle the screen passes are scissored to (else the object would be cut).

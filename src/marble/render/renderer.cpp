@@ -128,7 +128,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
   // `marble` evaluates the pattern in its post pass (DiffuseSource::Pattern); the other modes
   // read the albedo in the lighting pass.
-  if (!albedoValid_ && !marble) {
+  if (!albedoValid_ && !marble && modeShowsAlbedo(scene.render.mode)) {
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
                         scene.material, turbulence_.update(scene.material), rect);
     albedoValid_ = true;
@@ -192,7 +192,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   times_.diffuseSource = marble ? static_cast<int>(source) : -1;
   times_.postRan = true;
   times_.fxaaRan = fxaa;
-  albedoValid_ = true;
+  if (marble) albedoValid_ = true;  // the post pass wrote it (other modes: the albedo pass, or not needed)
   diffuseValid_ = marble;  // other modes do not write it
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,

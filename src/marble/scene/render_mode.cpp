@@ -22,6 +22,20 @@ RenderMode parseRenderMode(const std::string& name) {
 
 const std::string& renderModeName(RenderMode mode) { return renderModeNames().at(static_cast<size_t>(mode)); }
 
+bool modeShowsAlbedo(RenderMode mode) {
+  switch (mode) {
+    case RenderMode::LightDepth:
+    case RenderMode::Thickness:
+    case RenderMode::Depth:
+    case RenderMode::Position:
+    case RenderMode::Normal:
+    case RenderMode::Floor:
+      return false;
+    default:
+      return true;
+  }
+}
+
 Antialias parseAntialias(const std::string& name) {
   if (name == "fxaa") return Antialias::Fxaa;
   if (name == "none") return Antialias::None;

@@ -38,6 +38,10 @@ enum class RenderMode {
 const std::vector<std::string>& renderModeNames();  // in enum order
 RenderMode parseRenderMode(const std::string& name);  // throws std::invalid_argument
 const std::string& renderModeName(RenderMode mode);
+// Whether the mode's picture contains the marble pattern's colour (the shading modes and
+// `albedo`); the views of buffers (light depth, thickness, depth, position, normal) and `floor`
+// do not, so the pattern is not evaluated for them.
+bool modeShowsAlbedo(RenderMode mode);
 
 // Light from around the object (`marble` mode): the built-in procedural studio, nothing, or an
 // equirectangular Radiance .hdr file.

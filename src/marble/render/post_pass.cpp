@@ -92,8 +92,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
   glBindTextures(0, 7, textures);
   const int envKind = environmentKind(settings, view.environment);
-  const GLuint grid = marble && source == DiffuseSource::Pattern ? view.turbulenceGrid : 0;
-  const gl::Program& p = program(marble, envKind, source, scene.material, grid);
+  const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid);
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_luma_alpha", output == Output::DisplayWithLuma ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);
@@ -106,7 +105,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     p.set("u_roughness", scene.material.roughness);
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
-    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material, grid);
+    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material, view.turbulenceGrid);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

@@ -29,8 +29,8 @@ struct PostView {
   float lightTexelWorld;
   const EnvironmentMap* environment;  // the loaded map, or null
   const glm::mat4& model;
-  // The baked turbulence (render/turbulence_texture.h) for frames that evaluate the pattern;
-  // 0: evaluated per pixel.
+  // The baked turbulence (render/turbulence_texture.h), read by DiffuseSource::Pattern frames
+  // (ignored by the others); 0: the pattern evaluated per pixel.
   GLuint turbulenceGrid = 0;
 };
 

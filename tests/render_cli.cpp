@@ -16,9 +16,9 @@ void writeFile(const std::filesystem::path& p, const std::string& bytes) {
   std::ofstream(p, std::ios::binary) << bytes;
 }
 
-// The background of the default scene (the paper's brown) as 8-bit.
+// The background of the default (showcase) scene, charcoal (0.10, 0.10, 0.11), as 8-bit.
 bool isBackground(const glm::u8vec4& px) {
-  return std::abs(px.r - 48) <= 2 && std::abs(px.g - 28) <= 2 && std::abs(px.b - 8) <= 2;
+  return std::abs(px.r - 26) <= 2 && std::abs(px.g - 26) <= 2 && std::abs(px.b - 28) <= 2;
 }
 
 }  // namespace

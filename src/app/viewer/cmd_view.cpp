@@ -59,12 +59,16 @@ void installCallbacks(GLFWwindow* w) {
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     auto* st = static_cast<ViewerState*>(glfwGetWindowUserPointer(win));
     if (count > 0) {
-      // A Radiance .hdr becomes the environment; anything else is tried as a mesh.
+      // A Radiance .hdr becomes the environment, a scene or a marble PNG the scene; anything else
+      // is tried as a mesh.
       std::string ext = std::filesystem::path(paths[0]).extension().string();
       for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (ext == ".hdr") {
         st->environmentPathInput = paths[0];
         st->requestEnvironmentLoad = true;
+      } else if (ext == ".json" || ext == ".png") {  // a scene, or a picture marble rendered (its scene)
+        st->scenePathInput = paths[0];
+        st->requestLoadScene = true;
       } else {
         st->meshPathInput = paths[0];
         st->requestMeshLoad = true;
@@ -177,8 +181,8 @@ int runViewCommand(const ViewOptions& o) {
       if (!ImGui::IsAnyItemActive() && !mouse.dragging()) s.undo.commit(currentEdit(s));
       ImGui::Render();
 
+      runFileRequests(renderer, s);  // first: a mesh loaded now is framed below, before it is drawn
       if (std::exchange(s.requestFrame, false)) frameObject(s, rect.aspect());
-      runFileRequests(renderer, s);
       if (s.vsync != vsyncApplied) {
         glfwSwapInterval(s.vsync ? 1 : 0);
         vsyncApplied = s.vsync;

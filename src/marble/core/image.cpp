@@ -9,12 +9,15 @@
 #include <ImfStringAttribute.h>
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
 
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
+#include "marble/core/png_text.h"
 
 namespace marble {
 
@@ -26,13 +29,14 @@ std::string firstLine(std::string what) {
 }
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image, const std::vector<PngText>& text) {
   std::string bytes;
   auto sink = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
   if (!stbi_write_png_to_func(sink, &bytes, image.width, image.height, 4, image.pixels.data(), image.width * 4))
     throw InputError(path.string(), "", "PNG encoding failed");
+  for (const auto& t : text) bytes = insertPngText(bytes, t.keyword, t.text);
   writeFileAtomically(path, bytes);
 }
 
@@ -43,6 +47,20 @@ ImageRGBA8 readPng(const std::filesystem::path& path) {
   ImageRGBA8 img{w, h, std::vector<uint8_t>(data, data + static_cast<size_t>(w) * h * 4)};
   stbi_image_free(data);
   return img;
+}
+
+std::optional<std::string> readPngText(const std::filesystem::path& path, const std::string& keyword) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string(), "", "is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open for reading");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  try {
+    return findPngText(bytes, keyword);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path.string(), "", e.what());
+  }
 }
 
 void flipRows(ImageRGBA8& image) {

@@ -93,9 +93,12 @@ constexpr int kMaxRenderSize = 8192;
 // naming the file and the field ("scene.json: camera.fov_y_deg: expected a number in
 // (1, 179), got 500"); unknown keys are appended to `warnings`.
 Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings);
+// The same for scene JSON already read (`path` names it in messages; relative paths are
+// resolved against its folder).
+Scene loadSceneText(const std::string& text, const std::filesystem::path& path, std::vector<std::string>& warnings);
 
-// Interprets a command-line input: a .json scene, a mesh file (default scene around it),
-// or empty (the built-in default scene).
+// Interprets a command-line input: a .json scene, a PNG written by `marble render` (the scene
+// it carries), a mesh file (default scene around it), or empty (the built-in default scene).
 Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings);
 
 // Resolves Scene::mesh and loads it (builtin:NAME or a file).

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "marble/core/error.h"
+#include "marble/core/image.h"
+#include "marble/scene/scene_io.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/scene.h"
 
@@ -205,8 +207,11 @@ std::string readText(const std::filesystem::path& path) {
 }  // namespace
 
 Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+  return loadSceneText(readText(path), path, warnings);
+}
+
+Scene loadSceneText(const std::string& text, const std::filesystem::path& path, std::vector<std::string>& warnings) {
   const std::string file = path.string();
-  const std::string text = readText(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
   json root;
   try {
@@ -250,6 +255,11 @@ Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings
   std::string ext = p.extension().string();
   for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   if (ext == ".json") return loadScene(p, warnings);
+  if (ext == ".png") {
+    const auto text = readPngText(p, kPngSceneKeyword);
+    if (!text) throw InputError(input, "", "carries no marble scene (only PNGs written by `marble render` do)");
+    return loadSceneText(*text, p, warnings);
+  }
   Scene scene;
   scene.mesh = input;
   return scene;

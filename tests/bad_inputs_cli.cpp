@@ -146,6 +146,7 @@ void writeInputs(const fs::path& dir) {
   // A valid 1x1 PNG without text chunks (written as marble writes one, without a scene).
   marble::writePng(dir / "plain.png", marble::ImageRGBA8{1, 1, {0, 0, 0, 255}});
   put("notpng.png", "just text");
+  put("groundtype.json", R"({"render": {"ground": "yes"}})");
   put("envsky.json", R"({"render": {"environment": "sky"}})");
 }
 
@@ -335,6 +336,11 @@ const std::vector<Row>& rows() {
        "marble render: --background: expected R,G,B (three numbers in [0, 1]), got \"1,2,3\""},
       {"EnvironmentHdrMissing", "--environment of a missing .hdr", "render --environment nothere.hdr" + kSmall, 2,
        "marble render: nothere.hdr: file not found"},
+      {"GroundNotOnOff", "--ground yes", "render --ground yes" + kSmall, 2, "marble render: --ground: expected on or off, got \"yes\""},
+      {"BackdropNotOnOff", "--backdrop 1", "render --backdrop 1" + kSmall, 2, "marble render: --backdrop: expected on or off, got \"1\""},
+      {"BackdropBlurRange", "--backdrop-blur 2", "render --backdrop-blur 2" + kSmall, 2, "marble render: --backdrop-blur: expected a number in [0, 1]"},
+      {"SceneGroundType", "scene with \"ground\": \"yes\"", "render groundtype.json" + kSmall, 2,
+       "marble render: groundtype.json: render.ground: expected true or false, got string \"yes\""},
       {"QualityUnknown", "--quality ultra", "render --quality ultra" + kSmall, 2, "marble render: --quality: expected draft or final, got \"ultra\""},
       {"TurntableZero", "--turntable 0", "render --turntable 0 -o frames --width 16 --height 16", 2,
        "marble render: --turntable: expected 1 to 3600 frames, got 0"},

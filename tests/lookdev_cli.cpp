@@ -3,7 +3,10 @@
 // turntables write numbered frames (and a video when ffmpeg is installed); --quality final.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+
+#include <glm/glm.hpp>
 
 #include "cli_support.h"
 #include "marble/core/image.h"
@@ -72,10 +75,10 @@ TEST(CliLookdev, SizeMmIsMmPerUnitTimesTwo) {
 
 TEST(CliLookdev, ExposureAndBackground) {
   const auto dir = tempDir("lookdev-exposure");
-  const auto base = render(dir, "0.png", "--background 0,0,0");
-  const auto brighter = render(dir, "1.png", "--background 0,0,0 --exposure 1");
+  const auto base = render(dir, "0.png", "builtin:torus --background 0,0,0");
+  const auto brighter = render(dir, "1.png", "builtin:torus --background 0,0,0 --exposure 1");
   EXPECT_GT(meanLuma(brighter), meanLuma(base) * 1.1);
-  const auto blue = render(dir, "b.png", "--background 0,0,1");
+  const auto blue = render(dir, "b.png", "builtin:torus --background 0,0,1");
   const auto corner = blue.at(0, 0);
   EXPECT_EQ(corner.r, 0);
   EXPECT_EQ(corner.g, 0);
@@ -135,5 +138,48 @@ TEST(CliLookdev, TurntableVideoWithFfmpeg) {
     if (std::string(ext) == ".mp4") EXPECT_EQ(head.substr(4, 4), "ftyp");
     else EXPECT_EQ(head.substr(8, 4), "WEBP");
   }
+  std::filesystem::remove_all(dir);
+}
+
+namespace {
+// The pixel where a world point appears in a square image of the default camera (Scene{}'s:
+// at (0, 0.8, 4.2) looking at the origin, 40 degrees), top row first.
+glm::ivec2 pixelOf(const glm::vec3& p, int size) {
+  const glm::vec3 eye(0.0f, 0.8f, 4.2f);
+  const glm::vec3 f = glm::normalize(-eye), r = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0))), u = glm::cross(r, f);
+  const glm::vec3 d = p - eye;
+  const float t = std::tan(glm::radians(20.0f));
+  const float x = glm::dot(d, r) / glm::dot(d, f) / t, y = glm::dot(d, u) / glm::dot(d, f) / t;
+  return {static_cast<int>((x * 0.5f + 0.5f) * size), static_cast<int>((0.5f - y * 0.5f) * size)};
+}
+int luma(const glm::u8vec4& c) { return c.r + c.g + c.b; }
+}  // namespace
+
+TEST(CliLookdev, GroundReceivesTheObjectsShadow) {
+  const auto dir = tempDir("lookdev-ground");
+  const std::string sphere = "builtin:sphere --light top --background 0,0,0";
+  const auto ground = render(dir, "g.png", sphere + " --ground on");
+  // The unit sphere stands on y = -1; the light straight above shadows the floor within radius 1.
+  const glm::ivec2 shadowed = pixelOf({0.0f, -1.0f, 0.8f}, 48), lit = pixelOf({1.8f, -1.0f, 0.8f}, 48);
+  EXPECT_GT(luma(ground.at(lit.x, lit.y)), 30) << "the lit floor shows";
+  EXPECT_LT(luma(ground.at(shadowed.x, shadowed.y)), luma(ground.at(lit.x, lit.y)) * 0.6) << "the shadow under the sphere";
+  // Negative control: without the ground both points are the background.
+  const auto flat = render(dir, "f.png", sphere);
+  EXPECT_EQ(luma(flat.at(lit.x, lit.y)), 0);
+  EXPECT_EQ(luma(flat.at(shadowed.x, shadowed.y)), 0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliLookdev, BackdropShowsTheEnvironmentBehindTheObject) {
+  const auto dir = tempDir("lookdev-backdrop");
+  const std::string args = "builtin:sphere --background 0,0,1";
+  const auto plain = render(dir, "p.png", args);
+  const auto backdrop = render(dir, "b.png", args + " --backdrop on --backdrop-blur 0.5");
+  EXPECT_EQ(plain.at(2, 2), glm::u8vec4(0, 0, 255, 255));
+  const auto c = backdrop.at(2, 2);
+  EXPECT_LT(std::abs(int(c.r) - int(c.b)), 12) << "the studio's grey, not the blue background";
+  // With no environment there is nothing to show: the background colour stays.
+  const auto none = render(dir, "n.png", args + " --backdrop on --environment none");
+  EXPECT_EQ(none.at(2, 2), glm::u8vec4(0, 0, 255, 255));
   std::filesystem::remove_all(dir);
 }

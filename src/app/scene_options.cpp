@@ -50,6 +50,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
                  "so a small object glows and a large one is opaque)");
   cmd.add_option("--exposure", o.exposure, "Exposure in stops (EV; +1 doubles the light; default: the scene's, 0)");
   cmd.add_option("--background", o.background, "Background colour R,G,B in [0, 1], as displayed (default: the scene's)");
+  cmd.add_option("--backdrop", o.backdrop, "on: show the environment (studio or map) behind the object instead of the background colour (marble mode)");
+  cmd.add_option("--backdrop-blur", o.backdropBlur, "Blur of the backdrop, 0 (sharp) to 1 (default 0.3); implies --backdrop on");
+  cmd.add_option("--ground", o.ground, "on: a floor under the object receiving its shadow and a soft contact shadow (marble mode)");
 }
 
 namespace {
@@ -148,6 +151,23 @@ void applyLook(const SceneOptions& o, Scene& scene) {
   }
 }
 
+bool onOff(const char* flag, const std::string& value) {
+  if (value == "on") return true;
+  if (value == "off") return false;
+  throw InputError(flag, "", "expected on or off, got \"" + value + "\"");
+}
+
+void applyStage(const SceneOptions& o, Scene& scene) {
+  if (o.backdropBlur) {
+    if (!std::isfinite(*o.backdropBlur) || *o.backdropBlur < 0.0f || *o.backdropBlur > 1.0f)
+      throw InputError("--backdrop-blur", "", "expected a number in [0, 1]");
+    scene.render.backdrop_blur = *o.backdropBlur;
+    scene.render.backdrop = true;
+  }
+  if (!o.backdrop.empty()) scene.render.backdrop = onOff("--backdrop", o.backdrop);
+  if (!o.ground.empty()) scene.render.ground = onOff("--ground", o.ground);
+}
+
 bool namesHdrFile(const std::string& s) {
   if (s.size() < 4) return false;
   std::string ext = s.substr(s.size() - 4);
@@ -218,6 +238,7 @@ Scene buildScene(const SceneOptions& o) {
   applyCamera(o, scene);  // before the light: the light's azimuth is relative to the camera's
   applyLight(o, scene);
   applyLook(o, scene);
+  applyStage(o, scene);
   if (!o.preset.empty()) scene.material = loadPreset(o.preset);
   for (const auto& kv : o.sets) {
     const auto eq = kv.find('=');

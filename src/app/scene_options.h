@@ -33,6 +33,9 @@ struct SceneOptions {
   std::optional<float> sizeMm;     // the object's largest extent in mm (mm_per_unit = size / 2)
   std::optional<float> exposure;   // stops
   std::string background;          // R,G,B in [0, 1], as displayed
+  std::string backdrop;            // on | off: the environment seen behind the object
+  std::optional<float> backdropBlur;
+  std::string ground;              // on | off: a floor with the object's shadow
   // Without an input: the showcase scene (render, view) or the fixed built-in Scene{} (bench,
   // whose figures must stay comparable).
   bool showcaseWhenEmpty = true;

@@ -70,6 +70,11 @@ struct RenderSettings {
   Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
   std::string environment_map;                // the .hdr (resolved against the scene's folder); used when Map
   float environment_rotation_deg = 0.0f;      // turns the map about +Y (yaw)
+  // The stage (`marble` only; render/stage_pass.h): the environment seen behind the object
+  // instead of `background`, blurred by a GGX roughness; a floor under the object with its shadow.
+  bool backdrop = false;
+  float backdrop_blur = 0.3f;                 // 0 sharp .. 1 very blurred
+  bool ground = false;
   bool operator==(const RenderSettings&) const = default;
 };
 

@@ -52,6 +52,9 @@ ojson renderObject(const RenderSettings& r, const std::filesystem::path& scenePa
   // The map is kept while another environment is chosen, so switching back finds it.
   if (!r.environment_map.empty()) j["environment_map"] = fileField(r.environment_map, scenePath);
   j["environment_rotation_deg"] = number(r.environment_rotation_deg);
+  j["backdrop"] = r.backdrop;
+  j["backdrop_blur"] = number(r.backdrop_blur);
+  j["ground"] = r.ground;
   return j;
 }
 

@@ -73,6 +73,13 @@ public:
     out = r;
   }
 
+  void boolean(const std::string& key, bool& out) {
+    const json* v = find(key);
+    if (!v) return;
+    if (!v->is_boolean()) fail(key, "expected true or false, got " + describe(*v));
+    out = v->get<bool>();
+  }
+
   bool string(const std::string& key, std::string& out) {
     const json* v = find(key);
     if (!v) return false;
@@ -179,6 +186,9 @@ void readRender(const json& j, const std::filesystem::path& scenePath, RenderSet
   if (rs.environment == Environment::Map && rs.environment_map.empty())
     r.fail("environment", "\"map\" needs render.environment_map (an equirectangular .hdr file)");
   r.number("environment_rotation_deg", rs.environment_rotation_deg, -360.0f, 360.0f);
+  r.boolean("backdrop", rs.backdrop);
+  r.number("backdrop_blur", rs.backdrop_blur, 0.0f, 1.0f);
+  r.boolean("ground", rs.ground);
   std::string mode;
   if (r.string("mode", mode)) {
     try {

@@ -14,8 +14,10 @@ Scene showcaseScene() {
   // Key light behind and above, a little to the side: the thin parts glow towards the camera
   // while the studio environment lights and reflects in the faces turned to it.
   placeLight(s, 150.0f, 35.0f);
-  s.render.background = {0.10f, 0.10f, 0.11f};  // a neutral charcoal studio backdrop
+  s.render.background = {0.10f, 0.10f, 0.11f};  // charcoal, where the studio's floor fades out
   s.render.environment = Environment::Studio;
+  s.render.backdrop = true;  // the studio itself behind the object, softly blurred
+  s.render.ground = true;    // standing on the floor, with its shadow
   s.render.environment_intensity = 0.8f;
   return s;
 }

@@ -51,20 +51,26 @@ float ground_visibility(vec3 P) {
   return texture(u_light_shadow, uvz);
 }
 
+// exp(-h / 0.18) of the object's height h above the floor at xz (0 outside the map).
+float closeness(vec2 xz) {
+  vec4 clip = u_bottom_view_proj * vec4(xz.x, u_ground_y, xz.y, 1.0);
+  vec2 uv = clip.xy * 0.5 + 0.5;  // orthographic: w = 1
+  float h = max(texture(u_bottom_distance, uv).r - u_ground_y, 0.0);
+  return all(lessThanEqual(abs(clip.xy), vec2(1.0))) ? exp(-h / 0.18) : 0.0;
+}
+
+// The centre (weight 2), then rings of six at radii 0.2 and 0.5, the outer one turned by 30
+// degrees; written out, not looped over an array: llvmpipe indexes arrays lane by lane.
 float contact_occlusion(vec3 P) {
-  float occluded = 0.0;
-  for (int i = 0; i < 13; ++i) {
-    // The centre, then two rings of six at radii 0.2 and 0.5 (the outer ring turned by 30 deg).
-    float ring = i == 0 ? 0.0 : i < 7 ? 0.2 : 0.5;
-    float a = float(i) * (PI / 3.0) + (i >= 7 ? PI / 6.0 : 0.0);
-    vec2 xz = P.xz + ring * vec2(cos(a), sin(a));
-    vec4 clip = u_bottom_view_proj * vec4(xz.x, u_ground_y, xz.y, 1.0);
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
-    float h = max(texture(u_bottom_distance, uv).r - u_ground_y, 0.0);
-    occluded += (i == 0 ? 2.0 : 1.0) * exp(-h / 0.18);
-  }
-  return 1.0 - 0.85 * occluded / 14.0;
+  const float a = 0.2, b = 0.1, c = 0.17320508;    // 0.2 (1, 0), 0.2 (cos 60, sin 60)
+  const float d = 0.43301270, e = 0.25, f = 0.5;   // 0.5 (cos 30, sin 30), 0.5 (0, 1)
+  vec2 p = P.xz;
+  float sum = 2.0 * closeness(p) +
+              closeness(p + vec2(a, 0.0)) + closeness(p + vec2(b, c)) + closeness(p + vec2(-b, c)) +
+              closeness(p + vec2(-a, 0.0)) + closeness(p + vec2(-b, -c)) + closeness(p + vec2(b, -c)) +
+              closeness(p + vec2(d, e)) + closeness(p + vec2(0.0, f)) + closeness(p + vec2(-d, e)) +
+              closeness(p + vec2(-d, -e)) + closeness(p + vec2(0.0, -f)) + closeness(p + vec2(d, -e));
+  return 1.0 - 0.85 * sum / 14.0;
 }
 
 vec3 display(vec3 linear) { return srgb_encode(pbr_neutral(linear * u_exposure_scale)); }

@@ -110,7 +110,9 @@ int runRenderCommand(const RenderOptions& o) {
                   t.lightDepthMs, t.geometryMs, t.lightingMs,
                   scene.render.mode == RenderMode::Marble ? t.subsurfaceBlurMs : 0.0, t.postMs);
       if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
-      else if (scene.render.antialias == Antialias::Fxaa) std::printf("fxaa             %8.2f\n", t.fxaaMs);
+      if (t.stageRan) std::printf("stage            %8.2f\n", t.stageMs);
+      if (scene.render.mode != RenderMode::Floor && scene.render.antialias == Antialias::Fxaa)
+        std::printf("fxaa             %8.2f\n", t.fxaaMs);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "
               << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles";

@@ -3,6 +3,7 @@
 
 #include <iostream>
 
+#include "cmd_bake.h"
 #include "cmd_bench.h"
 #include "cmd_compare.h"
 #include "cmd_presets.h"
@@ -45,6 +46,12 @@ int main(int argc, char** argv) {
   textureCmd->add_option("--preset", texture.preset, "Material preset");
   textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
 
+  BakeCommandOptions bake;
+  auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "
+                                              "base colour, metallic-roughness and thickness PNGs and material.json");
+  addBakeOptions(*bakeCmd, bake);
+  bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
+
   app.add_subcommand("presets", "List the built-in material presets");
 
   BenchOptions bench;
@@ -72,6 +79,7 @@ int main(int argc, char** argv) {
   if (renderCmd->parsed()) return runRenderCommand(render);
   if (viewCmd->parsed()) return runViewCommand(view);
   if (textureCmd->parsed()) return runTextureCommand(texture);
+  if (bakeCmd->parsed()) return runBakeCommand(bake);
   if (app.got_subcommand("presets")) return runPresetsCommand();
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);

@@ -26,13 +26,19 @@ std::string firstLine(std::string what) {
 }
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+std::string encodePng(const ImageRGBA8& image) {
   std::string bytes;
   auto sink = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
   if (!stbi_write_png_to_func(sink, &bytes, image.width, image.height, 4, image.pixels.data(), image.width * 4))
-    throw InputError(path.string(), "", "PNG encoding failed");
+    bytes.clear();
+  return bytes;
+}
+
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+  const std::string bytes = encodePng(image);
+  if (bytes.empty()) throw InputError(path.string(), "", "PNG encoding failed");
   writeFileAtomically(path, bytes);
 }
 

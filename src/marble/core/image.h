@@ -3,6 +3,7 @@
 // written atomically.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -27,6 +28,8 @@ struct ImageRGBF {
 };
 
 void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
+// The PNG file's bytes (for files written together, or embedded in a .glb). Deterministic.
+std::string encodePng(const ImageRGBA8& image);
 ImageRGBA8 readPng(const std::filesystem::path& path);                     // throws InputError
 // Linear half-float RGBA; A is image.alpha (1 everywhere when it is empty). A file written with
 // alpha says so in its header (kExrCoverageAttribute), so that a reader can tell coverage that

@@ -35,7 +35,7 @@ int runBakeCommand(const BakeCommandOptions& o) {
     if (o.supersample < 1 || o.supersample > 4)
       throw InputError("--supersample", "", "expected 1, 2, 3 or 4, got " + std::to_string(o.supersample));
     const UvSource uvSource = parseUvSource(o.uvFrom);
-    if (o.outDir.empty()) throw InputError("-o", "", "an output folder is required (e.g. -o textures)");
+    checkOutputFolder(o.outDir);
     const auto start = std::chrono::steady_clock::now();
     const Mesh loaded = loadSceneMesh(scene);
     BakeOptions options;
@@ -43,7 +43,6 @@ int runBakeCommand(const BakeCommandOptions& o) {
     options.supersample = o.supersample;
     const BakeMesh mesh = prepareBakeMesh(loaded, uvSource, o.size, options.dilationTexels, scene.mesh);
     if (!mesh.note.empty()) std::cerr << "note: " << scene.mesh << ": " << mesh.note << "\n";
-    prepareOutputFolder(o.outDir);
     ProgressBar bar(o.progress || isatty(STDERR_FILENO));
     options.progress = [&](double f, const char* stage) { return bar.update(f, stage); };
     const TextureSet set = bakeTextureSet(mesh.mesh, scene.material, options);

@@ -5,6 +5,7 @@
 
 #include "cmd_bake.h"
 #include "cmd_bench.h"
+#include "cmd_export.h"
 #include "cmd_compare.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
@@ -52,6 +53,12 @@ int main(int argc, char** argv) {
   addBakeOptions(*bakeCmd, bake);
   bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
 
+  ExportCommandOptions exportOpts;
+  auto* exportCmd = app.add_subcommand("export", "Bake the marble and write the mesh with its textures as glTF 2.0 (.glb or .gltf), "
+                                                  "PBR metallic-roughness with KHR_materials_volume, _diffuse_transmission, _ior, _specular");
+  addBakeOptions(*exportCmd, exportOpts.bake);
+  exportCmd->add_option("-o,--output", exportOpts.output, "Output file, model.glb (binary) or model.gltf (one JSON file)")->required();
+
   app.add_subcommand("presets", "List the built-in material presets");
 
   BenchOptions bench;
@@ -80,6 +87,7 @@ int main(int argc, char** argv) {
   if (viewCmd->parsed()) return runViewCommand(view);
   if (textureCmd->parsed()) return runTextureCommand(texture);
   if (bakeCmd->parsed()) return runBakeCommand(bake);
+  if (exportCmd->parsed()) return runExportCommand(exportOpts);
   if (app.got_subcommand("presets")) return runPresetsCommand();
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);

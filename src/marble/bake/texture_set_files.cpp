@@ -1,5 +1,7 @@
 #include "marble/bake/texture_set_files.h"
 
+#include <unistd.h>
+
 #include <string>
 #include <system_error>
 #include <utility>
@@ -50,18 +52,16 @@ json describeTextureSet(const TextureSet& set, const Material& m, float mmPerUni
   };
 }
 
-void prepareOutputFolder(const std::filesystem::path& dir) {
+void checkOutputFolder(const std::filesystem::path& dir) {
   if (dir.empty()) throw InputError("-o", "", "an output folder is required (e.g. -o textures)");
   std::error_code ec;
-  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
-    throw InputError(dir.string(), "", "exists and is not a folder");
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw InputError(dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
-  // A probe through the same atomic routine the files use: an unwritable folder fails here,
-  // before minutes of baking.
-  const auto probe = dir / ".marble-write-probe";
-  writeFileAtomically(probe, "probe");
-  std::filesystem::remove(probe, ec);
+  std::filesystem::path existing = std::filesystem::absolute(dir, ec);
+  while (!existing.empty() && !std::filesystem::exists(existing, ec) && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!std::filesystem::is_directory(existing, ec))
+    throw InputError(dir.string(), "", "cannot create folder: " + existing.string() + " is not a folder");
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw InputError(dir.string(), "", "cannot create or write the folder: " + existing.string() + " is not writable");
 }
 
 void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, const json& description) {
@@ -71,6 +71,10 @@ void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, co
                                                             {kMaterialFile, description.dump(2) + "\n"}};
   for (const auto& [name, bytes] : files)
     if (bytes.empty()) throw InputError((dir / name).string(), "", "PNG encoding failed");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError(dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
   for (const auto& [name, bytes] : files) writeFileAtomically(dir / name, bytes);
 }
 

@@ -18,11 +18,11 @@ inline constexpr const char* kMaterialFile = "material.json";
 
 nlohmann::json describeTextureSet(const TextureSet& set, const Material& m, float mmPerUnit, const BakeMesh& mesh);
 
-// Creates `dir` if needed and checks that it can be written before anything is encoded or
-// written. Throws InputError(dir, "", problem).
-void prepareOutputFolder(const std::filesystem::path& dir);
+// Checks, creating nothing, that `dir` is or can be made a writable folder: the nearest part of
+// the path that exists must be a folder marble may write in. Throws InputError(dir, "", problem).
+void checkOutputFolder(const std::filesystem::path& dir);
 
-// Encodes every file first, then writes each atomically (core/atomic_file.h).
+// Creates `dir` if needed, encodes every file, then writes each atomically (core/atomic_file.h).
 void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, const nlohmann::json& description);
 
 }  // namespace marble

@@ -5,7 +5,9 @@
 #include <iostream>
 #include <new>
 
+#include "cmd_bake.h"
 #include "cmd_bench.h"
+#include "cmd_export.h"
 #include "cmd_compare.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
@@ -49,6 +51,18 @@ int run(int argc, char** argv) {
   textureCmd->add_option("--preset", texture.preset, "Material preset");
   textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
 
+  BakeCommandOptions bake;
+  auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "
+                                              "base colour, metallic-roughness and thickness PNGs and material.json");
+  addBakeOptions(*bakeCmd, bake);
+  bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
+
+  ExportCommandOptions exportOpts;
+  auto* exportCmd = app.add_subcommand("export", "Bake the marble and write the mesh with its textures as glTF 2.0 (.glb or .gltf), "
+                                                  "PBR metallic-roughness with KHR_materials_volume, _diffuse_transmission, _ior, _specular");
+  addBakeOptions(*exportCmd, exportOpts.bake);
+  exportCmd->add_option("-o,--output", exportOpts.output, "Output file, model.glb (binary) or model.gltf (one JSON file)")->required();
+
   app.add_subcommand("presets", "List the built-in material presets");
 
   BenchOptions bench;
@@ -76,6 +90,8 @@ int run(int argc, char** argv) {
   if (renderCmd->parsed()) return runRenderCommand(render);
   if (viewCmd->parsed()) return runViewCommand(view);
   if (textureCmd->parsed()) return runTextureCommand(texture);
+  if (bakeCmd->parsed()) return runBakeCommand(bake);
+  if (exportCmd->parsed()) return runExportCommand(exportOpts);
   if (app.got_subcommand("presets")) return runPresetsCommand();
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);

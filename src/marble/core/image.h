@@ -27,7 +27,8 @@ struct ImageRGBF {
   std::vector<float> alpha = {};
 };
 
-// The file's bytes, for writing several files together (AtomicFileSet, core/atomic_file.h).
+// The file's bytes, for writing several files together (AtomicFileSet, core/atomic_file.h) or
+// embedding in a .glb. Deterministic.
 std::string encodePng(const ImageRGBA8& image);
 std::string encodeExr(const ImageRGBF& image);
 

@@ -544,7 +544,8 @@ private:
         double len = glm::length(n);
         mesh_.normals.push_back(len > 0.0 && std::isfinite(len) ? glm::vec3(n / len) : glm::vec3(0.0f));
       }
-      if (uv) mesh_.texcoords.emplace_back(uv->component(i, 0), uv->component(i, 1));
+      // glTF's v runs down the image, the mesh's up (mesh.h).
+      if (uv) mesh_.texcoords.emplace_back(uv->component(i, 0), 1.0f - uv->component(i, 1));
     }
     allNormals_ = allNormals_ && nrm.has_value();
     allTexcoords_ = allTexcoords_ && uv.has_value();

@@ -13,7 +13,10 @@ namespace marble {
 struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;    // empty until computed, then one per position
-  std::vector<glm::vec2> texcoords;  // empty, or one per position
+  // Texture coordinates: empty when the file has none, else one per position. OBJ's convention
+  // (and OpenGL's): v = 0 is the image's bottom row. glTF's v (0 = top row) is flipped on load
+  // and on export (bake/gltf_export.cpp).
+  std::vector<glm::vec2> texcoords;
   std::vector<uint32_t> indices;     // three per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }

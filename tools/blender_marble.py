@@ -19,7 +19,8 @@ key of a preset file, and mm_per_unit). The file is imported with Blender's own 
 --render also sets up marble's default scene, in metres: camera at (0, 0.8, 4.2) marble units
 looking at the origin with a 40 degree vertical field of view; a point light at (3, 3, 3) of the
 power that gives marble's irradiance pi I (d0/d)^2 (tools/cycles_reference.py derives it), a dim
-grey world; Cycles on the CPU, Standard view transform, sRGB PNG.
+world that lights the stone (transparent in the picture); Cycles on the CPU, Standard view
+transform, sRGB PNG with alpha.
 """
 import json
 import math
@@ -159,7 +160,8 @@ def setup_scene(bs, mm_per_unit, opts):
     bs.render.resolution_percentage = 100
     bs.view_settings.view_transform = "Standard"
     bs.render.image_settings.file_format = "PNG"
-    bs.render.image_settings.color_mode = "RGB"
+    bs.render.image_settings.color_mode = "RGBA"
+    bs.render.film_transparent = True  # the world lights the stone; the picture's background is the caller's
 
 
 def main():

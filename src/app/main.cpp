@@ -1,7 +1,9 @@
 // marble: a real-time marble renderer. One binary, several commands (see `marble --help`).
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
+#include <new>
 
 #include "cmd_bake.h"
 #include "cmd_bench.h"
@@ -11,11 +13,13 @@
 #include "cmd_render.h"
 #include "cmd_texture.h"
 #include "marble/core/allocator_tuning.h"
+#include "marble/core/message_text.h"
 #include "viewer/cmd_view.h"
 
-int main(int argc, char** argv) {
-  using namespace marble;
-  keepFreedMemoryForReuse();  // before any GL context: llvmpipe frees and re-faults its buffers per frame
+namespace {
+
+int run(int argc, char** argv) {
+  using namespace marble;  // before any GL context: llvmpipe frees and re-faults its buffers per frame
   CLI::App app{"marble - real-time marble rendering: procedural veins, subsurface light, Fresnel reflectance.\n"
                "Without an input, every command uses the built-in default scene."};
   app.require_subcommand(1);
@@ -92,4 +96,24 @@ int main(int argc, char** argv) {
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);
   return 2;
+}
+
+}  // namespace
+
+// Each command reports its own errors (reportErrors: one line, exit 2 for bad input, 1 for the
+// environment); this is the last net, so that no exception ever ends marble with an abort and a
+// core dump: running out of memory while parsing arguments or outside a command's net is one
+// line and exit 1 as well.
+int main(int argc, char** argv) {
+  try {
+    marble::keepFreedMemoryForReuse();  // before any GL context: llvmpipe frees and re-faults its buffers per frame
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("marble: out of memory\n", stderr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "marble: %s\n", marble::printable(e.what(), marble::kMessageLineLimit).c_str());
+  } catch (...) {
+    std::fputs("marble: unexpected internal error (an exception of unknown type)\n", stderr);
+  }
+  return 1;
 }

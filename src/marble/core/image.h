@@ -27,9 +27,12 @@ struct ImageRGBF {
   std::vector<float> alpha = {};
 };
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
-// The PNG file's bytes (for files written together, or embedded in a .glb). Deterministic.
+// The file's bytes, for writing several files together (AtomicFileSet, core/atomic_file.h) or
+// embedding in a .glb. Deterministic.
 std::string encodePng(const ImageRGBA8& image);
+std::string encodeExr(const ImageRGBF& image);
+
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
 ImageRGBA8 readPng(const std::filesystem::path& path);                     // throws InputError
 // Linear half-float RGBA; A is image.alpha (1 everywhere when it is empty). A file written with
 // alpha says so in its header (kExrCoverageAttribute), so that a reader can tell coverage that

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "export_job.h"
 #include "glfw_window.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
@@ -158,6 +159,7 @@ int runViewCommand(const ViewOptions& o) {
     installCallbacks(w);
 
     std::optional<OffscreenTarget> view;  // the 3D view's image, blitted right of the panel
+    BackgroundExport exportJob;  // the Export section's bake: CPU only, on its own thread; cancelled and joined on exit
     MouseControl mouse;
     KeyEdges keys;
     auto last = std::chrono::steady_clock::now();
@@ -179,6 +181,7 @@ int runViewCommand(const ViewOptions& o) {
 
       if (std::exchange(s.requestFrame, false)) frameObject(s, rect.aspect());
       runFileRequests(renderer, s);
+      updateExport(exportJob, s);
       if (s.vsync != vsyncApplied) {
         glfwSwapInterval(s.vsync ? 1 : 0);
         vsyncApplied = s.vsync;

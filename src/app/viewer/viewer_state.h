@@ -14,6 +14,17 @@ namespace marble {
 
 enum class Turntable { Off, Object, Light };
 
+// The Export section's settings and the job's progress (export_job.h does the work).
+struct ExportPanel {
+  std::string path = "marble.glb";
+  int size = 1024;
+  bool textureSet = false;      // a folder of PNGs + material.json instead of a glTF file
+  bool requestStart = false, requestCancel = false;
+  bool running = false;
+  float progress = 0.0f;
+  std::string stage;
+};
+
 struct ViewerState {
   Scene scene;
   Orbit camera;
@@ -37,6 +48,8 @@ struct ViewerState {
   std::string presetName;         // the preset the material started from
   Material presetMaterial;        // what "reset" returns a section to
   UndoStack undo;
+
+  ExportPanel exportPanel;
 
   std::string status;             // last message (errors in red)
   bool statusIsError = false;

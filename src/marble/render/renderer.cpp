@@ -81,20 +81,25 @@ void Renderer::setMesh(const Mesh& mesh) {
 
 void Renderer::makeLightProxy() {
   lightMesh_.reset();
+  lightProxyMesh_ = Mesh();
   lightProxyErrorUnits_ = 0.0f;
   const size_t triangles = cpuMesh_.triangleCount();
   if (!lightProxyEnabled_ || triangles <= kLightProxyMinTriangles) return;
-  const auto target = static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction);
+  const auto target = std::min(kLightProxyMaxTriangles,
+                               static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction));
   SimplifiedMesh proxy = simplifiedMesh(cpuMesh_, target, lightProxyMaxErrorUnits(passes_->lightDepth.size()));
   if (proxy.mesh.triangleCount() >= triangles) return;  // nothing could be collapsed
   lightProxyErrorUnits_ = proxy.errorUnits;
   lightMesh_.emplace(proxy.mesh);
+  lightProxyMesh_ = std::move(proxy.mesh);
 }
 
 void Renderer::setLightProxyEnabled(bool enabled) {
   if (enabled == lightProxyEnabled_) return;
   lightProxyEnabled_ = enabled;
   if (mesh_) makeLightProxy();
+  interactionMesh_.reset();  // it is made from the proxy: made again at its next use
+  interactionIsFull_ = false;
   lightValid_ = lightingValid_ = outputValid_ = false;
 }
 
@@ -109,7 +114,10 @@ const GpuMesh& Renderer::cameraMesh() {
     if (cpuMesh_.triangleCount() <= kInteractionTriangles) {
       interactionIsFull_ = true;
     } else {
-      interactionMesh_.emplace(simplifiedMesh(cpuMesh_, kInteractionTriangles, kInteractionMaxErrorUnits).mesh);
+      // From the light's proxy where there is one: the simplifier's cost grows with what it
+      // starts from (1.6 M triangles: 1.7 s from the mesh, far less from the proxy).
+      const Mesh& from = lightProxyMesh_.indices.empty() ? cpuMesh_ : lightProxyMesh_;
+      interactionMesh_.emplace(simplifiedMesh(from, kInteractionTriangles, kInteractionMaxErrorUnits).mesh);
     }
   }
   return interactionMesh_ ? *interactionMesh_ : *mesh_;

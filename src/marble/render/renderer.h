@@ -134,6 +134,7 @@ private:
   std::optional<GpuMesh> mesh_;
   Mesh cpuMesh_;                          // the reordered mesh, for the simplified copies
   std::optional<GpuMesh> lightMesh_;      // the light's proxy; empty: the light draws mesh_
+  Mesh lightProxyMesh_;                   // its CPU copy (empty without), for the interaction copy
   float lightProxyErrorUnits_ = 0.0f;
   bool lightProxyEnabled_ = true;
   bool drawOrderOptimized_ = true;

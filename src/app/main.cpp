@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "cmd_bake.h"
 #include "cmd_bench.h"
@@ -14,6 +15,7 @@
 #include "cmd_texture.h"
 #include "marble/core/allocator_tuning.h"
 #include "marble/core/message_text.h"
+#include "marble/render/mesh_detail.h"
 #include "viewer/cmd_view.h"
 
 namespace {
@@ -42,6 +44,11 @@ int run(int argc, char** argv) {
   viewCmd->add_option("--screenshot", view.screenshot, "After the last frame, save the whole window (panel included) as PNG");
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from $MARBLE_SHADER_DIR, else the source tree's shaders/");
   viewCmd->add_option("--turntable", view.turntable, "Start turning: off (default), object or light (the panel's turntable)");
+  viewCmd->add_option("--interaction-detail", view.interactionDetail,
+                      "While the camera or object moves, draw a simplified mesh (about " +
+                          std::to_string(kInteractionTriangles) +
+                          " triangles) and the full mesh on the first still frame: auto (default: on above " +
+                          std::to_string(kInteractionMinTriangles) + " triangles), on, off");
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;

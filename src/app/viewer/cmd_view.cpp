@@ -129,6 +129,7 @@ int runViewCommand(const ViewOptions& o) {
       throw InputError("--turntable-speed", "", std::string("expected -3600 to 3600 degrees per second, got ") + got);
     }
     s.turntableDegPerSec = o.turntableSpeed;
+    s.interactionDetail = parseInteractionDetail(o.interactionDetail);
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
@@ -162,6 +163,7 @@ int runViewCommand(const ViewOptions& o) {
     BackgroundExport exportJob;  // the Export section's bake: CPU only, on its own thread; cancelled and joined on exit
     MouseControl mouse;
     KeyEdges keys;
+    InteractionDetailTracker detail;
     auto last = std::chrono::steady_clock::now();
     for (int frame = 0; !glfwWindowShouldClose(w) && (o.frames == 0 || frame < o.frames); ++frame) {
       glfwPollEvents();
@@ -207,6 +209,7 @@ int runViewCommand(const ViewOptions& o) {
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
+        renderer.setMeshDetail(detail.next(s.interactionDetail, renderer.triangleCount(), scene.camera, model));
         viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
         if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
       }

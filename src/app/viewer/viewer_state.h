@@ -5,6 +5,7 @@
 #include <deque>
 #include <string>
 
+#include "interaction_detail.h"
 #include "marble/render/renderer.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/scene.h"
@@ -63,6 +64,7 @@ struct ViewerState {
   float turntableAngle = 0.0f;    // degrees; transient, not part of the scene or undo
 
   bool vsync = true;
+  InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

@@ -90,6 +90,18 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                  "on (default): the pattern's turbulence read from its baked grid where that is exact; off: "
                  "evaluated per pixel (the same picture within rounding; to compare the two)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--draw-order", o.drawOrder,
+                 "optimized (default): triangles reordered for the vertex cache and overdraw at upload; file: "
+                 "in the file's order (to compare the two)")
+      ->check(CLI::IsMember({"optimized", "file"}));
+  cmd.add_option("--light-proxy", o.lightProxy,
+                 "on (default): the light's pass draws a simplified copy of a mesh above 60,000 triangles; off: "
+                 "the full mesh (to compare)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--interaction-detail", o.interactionDetail,
+                 "on: every measured frame draws the camera's passes from the interaction copy (about 100,000 "
+                 "triangles), as the viewer does while the view moves; off (default): the full mesh")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -121,11 +133,23 @@ int runBenchCommand(const BenchOptions& o) {
     Renderer renderer(std::move(shaders));
     renderer.setTurbulenceGridEnabled(o.turbulenceGrid == "on");
     r.turbulenceGrid = o.turbulenceGrid == "on";
+    renderer.setDrawOrderOptimized(o.drawOrder == "optimized");
+    renderer.setLightProxyEnabled(o.lightProxy == "on");
     t0 = wallMs();
     renderer.setMesh(mesh);
     glFinish();
     r.uploadMs = wallMs() - t0;
     r.triangles = renderer.triangleCount();
+    r.drawOrder = o.drawOrder;
+    r.lightTriangles = renderer.lightTriangleCount();
+    r.lightProxyErrorUnits = renderer.lightProxyErrorUnits();
+    if (o.interactionDetail == "on") {
+      t0 = wallMs();
+      r.interactionTriangles = renderer.interactionTriangleCount();  // made here, outside the frames
+      glFinish();
+      r.interactionMs = wallMs() - t0;
+      renderer.setMeshDetail(Renderer::MeshDetail::Interaction);
+    }
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     r.passes = emptySeries(base.render);

@@ -39,6 +39,7 @@ struct SceneOptions {
   // Without an input: the showcase scene (render, view) or the fixed built-in Scene{} (bench,
   // whose figures must stay comparable).
   bool showcaseWhenEmpty = true;
+  bool allowOutside = false;       // glTF buffers may come from outside the glTF's folder
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "export_job.h"
 #include "glfw_window.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
@@ -132,6 +133,7 @@ int runViewCommand(const ViewOptions& o) {
       throw InputError("--turntable-speed", "", std::string("expected -3600 to 3600 degrees per second, got ") + got);
     }
     s.turntableDegPerSec = o.turntableSpeed;
+    s.interactionDetail = parseInteractionDetail(o.interactionDetail);
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
@@ -162,8 +164,10 @@ int runViewCommand(const ViewOptions& o) {
     installCallbacks(w);
 
     std::optional<OffscreenTarget> view;  // the 3D view's image, blitted right of the panel
+    BackgroundExport exportJob;  // the Export section's bake: CPU only, on its own thread; cancelled and joined on exit
     MouseControl mouse;
     KeyEdges keys;
+    InteractionDetailTracker detail;
     auto last = std::chrono::steady_clock::now();
     for (int frame = 0; !glfwWindowShouldClose(w) && (o.frames == 0 || frame < o.frames); ++frame) {
       glfwPollEvents();
@@ -183,6 +187,7 @@ int runViewCommand(const ViewOptions& o) {
 
       runFileRequests(renderer, s);  // first: a mesh loaded now is framed below, before it is drawn
       if (std::exchange(s.requestFrame, false)) frameObject(s, rect.aspect());
+      updateExport(exportJob, s);
       if (s.vsync != vsyncApplied) {
         glfwSwapInterval(s.vsync ? 1 : 0);
         vsyncApplied = s.vsync;
@@ -208,6 +213,7 @@ int runViewCommand(const ViewOptions& o) {
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
+        renderer.setMeshDetail(detail.next(s.interactionDetail, renderer.triangleCount(), scene.camera, model));
         viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
         if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
       }

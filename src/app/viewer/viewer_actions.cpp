@@ -16,7 +16,7 @@ namespace {
 
 std::string joinWarnings(const std::vector<std::string>& warnings) {
   std::string s;
-  for (const auto& w : warnings) s += "\nwarning: " + w;
+  for (const auto& w : warnings) s += "\nwarning: " + printable(w, kMessageLineLimit);
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "interaction_detail.h"
 #include "marble/render/renderer.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/scene.h"
@@ -14,6 +15,17 @@
 namespace marble {
 
 enum class Turntable { Off, Object, Light };
+
+// The Export section's settings and the job's progress (export_job.h does the work).
+struct ExportPanel {
+  std::string path = "marble.glb";
+  int size = 1024;
+  bool textureSet = false;      // a folder of PNGs + material.json instead of a glTF file
+  bool requestStart = false, requestCancel = false;
+  bool running = false;
+  float progress = 0.0f;
+  std::string stage;
+};
 
 struct ViewerState {
   Scene scene;
@@ -42,6 +54,8 @@ struct ViewerState {
   Material presetMaterial;        // what "reset" returns a section to
   UndoStack undo;
 
+  ExportPanel exportPanel;
+
   std::string status;             // last message (errors in red)
   bool statusIsError = false;
   std::string lastScreenshot;     // absolute path of the last screenshot saved
@@ -54,6 +68,7 @@ struct ViewerState {
   float turntableAngle = 0.0f;    // degrees; transient, not part of the scene or undo
 
   bool vsync = true;
+  InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

@@ -28,6 +28,11 @@ struct ImageRGBF {
   std::vector<float> alpha = {};
 };
 
+// The file's bytes, for writing several files together (AtomicFileSet, core/atomic_file.h) or
+// embedding in a .glb. Deterministic.
+std::string encodePng(const ImageRGBA8& image);
+std::string encodeExr(const ImageRGBF& image);
+
 // A text chunk of a PNG file: a keyword (1-79 printable Latin-1 characters) and UTF-8 text,
 // written as an uncompressed iTXt chunk (PNG specification, 11.3.4.5).
 struct PngText {

@@ -13,7 +13,10 @@ namespace marble {
 struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;    // empty until computed, then one per position
-  std::vector<glm::vec2> texcoords;  // empty, or one per position
+  // Texture coordinates: empty when the file has none, else one per position. OBJ's convention
+  // (and OpenGL's): v = 0 is the image's bottom row. glTF's v (0 = top row) is flipped on load
+  // and on export (bake/gltf_export.cpp).
+  std::vector<glm::vec2> texcoords;
   std::vector<uint32_t> indices;     // three per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }
@@ -25,10 +28,25 @@ enum class UpAxis { Y, Z, X, NegY, NegZ, NegX };
 UpAxis parseUpAxis(std::string_view text);  // "y", "z", "x", "-y", ...; throws std::invalid_argument
 std::string_view upAxisName(UpAxis axis);
 
+// How a mesh file is loaded.
+struct MeshLoadOptions {
+  UpAxis up = UpAxis::Y;
+  // glTF buffers may be read from outside the glTF's folder (--allow-outside, or a scene's
+  // "allow_outside"); by default a buffer uri such as ../../etc/passwd is refused
+  // (docs/reliability.md, "What a file may pull in").
+  bool allowOutside = false;
+  // Warnings about the file (duplicate triangles dropped) are appended here; when null they are
+  // printed to stderr as "warning: ...".
+  std::vector<std::string>* warnings = nullptr;
+};
+
 // Loads OBJ, PLY (ASCII/binary), STL (ASCII/binary) or glTF 2.0 (.gltf/.glb) by extension
 // (content sniffing for STL). Throws InputError "<file>: <place>: <problem>".
 // The result is turned to +Y up, has smooth normals when the file had none, and is normalized.
+// Exact duplicate triangles are dropped with one warning (mesh/duplicate_triangles.h).
+// Running out of memory is an EnvironmentError naming the file.
 Mesh loadMesh(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
+Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options);
 
 // Area-weighted smooth normals; degenerate triangles contribute nothing, and a vertex with
 // no usable neighbour gets +Y rather than NaN.

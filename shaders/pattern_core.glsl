@@ -476,9 +476,11 @@ vec4 pat_vein_covers(PatParams P, vec3 p, float m) {
   return vec4(dominant, secondary, hair, 0.0f);
 }
 
-// The vein model's colour at object point p, given the four turbulence samples at
-// pat_vein_sample_point(P, p, 0..3) (the caller evaluates them, or reads them from the grid).
-vec3 pat_vein_albedo(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+// The vein model at object point p, given the four turbulence samples at
+// pat_vein_sample_point(P, p, 0..3) (the caller evaluates them, or reads them from the grid):
+// the colour in xyz, and in w the value before colour, as the paper's: 0 at the heart of a
+// vein, 1 in the ground.
+vec4 pat_vein_shade(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
   vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3));
   // Ground: clouds (the third warp sample, a broad turbulence); breccia fragments' tints.
   vec3 c = pat_mix3(P.baseColor, P.cloudColor, P.cloudAmount * pat_spread(t2));
@@ -488,13 +490,15 @@ vec3 pat_vein_albedo(PatParams P, vec3 objectPos, float t0, float t1, float t2, 
   c = pat_mix3(c, P.veinColor, cov.x);
   // Grain: one octave of value noise at 1.5 texels, a multiplicative speckle.
   float g = pat_value3(pat_texel_pos(P, objectPos) * 0.6667f, 1048576.0f, 0x3c6ef372u);
-  return c * (1.0f + P.grainAmount * (g - 0.5f));
+  c = c * (1.0f + P.grainAmount * (g - 0.5f));
+  return vec4(c.x, c.y, c.z, 1.0f - max(cov.x, max(cov.y, cov.z)));
 }
-
-// The vein model's value before colour, as the paper's: 0 at the heart of a vein, 1 in the ground.
+vec3 pat_vein_albedo(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+  vec4 s = pat_vein_shade(P, objectPos, t0, t1, t2, t3);
+  return vec3(s.x, s.y, s.z);
+}
 float pat_vein_value(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
-  vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3));
-  return 1.0f - max(cov.x, max(cov.y, cov.z));
+  return pat_vein_shade(P, objectPos, t0, t1, t2, t3).w;
 }
 
 // The turbulence samples evaluated (the reference; the GPU may read them from the grid).

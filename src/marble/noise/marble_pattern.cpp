@@ -106,8 +106,9 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
     float s[4];
     for (int k = 0; k < 4; ++k)
       s[k] = alongX ? t[k][static_cast<size_t>(i)] : patglsl::pat_vein_turbulence(P, p, k);
-    if (out) out[i] = patglsl::pat_vein_albedo(P, p, s[0], s[1], s[2], s[3]);
-    if (valueOut) valueOut[i] = patglsl::pat_vein_value(P, p, s[0], s[1], s[2], s[3]);
+    const glm::vec4 shade = patglsl::pat_vein_shade(P, p, s[0], s[1], s[2], s[3]);  // colour and value at once
+    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
+    if (valueOut) valueOut[i] = shade.w;
   }
 }
 

@@ -65,6 +65,9 @@ int run(int argc, char** argv) {
   textureCmd->add_option("--size", texture.size, "Image size in pixels (square)")->check(CLI::Range(8, 8192));
   textureCmd->add_option("--preset", texture.preset, "Material preset");
   textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
+  textureCmd->add_option("--slice", texture.slice,
+                         "Vein models: marble.png is the solid pattern on the plane AXIS=OFFSET (x, y or z; default z=0)");
+  textureCmd->add_flag("--tile", texture.tile, "Write a tile that repeats without a seam");
 
   BakeCommandOptions bake;
   auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "

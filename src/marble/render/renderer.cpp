@@ -30,7 +30,13 @@ bool samePattern(const Material& a, const Material& b) {
          a.x_period == b.x_period && a.y_period == b.y_period && a.z_period == b.z_period &&
          a.turb_power == b.turb_power && a.turb_size == b.turb_size && a.pattern_scale == b.pattern_scale &&
          a.base_color == b.base_color && a.vein_color == b.vein_color && a.vein2_color == b.vein2_color &&
-         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount;
+         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount &&
+         // vein model (issue 16)
+         a.vein_model == b.vein_model && a.vein_spacing == b.vein_spacing && a.vein_width == b.vein_width &&
+         a.vein_density == b.vein_density && a.vein_normal == b.vein_normal && a.vein_stretch == b.vein_stretch &&
+         a.vein_warp == b.vein_warp && a.vein_pinch == b.vein_pinch && a.vein_softness == b.vein_softness &&
+         a.vein3_color == b.vein3_color && a.cloud_color == b.cloud_color && a.cloud_amount == b.cloud_amount &&
+         a.grain_amount == b.grain_amount && a.fragment_tint == b.fragment_tint;
 }
 
 namespace {

@@ -26,7 +26,9 @@ std::string num(float v) {
   return s.str();
 }
 
-bool isColourKey(const std::string& k) { return k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma"; }  // per-channel keys
+bool isColourKey(const std::string& k) {  // per-channel keys
+  return (k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma") || k == "subsurface_radius_mm";
+}
 
 namespace {
 // A preset value as numbers: one for a scalar, three for an RGB triple.

@@ -11,6 +11,7 @@
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
 #include "marble/scene/embedded_presets.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble {
 namespace {
@@ -54,6 +55,8 @@ const EnumName kMapping[] = {{static_cast<int>(PatternMapping::Planar), "planar"
 const EnumName kOrder[] = {{static_cast<int>(ShadingOrder::SubsurfaceFirst), "sss-first"},
                            {static_cast<int>(ShadingOrder::ReflectanceFirst), "schlick-first"}};
 const EnumName kCos[] = {{static_cast<int>(SchlickCosine::HdotV), "hv"}, {static_cast<int>(SchlickCosine::HdotN), "hn"}};
+const EnumName kScattering[] = {{static_cast<int>(ScatteringForm::Coefficients), "coefficients"},
+                                {static_cast<int>(ScatteringForm::Radius), "radius"}};
 
 template <size_t N>
 const char* enumName(const EnumName (&table)[N], int value) {
@@ -138,7 +141,8 @@ const std::vector<std::string>& keyList() {
       "x_period",       "y_period",     "z_period",      "turb_power", "turb_size",   "pattern_scale",
       "base_color",     "vein_color",   "vein2_color",   "vein_sharpness", "vein2_amount", "sigma_t",
       "k_sss",          "k_schlick",    "metalness",     "order",      "schlick_cos", "shininess",
-      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency"};
+      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency",
+      "subsurface_radius_mm", "scattering"};
   return keys;
 }
 
@@ -174,8 +178,35 @@ bool applyKey(Material& m, const std::string& key, const json& v, const std::str
   else if (key == "ior") m.ior = s.number(1.0, 3.0);
   else if (key == "roughness") m.roughness = s.number(0.0, 1.0);
   else if (key == "translucency") m.translucency = s.number(0.0, 10.0);
+  else if (key == "scattering") m.scattering = static_cast<ScatteringForm>(s.choice(kScattering));
+  else if (key == "subsurface_radius_mm") m.subsurface_radius_mm = s.color(1e-3, 1e4);
   else return false;
   return true;
+}
+
+// Which scattering form an object of keys selects (material.h, "the same stone in Blender's
+// terms"): an explicit "scattering" decides; otherwise subsurface_radius_mm selects the radius
+// form and sigma_a_mm or sigma_s_mm the coefficient form, starting from the coefficients the
+// material had in effect (so a key left out keeps the stone's value). Both at once is an error:
+// which one was meant cannot be known.
+void selectScatteringForm(Material& m, bool hasForm, bool hasRadius, bool hasSigma, const std::string& file,
+                          const std::string& placePrefix) {
+  if (hasForm) return;
+  if (hasRadius && hasSigma)
+    throw InputError(file, placePrefix + "subsurface_radius_mm",
+                     "give either subsurface_radius_mm (Blender's Principled BSDF, with base_color and ior) or "
+                     "sigma_a_mm/sigma_s_mm, not both (or say which with \"scattering\")");
+  if (hasRadius) {
+    m.scattering = ScatteringForm::Radius;
+  } else if (hasSigma) {
+    resolveScattering(m);
+    m.scattering = ScatteringForm::Coefficients;
+  }
+}
+
+void selectScatteringForm(Material& m, const json& j, const std::string& file, const std::string& placePrefix) {
+  selectScatteringForm(m, j.contains("scattering"), j.contains("subsurface_radius_mm"),
+                       j.contains("sigma_a_mm") || j.contains("sigma_s_mm"), file, placePrefix);
 }
 
 std::string builtinFileName(const std::string& name) { return name + ".json"; }
@@ -236,12 +267,14 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
     if (!it->is_string()) throw InputError(file, "preset", "expected a preset name or path, got " + describe(*it));
     m = loadPresetImpl(it->get<std::string>(), dir, depth + 1, warnings);
   }
+  selectScatteringForm(m, j, file, "");
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() == "preset") continue;
     if (!applyKey(m, it.key(), it.value(), file, it.key()))
       warnings.push_back(file + ": " + it.key() + ": unknown key '" + it.key() + "' (ignored)");
   }
   validateMaterial(m, file, "");
+  resolveScattering(m);
   return m;
 }
 
@@ -298,12 +331,14 @@ void applyMaterialJson(Material& m, const json& j, const std::string& file, cons
       throw InputError(file, placePrefix + "preset", e.what());
     }
   }
+  selectScatteringForm(m, j, file, placePrefix);
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() == "preset") continue;
     if (!applyKey(m, it.key(), it.value(), file, placePrefix + it.key()))
       warnings.push_back(file + ": " + placePrefix + it.key() + ": unknown key '" + it.key() + "' (ignored)");
   }
   validateMaterial(m, file, placePrefix);
+  resolveScattering(m);
 }
 
 void setMaterialKey(Material& m, const std::string& key, const std::string& value) {
@@ -355,8 +390,10 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
     v = value;
   }
   Material copy = m;
+  selectScatteringForm(copy, false, key == "subsurface_radius_mm", key == "sigma_a_mm" || key == "sigma_s_mm", "--set", "");
   applyKey(copy, key, v, "--set", key);
   validateMaterial(copy, "--set", "");
+  resolveScattering(copy);
   m = copy;
 }
 
@@ -393,6 +430,8 @@ json materialToJson(const Material& m) {
   j["ior"] = floatJson(m.ior);
   j["roughness"] = floatJson(m.roughness);
   j["translucency"] = floatJson(m.translucency);
+  j["scattering"] = enumName(kScattering, static_cast<int>(m.scattering));
+  j["subsurface_radius_mm"] = col(m.subsurface_radius_mm);
   return j;
 }
 

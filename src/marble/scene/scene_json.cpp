@@ -235,6 +235,7 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
       r.fail("up", "expected one of \"y\", \"z\", \"x\", \"-y\", \"-z\", \"-x\", got \"" + up + "\"");
     }
   }
+  r.number("crease_angle_deg", scene.crease_angle_deg, 0.0f, 180.0f);
   r.number("mm_per_unit", scene.mm_per_unit, 1e-3f, 1e6f);
   if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
   if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);
@@ -257,7 +258,7 @@ Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings
 
 Mesh loadSceneMesh(const Scene& scene) {
   if (scene.mesh.rfind("builtin:", 0) == 0) return builtinMesh(scene.mesh.substr(8));
-  return loadMesh(scene.mesh, scene.up);
+  return loadMesh(scene.mesh, scene.up, scene.crease_angle_deg);
 }
 
 }  // namespace marble

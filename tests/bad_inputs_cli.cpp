@@ -7,6 +7,7 @@
 // table in docs/bad-inputs.md is regenerated:
 //   MARBLE_BAD_INPUTS_TABLE=/tmp/t.md build/tests/marble_cli_tests --gtest_filter='BadInputs*'
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -143,6 +144,37 @@ void writeInputs(const fs::path& dir) {
   put("envmissing.json", R"({"render": {"environment_map": "nothere.hdr"}})");
   put("envnofile.json", R"({"render": {"environment": "map"}})");
   put("envsky.json", R"({"render": {"environment": "sky"}})");
+  // Issue 18: hostile inputs.
+  ::mkfifo((dir / "pipe.obj").c_str(), 0644);
+  ::mkfifo((dir / "pipe.bin").c_str(), 0644);
+  ::mkfifo((dir / "pipe.png").c_str(), 0644);
+  put("fifomesh.json", R"({"mesh": "pipe.obj"})");
+  put("fifobuffer.gltf", gltfWith(R"([{"uri":"pipe.bin","byteLength":42}])"));
+  fs::create_symlink("loop2.obj", dir / "loop1.obj");
+  fs::create_symlink("loop1.obj", dir / "loop2.obj");
+  fs::create_symlink("gone.obj", dir / "dangling.obj");
+  {
+    std::string nodes = "[";
+    for (int i = 0; i < 40; ++i) nodes += "{\"children\":[" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+    put("dag.gltf", gltfWith(R"([{"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA","byteLength":42}])", ",\"nodes\":" + nodes + "{\"mesh\":0}]"));
+  }
+  const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+  put("deep.json", "{\"camera\": " + deep + "}");
+  put("deep.gltf", R"({"asset":{"version":"2.0"},"extras":)" + deep + "}");
+  put("hugestring.json", "{\"camera\": {\"fov_y_deg\": \"" + std::string(10'000'000, 'A') + "\"}}");
+  put("credentials.json", "root:$6$secretHASH:19000:0:99999:7:::\n");
+  put("passwd.gltf", gltfWith(R"([{"uri":"/etc/passwd","byteLength":42}])"));
+  put("updir.gltf", gltfWith(R"([{"uri":"../../../../etc/passwd","byteLength":42}])"));
+  {
+    std::string copies = tri;
+    for (int i = 0; i < 100'000; ++i) copies += "f 1 2 3\n";
+    put("copies.obj", copies);
+  }
+  put("sparse.stl", std::string(84, '\0'));
+  fs::resize_file(dir / "sparse.stl", 3'900'000'000ull);
+  put("esc\x1b[31mred.obj", tri + "f 1 2\n");
+  put("escape.obj", tri + "f 1 2 \x1b]0;pwned\x07\n");
+  put("sceneobj.json", R"({"mesh": "two.obj"})");
 }
 
 const std::string kSmall = " -o out.png --width 16 --height 16";
@@ -246,7 +278,8 @@ const std::vector<Row>& rows() {
        "marble render: lightorigin.json: light.position: must not be at the origin (the object is there)"},
       {"SceneLightType", "light type \"spot\"", "render spot.json" + kSmall, 2,
        "marble render: spot.json: light.type: expected \"point\" or \"directional\", got \"spot\""},
-      {"SceneMeshMissing", "scene naming a missing mesh", "render meshmissing.json" + kSmall, 2, "marble render: nothere.obj: file not found"},
+      {"SceneMeshMissing", "scene naming a missing mesh", "render meshmissing.json" + kSmall, 2,
+       "marble render: meshmissing.json: mesh: nothere.obj: file not found"},
       {"SceneUnknownBuiltin", "builtin:teapot", "render teapot.json" + kSmall, 2,
        "marble render: builtin:teapot: unknown built-in mesh; known: sculpture, sphere, cube, slab, torus"},
       {"SceneMaterialType", "material value of the wrong type", "render mattype.json" + kSmall, 2,
@@ -285,11 +318,54 @@ const std::vector<Row>& rows() {
        "marble render: --environment: \"map\" needs a file: add --environment-map FILE.hdr"},
       {"EnvUnknown", "--environment sky", "render --environment sky" + kSmall, 2,
        "marble render: --environment: expected \"studio\", \"none\" or \"map\", got \"sky\""},
-      {"SceneEnvMapMissing", "scene naming a missing .hdr", "render envmissing.json" + kSmall, 2, "marble render: nothere.hdr: file not found"},
+      {"SceneEnvMapMissing", "scene naming a missing .hdr", "render envmissing.json" + kSmall, 2,
+       "marble render: envmissing.json: render.environment_map: nothere.hdr: file not found"},
       {"SceneEnvMapWithoutFile", "scene asking for \"map\" without environment_map", "render envnofile.json" + kSmall, 2,
        "marble render: envnofile.json: render.environment: \"map\" needs render.environment_map (an equirectangular .hdr file)"},
       {"SceneEnvUnknown", "scene environment \"sky\"", "render envsky.json" + kSmall, 2,
        "marble render: envsky.json: render.environment: expected \"studio\", \"none\" or \"map\", got \"sky\""},
+      // Issue 18: inputs that must not hang, crash or reach what the user did not name.
+      {"FifoMesh", "a FIFO given as the mesh", "render pipe.obj" + kSmall, 2,
+       "marble render: pipe.obj: is a named pipe (FIFO), not a regular file; marble reads only regular files"},
+      {"FifoSceneMesh", "a FIFO as a scene's mesh", "render fifomesh.json" + kSmall, 2,
+       "marble render: fifomesh.json: mesh: pipe.obj: is a named pipe (FIFO), not a regular file"},
+      {"FifoGltfBuffer", "a FIFO as a glTF buffer", "render fifobuffer.gltf" + kSmall, 2,
+       "marble render: fifobuffer.gltf: buffer 0: cannot read 'pipe.bin': pipe.bin: is a named pipe (FIFO), not a regular file"},
+      {"DeviceMesh", "/dev/zero as the mesh", "render /dev/zero" + kSmall, 2,
+       "marble render: /dev/zero: is a character device, not a regular file"},
+      {"SymlinkLoop", "a symbolic link loop as the mesh", "render loop1.obj" + kSmall, 2,
+       "marble render: loop1.obj: too many levels of symbolic links (a symbolic link loop?)"},
+      {"DanglingSymlink", "a symbolic link to nothing as the mesh", "render dangling.obj" + kSmall, 2,
+       "marble render: dangling.obj: is a symbolic link to a file that does not exist"},
+      {"GltfDag", "glTF whose 41 nodes each list the next one twice (2^40 paths)", "render dag.gltf" + kSmall, 2,
+       "marble render: dag.gltf: node 40: is reached twice (from node 39 and from node 39); glTF requires each node to have at most one parent"},
+      {"SceneDeepNesting", "scene value nested 100,000 arrays deep", "render deep.json" + kSmall, 2,
+       "marble render: deep.json: line 1, column 75: JSON nested deeper than 64 levels (arrays and objects)"},
+      {"GltfDeepNesting", "glTF value nested 100,000 arrays deep", "render deep.gltf" + kSmall, 2,
+       "marble render: deep.gltf: line 1, column 100: JSON nested deeper than 64 levels (arrays and objects)"},
+      {"SceneHugeString", "a 10 MB string where a number belongs", "render hugestring.json" + kSmall, 2,
+       "marble render: hugestring.json: camera.fov_y_deg: expected a number, got string \"AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA...\""},
+      {"PresetNotJson", "a file that is not JSON (a credential file) named as a preset", "render --preset credentials.json" + kSmall, 2,
+       "marble render: credentials.json: invalid JSON: parse error at line 1, column 1: syntax error while parsing value - invalid literal"},
+      {"GltfBufferAbsolute", "glTF buffer uri /etc/passwd", "render passwd.gltf" + kSmall, 2,
+       "marble render: passwd.gltf: buffer 0: 'uri' \"/etc/passwd\" is outside the glTF's folder"},
+      {"GltfBufferUpward", "glTF buffer uri ../../../../etc/passwd", "render updir.gltf" + kSmall, 2,
+       "marble render: updir.gltf: buffer 0: 'uri' \"../../../../etc/passwd\" is outside the glTF's folder"},
+      {"DuplicateTriangles", "100,000 copies of one triangle: one is kept, with a warning", "render copies.obj" + kSmall, 0,
+       "warning: copies.obj: dropped 99,999 duplicate triangles (the same three corners as an earlier triangle, same winding)"},
+      {"SparseStl", "3.9 GB sparse binary STL whose header declares no triangle", "render sparse.stl" + kSmall, 2,
+       "marble render: sparse.stl: byte 80: the triangle count is 0: no triangles"},
+      {"EscapeInFileName", "a file name holding a terminal escape sequence", "render esc*red.obj" + kSmall, 2,
+       "marble render: esc\\x1b[31mred.obj: line 4: face has 2 vertices; a face needs at least 3"},
+      {"EscapeInFileContent", "a terminal escape sequence inside an OBJ line", "render escape.obj" + kSmall, 2,
+       "marble render: escape.obj: line 4: bad face vertex '\\x1b]0;pwned\\x07'"},
+      {"SceneMeshError", "an error inside the mesh a scene names", "render sceneobj.json" + kSmall, 2,
+       "marble render: sceneobj.json: mesh: two.obj: line 4: face has 2 vertices; a face needs at least 3"},
+      {"OutputDevNull", "-o /dev/null (a device is never replaced)", "render -o /dev/null --width 16 --height 16", 2,
+       "marble render: /dev/null: is a character device, not a regular file; refusing to replace it"},
+      {"OutputFifo", "-o naming a FIFO", "render -o pipe.png --width 16 --height 16", 2,
+       "marble render: pipe.png: is a named pipe (FIFO), not a regular file; refusing to replace it"},
+      {"OutputLongName", "-o with a 250-character file name: accepted", "render -o " + std::string(246, 'n') + ".png --width 16 --height 16", 0, ""},
       // Command line.
       {"SetWithoutValue", "--set without '='", "render --set turb_power" + kSmall, 2, "marble render: --set: turb_power: expected key=value"},
       {"SetWithoutKey", "--set =3", "render --set =3" + kSmall, 2, "marble render: --set: =3: expected key=value"},
@@ -297,7 +373,7 @@ const std::vector<Row>& rows() {
       {"SetNotANumber", "--set turb_power=abc", "render --set turb_power=abc" + kSmall, 2,
        "marble render: --set: turb_power: expected a number in [0, 1000], got string \"abc\""},
       {"PresetFromDevice", "--preset /dev/zero (a device that never ends)", "render --preset /dev/zero" + kSmall, 2,
-       "marble render: /dev/zero: is not a regular file"},
+       "marble render: /dev/zero: is a character device, not a regular file; marble reads only regular files"},
       {"SetNan", "--set turb_power=nan", "render --set turb_power=nan" + kSmall, 2, "marble render: --set: turb_power: expected a finite number, got nan"},
       {"SetOutOfRange", "--set turb_power=1e9", "render --set turb_power=1e9" + kSmall, 2,
        "marble render: --set: turb_power: expected a number in [0, 1000], got 1000000000.0"},
@@ -325,7 +401,7 @@ const std::vector<Row>& rows() {
       {"OutputIsFolder", "-o naming an existing folder", "render -o folder.obj --width 16 --height 16", 2,
        "marble render: folder.obj: is a directory, not a file"},
       {"HdrFolderMissing", "--hdr into a missing folder", "render --hdr /nonexistent/x.exr" + kSmall, 2,
-       "marble render: /nonexistent/x.exr: cannot write EXR: "},
+       "marble render: /nonexistent/x.exr: cannot write: No such file or directory"},
       {"HdrOfFloor", "--hdr with --mode floor", "render --hdr x.exr --mode floor" + kSmall, 2, "marble render: --hdr: the floor mode has no HDR image"},
       {"TextureOutputIsFile", "texture -o naming a file", "texture -o afile --size 16", 2, "afile: cannot create folder: Not a directory"},
       {"TextureTinySize", "texture --size 4", "texture -o tex --size 4", 2, "--size: Value 4 not in range 8 to 8192"},

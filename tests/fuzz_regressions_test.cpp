@@ -1,5 +1,6 @@
 // Every input a fuzzer (tests/fuzz/) ever crashed on, kept in tests/fixtures/regressions/ and
-// loaded again here: each must now end in a one-line InputError, nothing else. The file name says
+// loaded again here, with the node-graph and nesting inputs of issue 18 (the DAG glTF, values
+// nested 4,000 deep): each must now end in a one-line InputError, nothing else. The file name says
 // which reader: scene-*.json -> loadScene, preset-*.json -> loadPreset, *.hdr -> readHdr, anything
 // else -> loadMesh.
 #include <gtest/gtest.h>

@@ -106,7 +106,7 @@ TEST_F(HdrImage, MissingDirectoryEmptyAndDeviceAreRefusedByName) {
   fs::create_directories(dir_ / "folder.hdr");
   expectReadError(dir_ / "folder.hdr", "is a directory, not an image file");
   expectReadError(put("empty.hdr", ""), "file is empty");
-  expectReadError("/dev/zero", "is not a regular file");
+  expectReadError("/dev/zero", "is a character device, not a regular file");
 }
 
 TEST_F(HdrImage, GarbageAndOtherFormatsAreNotRadiance) {

@@ -83,7 +83,7 @@ void expectPyramid(const Mesh& m) {
 
 TEST(MeshGltf, EmbeddedDataUriWithNodeHierarchy) {
   // Fixture: a parent node translated by 5, a child scaled (2, 1, 1): 4 x 1 x 2 before normalizing.
-  Mesh m = loadMesh(fixture("pyramid_embedded.gltf"), UpAxis::Y, kNoCreaseDeg);
+  Mesh m = loadMesh(fixture("pyramid_embedded.gltf"), meshtest::noCrease());
   expectPyramid(m);
   auto e = bounds(m).extent();
   EXPECT_NEAR(e.x, 2.0f, 1e-5f);
@@ -100,6 +100,10 @@ TEST(MeshGltf, ExternalBinWithNormalsAndTexcoords) {
   expectPyramid(m);
   ASSERT_EQ(m.texcoords.size(), 5u);
   EXPECT_EQ(m.texcoords[4], glm::vec2(0.5f, 0.5f));
+  // glTF's v = 0 is the image's top row; the mesh keeps OBJ's convention (v = 0 at the bottom).
+  const glm::vec3 p0 = meshtest::pyramidPositions()[0];
+  EXPECT_NEAR(m.texcoords[0].x, p0.x * 0.5f + 0.5f, 1e-6f);
+  EXPECT_NEAR(m.texcoords[0].y, 1.0f - (p0.z * 0.5f + 0.5f), 1e-6f);
   EXPECT_NEAR(m.normals[4].y, 1.0f, 1e-6f);  // the file's normal, not a computed one
   EXPECT_NEAR(m.normals[0].y, glm::normalize(glm::vec3(-1, -0.3f, -1)).y, 1e-6f);
 }

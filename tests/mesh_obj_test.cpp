@@ -85,7 +85,7 @@ TEST(MeshObj, AllCornerForms) {
                      "f 1/1 2/2 4/1\n"         // v/vt (no normal: normals dropped for all)
                      "f 1//1 4//1 3//1\n"      // v//vn (no vt: texcoords dropped for all)
                      "f 2 3 4\n");             // v
-  Mesh m = loadMesh(p, UpAxis::Y, kNoCreaseDeg);
+  Mesh m = loadMesh(p, meshtest::noCrease());
   meshtest::expectWellFormed(m);
   EXPECT_EQ(m.triangleCount(), 4u);
   EXPECT_EQ(m.positions.size(), 4u);  // neither vt nor vn is used everywhere: the plain fast path
@@ -116,7 +116,7 @@ TEST(MeshObj, NegativeIndices) {
                      "f -4 -1 -3\n"
                      "f -4 -2 -1\n"
                      "f -2 -3 -1\n");
-  Mesh m = loadMesh(q, UpAxis::Y, kNoCreaseDeg);
+  Mesh m = loadMesh(q, meshtest::noCrease());
   ASSERT_EQ(m.indices.size(), 12u);
   EXPECT_EQ(std::vector<uint32_t>(m.indices.begin(), m.indices.end()),
             (std::vector<uint32_t>{0, 1, 2, 0, 3, 1, 0, 2, 3, 2, 1, 3}));

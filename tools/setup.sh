@@ -22,3 +22,5 @@ if ((${#missing[@]})); then
 fi
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$root/build" -j"$(nproc)"
+# The export tests check files with the Khronos glTF-Validator (npm; tools/setup-web-tools.sh).
+"$root/tools/setup-web-tools.sh"

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
 #include "marble/core/image_downsample.h"
@@ -13,6 +14,17 @@
 #include "shader_source.h"
 
 namespace marble {
+namespace {
+
+std::string encodeHdrOutput(const std::string& path, const ImageRGBF& image) {
+  try {
+    return encodeExr(image);
+  } catch (const std::exception& e) {
+    throw InputError(path, "", std::string("cannot encode EXR: ") + e.what());
+  }
+}
+
+}  // namespace
 
 int runRenderCommand(const RenderOptions& o) {
   return reportErrors("render", [&] {
@@ -28,6 +40,8 @@ int runRenderCommand(const RenderOptions& o) {
                            std::to_string(scene.render.height) + " is " + std::to_string(width) + "x" +
                            std::to_string(height) + ", above the limit of " + std::to_string(kMaxRenderSize) +
                            " pixels a side; lower --supersample or the size");
+    if (!o.hdr.empty() && scene.render.mode == RenderMode::Floor)
+      throw InputError("--hdr", "", "the floor mode has no HDR image");
     const Mesh mesh = loadSceneMesh(scene);
     const auto environment = loadSceneEnvironment(scene);  // a bad map fails here, before any GL
     if (environment && o.timings)
@@ -56,12 +70,13 @@ int runRenderCommand(const RenderOptions& o) {
       std::snprintf(hex, sizeof hex, "0x%04x", err);
       throw EnvironmentError(std::string("OpenGL error ") + hex + " while rendering");
     }
-    writePng(o.output, image);
-    if (!o.hdr.empty()) {
-      if (scene.render.mode == RenderMode::Floor) throw InputError("--hdr", "", "the floor mode has no HDR image");
-      writeExr(o.hdr, downsampleLinear(renderer.readHdr(), n));
-      std::cout << "wrote " << o.hdr << " (linear, not tone-mapped)\n";
-    }
+    // The PNG and the EXR appear together or not at all: both are written to temporaries, and
+    // only when both are complete are they renamed into place (docs/reliability.md).
+    AtomicFileSet outputs;
+    outputs.add(o.output, encodePng(image));
+    if (!o.hdr.empty()) outputs.add(o.hdr, encodeHdrOutput(o.hdr, downsampleLinear(renderer.readHdr(), n)));
+    outputs.commit();
+    if (!o.hdr.empty()) std::cout << "wrote " << o.hdr << " (linear, not tone-mapped)\n";
     if (o.timings) {
       const PassTimes t = renderer.passTimes(true);
       std::printf("pass             GPU ms\nlight-depth      %8.2f\ngeometry         %8.2f\nlighting         %8.2f\n"

@@ -9,6 +9,8 @@
 #include "marble/core/image.h"
 #include "marble/noise/marble_pattern.h"
 #include "marble/scene/material_io.h"
+#include "image_set_output.h"
+#include "scene_options.h"
 
 namespace marble {
 namespace {
@@ -40,7 +42,7 @@ void putGrey(ImageRGBA8& img, int x, int y, float v) {
 }  // namespace
 
 int runTextureCommand(const TextureOptions& options) {
-  try {
+  return reportErrors("texture", [&] {
     if (options.out_dir.empty()) throw InputError("-o", "", "an output folder is required");
     if (options.size < kMinSize || options.size > kMaxSize)
       throw InputError("--size", "", "expected a whole number in [" + std::to_string(kMinSize) + ", " +
@@ -59,7 +61,13 @@ int runTextureCommand(const TextureOptions& options) {
     const int n = options.size;
     const float W = static_cast<float>(m.resolution);
     const float texelsPerPixel = W / static_cast<float>(n);
-    ImageRGBA8 white = blank(n), smooth = blank(n), turb = blank(n), sine = blank(n), marble = blank(n);
+    ImageRGBA8 white, smooth, turb, sine, marble;
+    try {
+      white = blank(n), smooth = blank(n), turb = blank(n), sine = blank(n), marble = blank(n);
+    } catch (const std::bad_alloc&) {
+      throw EnvironmentError("--size " + std::to_string(n) + ": out of memory for five " + std::to_string(n) + " x " +
+                             std::to_string(n) + " images (" + std::to_string(5ull * n * n * 4 >> 20) + " MiB)");
+    }
 
     // Pixel (x, y) shows texel (x, y) * W / size: the whole W x W texture, row 0 at the top.
     // Smooth noise is shown at the first octave's zoom (turb_size texels per lattice cell).
@@ -89,21 +97,13 @@ int runTextureCommand(const TextureOptions& options) {
     work(0, threads);
     for (auto& th : pool) th.join();
 
-    const std::pair<const char*, const ImageRGBA8*> outputs[] = {{"white_noise.png", &white},
-                                                                 {"smooth_noise.png", &smooth},
-                                                                 {"turbulence.png", &turb},
-                                                                 {"sine.png", &sine},
-                                                                 {"marble.png", &marble}};
-    for (const auto& [name, img] : outputs) {
-      const auto path = options.out_dir / name;
-      writePng(path, *img);
-      std::cout << path.string() << "\n";
-    }
+    writeImageSet(options.out_dir, {{"white_noise.png", &white},
+                                    {"smooth_noise.png", &smooth},
+                                    {"turbulence.png", &turb},
+                                    {"sine.png", &sine},
+                                    {"marble.png", &marble}});
     return 0;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  }
+  });
 }
 
 }  // namespace marble

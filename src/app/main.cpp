@@ -1,19 +1,25 @@
 // marble: a real-time marble renderer. One binary, several commands (see `marble --help`).
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
+#include <new>
 
+#include "cmd_bake.h"
 #include "cmd_bench.h"
+#include "cmd_export.h"
 #include "cmd_compare.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
 #include "cmd_texture.h"
 #include "marble/core/allocator_tuning.h"
+#include "marble/core/message_text.h"
 #include "viewer/cmd_view.h"
 
-int main(int argc, char** argv) {
-  using namespace marble;
-  keepFreedMemoryForReuse();  // before any GL context: llvmpipe frees and re-faults its buffers per frame
+namespace {
+
+int run(int argc, char** argv) {
+  using namespace marble;  // before any GL context: llvmpipe frees and re-faults its buffers per frame
   CLI::App app{"marble - real-time marble rendering: procedural veins, subsurface light, Fresnel reflectance.\n"
                "Without an input, every command uses the built-in default scene."};
   app.require_subcommand(1);
@@ -45,6 +51,18 @@ int main(int argc, char** argv) {
   textureCmd->add_option("--preset", texture.preset, "Material preset");
   textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
 
+  BakeCommandOptions bake;
+  auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "
+                                              "base colour, metallic-roughness and thickness PNGs and material.json");
+  addBakeOptions(*bakeCmd, bake);
+  bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
+
+  ExportCommandOptions exportOpts;
+  auto* exportCmd = app.add_subcommand("export", "Bake the marble and write the mesh with its textures as glTF 2.0 (.glb or .gltf), "
+                                                  "PBR metallic-roughness with KHR_materials_volume, _diffuse_transmission, _ior, _specular");
+  addBakeOptions(*exportCmd, exportOpts.bake);
+  exportCmd->add_option("-o,--output", exportOpts.output, "Output file, model.glb (binary) or model.gltf (one JSON file)")->required();
+
   app.add_subcommand("presets", "List the built-in material presets");
 
   BenchOptions bench;
@@ -72,8 +90,30 @@ int main(int argc, char** argv) {
   if (renderCmd->parsed()) return runRenderCommand(render);
   if (viewCmd->parsed()) return runViewCommand(view);
   if (textureCmd->parsed()) return runTextureCommand(texture);
+  if (bakeCmd->parsed()) return runBakeCommand(bake);
+  if (exportCmd->parsed()) return runExportCommand(exportOpts);
   if (app.got_subcommand("presets")) return runPresetsCommand();
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);
   return 2;
+}
+
+}  // namespace
+
+// Each command reports its own errors (reportErrors: one line, exit 2 for bad input, 1 for the
+// environment); this is the last net, so that no exception ever ends marble with an abort and a
+// core dump: running out of memory while parsing arguments or outside a command's net is one
+// line and exit 1 as well.
+int main(int argc, char** argv) {
+  try {
+    marble::keepFreedMemoryForReuse();  // before any GL context: llvmpipe frees and re-faults its buffers per frame
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("marble: out of memory\n", stderr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "marble: %s\n", marble::printable(e.what(), marble::kMessageLineLimit).c_str());
+  } catch (...) {
+    std::fputs("marble: unexpected internal error (an exception of unknown type)\n", stderr);
+  }
+  return 1;
 }

@@ -36,12 +36,15 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--environment-intensity", o.environmentIntensity,
                  "Scale of the environment's light (default: the scene's, 0.6; a captured map is usually meant at 1)")
       ->check(CLI::Range(0.0f, 100.0f));
+  cmd.add_flag("--allow-outside", o.allowOutside,
+               "Let a glTF read buffer files outside its own folder (refused by default; see docs/reliability.md)");
 }
 
 Scene buildScene(const SceneOptions& o) {
   std::vector<std::string> warnings;
   Scene scene = sceneForInput(o.input, warnings);
-  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  for (const auto& w : warnings) std::cerr << "warning: " << printable(w, kMessageLineLimit) << "\n";
+  if (o.allowOutside) scene.allow_outside = true;
   if (o.width > 0) scene.render.width = o.width;
   if (o.height > 0) scene.render.height = o.height;
   if (!o.mode.empty()) {
@@ -107,22 +110,25 @@ Scene buildScene(const SceneOptions& o) {
 }
 
 int reportErrors(const char* command, const std::function<int()>& body) {
+  // InputError and EnvironmentError messages are printable already; anything else (a library's
+  // exception) is made so here.
+  const auto say = [&](const char* what) { std::cerr << "marble " << command << ": " << printable(what, kMessageLineLimit) << "\n"; };
   try {
     return body();
   } catch (const InputError& e) {
-    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    say(e.what());
     return 2;
   } catch (const EnvironmentError& e) {
-    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    say(e.what());
     return 1;
   } catch (const gl::ShaderError& e) {
-    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    say(e.what());
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "marble " << command << ": out of memory\n";
+    say("out of memory");
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "marble " << command << ": " << e.what() << "\n";
+    say(e.what());
     return 1;
   }
 }

@@ -25,6 +25,7 @@ struct SceneOptions {
   std::string environmentMap;      // a .hdr (relative to the working folder); implies "map"
   std::optional<float> environmentRotation;  // degrees about +Y
   std::optional<float> environmentIntensity;
+  bool allowOutside = false;       // glTF buffers may come from outside the glTF's folder
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);

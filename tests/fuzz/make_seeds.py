@@ -9,6 +9,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TRI = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
 PYRAMID = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
 PYRAMID_FACES = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+DEEP = "[" * 4000 + "]" * 4000  # far past the 64-level cap, within libFuzzer's 16 KB inputs
 
 
 def put(target, name, data):
@@ -87,6 +88,15 @@ def gltf():
         put("gltf", f"indices_{t}.gltf", json.dumps(gltf_doc("data", t)[0], indent=1))
     put("gltf", "strip_no_normals.gltf", json.dumps(gltf_doc("data", 5123, mode=5, with_normals=False)[0]))
     put("gltf", "fan.gltf", json.dumps(gltf_doc("data", 5125, mode=6)[0]))
+    # Issue 18: node graphs that are not forests, a deep chain, and deep JSON nesting.
+    doc = gltf_doc("data", 5123)[0]
+    doc["nodes"] = [{"children": [i + 1, i + 1]} for i in range(40)] + [{"mesh": 0}]
+    put("gltf", "dag_41_nodes.gltf", json.dumps(doc, separators=(",", ":")))
+    doc["nodes"] = [{"children": [i + 1]} for i in range(699)] + [{"mesh": 0}]
+    put("gltf", "chain_700_nodes.gltf", json.dumps(doc, separators=(",", ":")))
+    doc = gltf_doc("data", 5123)[0]
+    doc["extras"] = "NEST"
+    put("gltf", "deep_nesting.gltf", json.dumps(doc, separators=(",", ":")).replace('"NEST"', DEEP))
 
 
 def glb():
@@ -109,6 +119,7 @@ def scene():
                        "environment_map": "maps/sky.hdr", "environment_rotation_deg": 45}}
     put("scene", "full.json", json.dumps(full, indent=2))
     put("scene", "minimal.json", '{"mesh": "models/bunny.obj", "unknown": [1, {"a": null}]}')
+    put("scene", "deep_nesting.json", '{"camera": ' + DEEP + '}')
     put("scene", "light_point.json", '{"light": {"type": "point", "position": [1e4, -1e4, 0.5]}, "render": {"mode": "thickness"}}')
 
 
@@ -165,6 +176,7 @@ def preset():
     for name in sorted(os.listdir(src)):
         if name.endswith(".json"):
             shutil.copy(os.path.join(src, name), os.path.join(HERE, "corpus", "preset", name))
+    put("preset", "deep_nesting.json", '{"turb_power": ' + DEEP + '}')
     put("preset", "based_on_builtin.json", '{"preset": "carrara", "name": "mine", "turb_power": 3, "extra": true}')
 
 

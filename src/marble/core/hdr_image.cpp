@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
 
 namespace marble {
 namespace {
@@ -19,10 +20,6 @@ namespace {
 // The header is a few lines of text; a file whose header runs past this is not a Radiance image.
 constexpr size_t kMaxHeaderBytes = 64 * 1024;
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
 
 std::string withThousands(unsigned long long n) {
   const std::string digits = std::to_string(n);
@@ -41,24 +38,11 @@ std::string quoted(std::string_view line) {
   return "\"" + s + (line.size() > 60 ? "...\"" : "\"");
 }
 
-// Checks the path names a readable regular file and returns its size.
-unsigned long long checkedFileSize(const std::filesystem::path& path, const std::string& file) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw InputError(file, "", "file not found");
-  if (std::filesystem::is_directory(status)) throw InputError(file, "", "is a directory, not an image file");
-  // Not a device or a pipe (/dev/zero would never end).
-  if (!std::filesystem::is_regular_file(status)) throw InputError(file, "", "is not a regular file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw InputError(file, "", "cannot determine the file size");
-  if (size == 0) throw InputError(file, "", "file is empty");
-  return size;
-}
-
-File openForReading(const std::filesystem::path& path, const std::string& file) {
-  File f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw InputError(file, "", std::string("cannot open: ") + std::strerror(errno));
-  return f;
+// Opens the map through the one input-file routine (regular files only) and refuses an empty one.
+InputFile openMap(const std::filesystem::path& path, const std::string& file) {
+  InputFile in(path, file, "an image file");
+  if (in.size() == 0) throw InputError(file, "", "file is empty");
+  return in;
 }
 
 // A positive decimal that fits an int, e.g. the "512" of "-Y 512".
@@ -107,10 +91,9 @@ void checkRunLengthScanlines(const std::string& file, const std::string& data, s
 
 HdrHeader readHdrHeader(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const unsigned long long size = checkedFileSize(path, file);
-  File f = openForReading(path, file);
-  std::string head(static_cast<size_t>(std::min<unsigned long long>(size, kMaxHeaderBytes)), '\0');
-  head.resize(std::fread(head.data(), 1, head.size(), f.get()));
+  const InputFile in = openMap(path, file);
+  const unsigned long long size = in.size();
+  std::string head = in.readPrefix(static_cast<size_t>(std::min<unsigned long long>(size, kMaxHeaderBytes)));
 
   // Lines of the header: the signature, variables (FORMAT=...), an empty line, the resolution.
   size_t pos = 0;
@@ -175,11 +158,7 @@ HdrHeader readHdrHeader(const std::filesystem::path& path) {
   // < 128); otherwise the pixels are flat RGBE quadruples (the rule stb_image follows).
   const unsigned long long dataBytes = size - pos;
   if (dataBytes == 0) throw InputError(file, "", "no pixel data after the header (truncated?)");
-  if (head.size() < pos + 4 && size > head.size()) {
-    std::fseek(f.get(), static_cast<long>(pos), SEEK_SET);
-    head.resize(pos + 4);
-    head.resize(pos + std::fread(head.data() + pos, 1, 4, f.get()));
-  }
+  if (head.size() < pos + 4 && size > head.size()) head = in.readPrefix(pos + 4);
   const auto byte = [&](size_t i) { return pos + i < head.size() ? static_cast<unsigned char>(head[pos + i]) : 0u; };
   h.runLengthEncoded = h.width >= 8 && h.width < 32768 && byte(0) == 2 && byte(1) == 2 && byte(2) < 128;
   // The least the pixels can take, checked before the decoder allocates for them: flat pixels
@@ -200,11 +179,8 @@ ImageRGBF readHdr(const std::filesystem::path& path) {
   // The most valid pixel data can take (all RLE literal dumps); anything after it is ignored.
   const auto w = static_cast<unsigned long long>(header.width), h = static_cast<unsigned long long>(header.height);
   const unsigned long long most = static_cast<unsigned long long>(header.dataOffset) + h * (4 + 4 * (w + (w + 127) / 128));
-  const unsigned long long size = std::min(checkedFileSize(path, file), most);
-  File f = openForReading(path, file);
-  std::string data(static_cast<size_t>(size), '\0');
-  if (std::fread(data.data(), 1, data.size(), f.get()) != data.size()) throw InputError(file, "", "read error");
-  f.reset();
+  const InputFile in = openMap(path, file);
+  std::string data = in.readPrefix(static_cast<size_t>(std::min<unsigned long long>(in.size(), most)));
   if (header.runLengthEncoded)
     checkRunLengthScanlines(file, data, static_cast<size_t>(header.dataOffset), header.width, header.height);
   int width = 0, height = 0, channels = 0;

@@ -5,16 +5,19 @@
 
 #include <ImfArray.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfRgbaFile.h>
 #include <ImfStringAttribute.h>
 
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
 
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
 
 namespace marble {
 
@@ -26,17 +29,28 @@ std::string firstLine(std::string what) {
 }
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+std::string encodePng(const ImageRGBA8& image) {
   std::string bytes;
   auto sink = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
   if (!stbi_write_png_to_func(sink, &bytes, image.width, image.height, 4, image.pixels.data(), image.width * 4))
-    throw InputError(path.string(), "", "PNG encoding failed");
+    throw std::runtime_error("PNG encoding failed");
+  return bytes;
+}
+
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+  std::string bytes;
+  try {
+    bytes = encodePng(image);
+  } catch (const std::runtime_error& e) {
+    throw InputError(path.string(), "", e.what());
+  }
   writeFileAtomically(path, bytes);
 }
 
 ImageRGBA8 readPng(const std::filesystem::path& path) {
+  { InputFile(path, path.string(), "an image file"); }  // a regular file, or a true message
   int w = 0, h = 0, n = 0;
   unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
   if (!data) throw InputError(path.string(), "", std::string("cannot read image: ") + stbi_failure_reason());
@@ -52,39 +66,65 @@ void flipRows(ImageRGBA8& image) {
                      image.pixels.begin() + (image.height - 1 - y) * row);
 }
 
-void writeExr(const std::filesystem::path& path, const ImageRGBF& image) {
+namespace {
+// OpenEXR writes to a stream; this one collects the bytes, which then go through the one
+// atomic-write routine like every other file.
+class MemoryStream : public Imf::OStream {
+public:
+  MemoryStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    const size_t end = position_ + static_cast<size_t>(n);
+    if (end > bytes.size()) bytes.resize(end);
+    std::memcpy(bytes.data() + position_, c, static_cast<size_t>(n));
+    position_ = end;
+  }
+  uint64_t tellp() override { return position_; }
+  void seekp(uint64_t pos) override { position_ = static_cast<size_t>(pos); }
+  std::string bytes;
+
+private:
+  size_t position_ = 0;
+};
+}  // namespace
+
+std::string encodeExr(const ImageRGBF& image) {
   const size_t n = static_cast<size_t>(image.width) * image.height;
   if (!image.alpha.empty() && image.alpha.size() != n)
-    throw std::invalid_argument("writeExr: alpha has " + std::to_string(image.alpha.size()) + " values for " +
+    throw std::invalid_argument("encodeExr: alpha has " + std::to_string(image.alpha.size()) + " values for " +
                                 std::to_string(n) + " pixels");
-  // OpenEXR writes to a named file: write a temporary beside the target, then rename.
-  const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-exr");
-  try {
-    Imf::Array2D<Imf::Rgba> px(image.height, image.width);
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) {
-        const size_t i = static_cast<size_t>(y) * image.width + x;
-        const float* p = &image.pixels[i * 3];
-        px[y][x] = Imf::Rgba(p[0], p[1], p[2], image.alpha.empty() ? 1.0f : image.alpha[i]);
-      }
-    Imf::Header header(image.width, image.height);
-    if (!image.alpha.empty()) header.insert(kExrCoverageAttribute, Imf::StringAttribute("coverage"));
-    Imf::RgbaOutputFile file(tmp.c_str(), header, Imf::WRITE_RGBA);
+  Imf::Array2D<Imf::Rgba> px(image.height, image.width);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * image.width + x;
+      const float* p = &image.pixels[i * 3];
+      px[y][x] = Imf::Rgba(p[0], p[1], p[2], image.alpha.empty() ? 1.0f : image.alpha[i]);
+    }
+  Imf::Header header(image.width, image.height);
+  if (!image.alpha.empty()) header.insert(kExrCoverageAttribute, Imf::StringAttribute("coverage"));
+  MemoryStream stream;
+  {
+    Imf::RgbaOutputFile file(stream, header, Imf::WRITE_RGBA);
     file.setFrameBuffer(&px[0][0], 1, static_cast<size_t>(image.width));
     file.writePixels(image.height);
+  }  // the file's destructor writes the line offset table
+  return std::move(stream.bytes);
+}
+
+void writeExr(const std::filesystem::path& path, const ImageRGBF& image) {
+  std::string bytes;
+  try {
+    bytes = encodeExr(image);
+  } catch (const std::invalid_argument&) {
+    throw;
   } catch (const std::exception& e) {
-    ::unlink(tmp.c_str());
-    throw InputError(path.string(), "", std::string("cannot write EXR: ") + firstLine(e.what()));
+    throw InputError(path.string(), "", std::string("cannot encode EXR: ") + firstLine(e.what()));
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    throw InputError(path.string(), "", "cannot rename EXR into place");
-  }
+  writeFileAtomically(path, bytes);
 }
 
 ImageRGBF readExr(const std::filesystem::path& path, bool* markedCoverage) {
   try {
-    if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("no such file");
+    { InputFile(path, path.string(), "an EXR file"); }  // a regular file, or a true message (not a hang on a FIFO)
     Imf::RgbaInputFile file(path.c_str());
     const auto dw = file.dataWindow();
     const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
@@ -108,6 +148,8 @@ ImageRGBF readExr(const std::filesystem::path& path, bool* markedCoverage) {
       *markedCoverage = hasAlpha && mark && mark->value() == "coverage";
     }
     return img;
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path.string(), "", std::string("cannot read EXR: ") + firstLine(e.what()));
   }

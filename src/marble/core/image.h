@@ -3,6 +3,7 @@
 // written atomically.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -25,6 +26,11 @@ struct ImageRGBF {
   // row; empty when the image has no alpha channel.
   std::vector<float> alpha = {};
 };
+
+// The file's bytes, for writing several files together (AtomicFileSet, core/atomic_file.h) or
+// embedding in a .glb. Deterministic.
+std::string encodePng(const ImageRGBA8& image);
+std::string encodeExr(const ImageRGBF& image);
 
 void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
 ImageRGBA8 readPng(const std::filesystem::path& path);                     // throws InputError

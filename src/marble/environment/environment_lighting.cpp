@@ -43,7 +43,14 @@ PrefilteredEnvironment loadEnvironmentMap(const std::filesystem::path& path) {
 
 std::optional<PrefilteredEnvironment> loadSceneEnvironment(const Scene& scene) {
   if (scene.render.environment != Environment::Map) return std::nullopt;
-  return loadEnvironmentMap(scene.render.environment_map);
+  try {
+    return loadEnvironmentMap(scene.render.environment_map);
+  } catch (const InputError& e) {
+    // A map the scene file named: the message names the scene too.
+    if (!scene.origin.file.empty() && scene.origin.environmentMap == scene.render.environment_map)
+      throw InputError(scene.origin.file, "render.environment_map", e.what());
+    throw;
+  }
 }
 
 }  // namespace marble

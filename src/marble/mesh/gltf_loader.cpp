@@ -15,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "marble/core/json_limits.h"
 #include "marble/mesh/mesh_internal.h"
 
 namespace marble::mesh_detail {
@@ -146,23 +147,42 @@ struct AccessorView {
   }
 };
 
+// Whether `path` lies inside `folder` once both are resolved (symbolic links followed, so a link
+// inside the folder that points out of it counts as outside).
+bool isInsideFolder(const std::filesystem::path& path, const std::filesystem::path& folder) {
+  std::error_code ec;
+  const auto resolved = [&](const std::filesystem::path& p) {
+    auto r = std::filesystem::weakly_canonical(std::filesystem::absolute(p.empty() ? "." : p, ec), ec).lexically_normal();
+    if (!r.has_filename()) r = r.parent_path();  // "dir/" -> "dir"
+    return r;
+  };
+  const auto base = resolved(folder);
+  if (ec) return false;
+  const auto target = resolved(path);
+  if (ec) return false;
+  auto b = base.begin(), t = target.begin();
+  for (; b != base.end(); ++b, ++t)
+    if (t == target.end() || *b != *t) return false;
+  return t != target.end();
+}
+
 class GltfReader {
 public:
-  GltfReader(const std::string& file, const std::filesystem::path& baseDir) : file_(file), baseDir_(baseDir) {}
+  GltfReader(const std::string& file, const std::filesystem::path& baseDir, bool allowOutside)
+      : file_(file), baseDir_(baseDir), allowOutside_(allowOutside) {}
 
   void setJson(std::string_view text, size_t byteOffset) {
+    checkJsonNesting(text, file_);
     try {
       doc_ = json::parse(text.begin(), text.end());
     } catch (const json::parse_error& e) {
-      std::string what = e.what();
       // "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
+      const std::string what = jsonErrorText(e.what());
       size_t colon = what.find(": ");
       std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
       throw InputError(file_, byteAt(byteOffset + (e.byte > 0 ? e.byte - 1 : 0)), "invalid JSON: " + detail);
     } catch (const json::exception& e) {  // out_of_range: a number such as 1e400 beyond double
-      std::string what = e.what();
-      const size_t bracket = what.find("] ");
-      throw InputError(file_, "json", "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+      throw InputError(file_, "json", "invalid JSON: " + jsonErrorText(e.what()));
     }
     if (!doc_.is_object()) throw InputError(file_, "json", "the top level is not a JSON object");
   }
@@ -186,11 +206,11 @@ private:
     if (asset.contains("version")) {
       const json& v = asset["version"];
       if (!v.is_string() || v.get<std::string>().rfind("2.", 0) != 0)
-        fail("asset", "glTF version " + v.dump() + " is not supported (need 2.x)");
+        fail("asset", "glTF version " + jsonExcerpt(v) + " is not supported (need 2.x)");
     }
     if (doc_.contains("extensionsRequired")) {
       for (const json& ext : array(doc_, "extensionsRequired", "json"))
-        fail("json", "requires extension " + ext.dump() + ", which is not supported");
+        fail("json", "requires extension " + jsonExcerpt(ext) + ", which is not supported");
     }
     const size_t meshCount = doc_.contains("meshes") ? array(doc_, "meshes", "json").size() : 0;
     if (meshCount == 0) fail("json", "no meshes");
@@ -220,8 +240,7 @@ private:
     if (nodeCount_ == 0) {
       for (size_t m = 0; m < meshCount; ++m) addMesh(m, glm::dmat4(1.0));
     } else {
-      std::vector<bool> onPath(nodeCount_, false);
-      for (size_t r : roots) visit(r, glm::dmat4(1.0), onPath);
+      visitTrees(roots);
     }
     if (mesh_.indices.empty()) fail("scene", "no triangles (no mesh in the scene has a triangle primitive)");
     if (!allNormals_) mesh_.normals.clear();
@@ -249,12 +268,12 @@ private:
     }
     const json& v = obj[key];
     if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<int64_t>() >= 0))
-      fail(place, std::string("'") + key + "' must be a non-negative integer, not " + v.dump());
+      fail(place, std::string("'") + key + "' must be a non-negative integer, not " + jsonExcerpt(v));
     return v.get<uint64_t>();
   }
   size_t indexValue(const json& v, size_t count, const std::string& place, const char* what) const {
     if (!v.is_number_integer() || v.get<int64_t>() < 0 || static_cast<uint64_t>(v.get<int64_t>()) >= count)
-      fail(place, std::string(what) + " index " + v.dump() + " is out of range (there are " + std::to_string(count) + ")");
+      fail(place, std::string(what) + " index " + jsonExcerpt(v) + " is out of range (there are " + std::to_string(count) + ")");
     return static_cast<size_t>(v.get<int64_t>());
   }
   size_t index(const json& obj, const char* key, size_t count, const std::string& place) const {
@@ -269,7 +288,7 @@ private:
     return v;
   }
   double number(const json& v, const std::string& place, const char* key) const {
-    if (!v.is_number()) fail(place, std::string("'") + key + "' must hold numbers, found " + v.dump());
+    if (!v.is_number()) fail(place, std::string("'") + key + "' must hold numbers, found " + jsonExcerpt(v));
     double d = v.get<double>();
     if (!std::isfinite(d)) fail(place, std::string("'") + key + "' holds a non-finite number");
     return d;
@@ -301,6 +320,9 @@ private:
     } else {
       if (uri.find("://") != std::string::npos) fail(place, "external URL '" + uri.substr(0, 64) + "' is not supported (only files)");
       const std::filesystem::path p = baseDir_ / percentDecode(uri);
+      if (!allowOutside_ && !isInsideFolder(p, baseDir_))
+        fail(place, "'uri' \"" + uri + "\" is outside the glTF's folder; marble reads buffers only from there unless "
+                    "told otherwise (--allow-outside, or \"allow_outside\": true in a scene)");
       try {
         bytes = readWholeFile(p, p.string());
       } catch (const InputError& e) {
@@ -395,20 +417,55 @@ private:
     return m;
   }
 
-  void visit(size_t n, const glm::dmat4& parent, std::vector<bool>& onPath) {
-    const std::string place = "node " + std::to_string(n);
-    if (onPath[n]) fail(place, "the node hierarchy has a cycle");
-    const json& node = doc_["nodes"][n];
-    if (!node.is_object()) fail(place, "must be an object");
-    onPath[n] = true;
-    const glm::dmat4 world = parent * localMatrix(node, place);
-    if (node.contains("mesh")) {
-      const size_t meshCount = array(doc_, "meshes", "json").size();
-      addMesh(index(node, "mesh", meshCount, place), world);
+  // Depth-first over the node hierarchy with an explicit stack (a chain 100,000 nodes deep must
+  // not overflow the call stack), in the order a recursive walk would take. glTF 2.0 requires
+  // the hierarchy to be disjoint strict trees: no cycles, at most one parent per node (spec
+  // section 3.5.2, "Nodes and Hierarchy"). A node reached a second time is therefore an error,
+  // not a second instance: that also bounds the work by the number of nodes (a chain in which
+  // every node lists the next one twice would otherwise be walked 2^n times).
+  void visitTrees(const std::vector<size_t>& roots) {
+    constexpr size_t kNone = static_cast<size_t>(-1);
+    std::vector<size_t> parentOf(nodeCount_, kNone);
+    std::vector<bool> reached(nodeCount_, false);
+    struct Pending {
+      size_t node, parent;
+      glm::dmat4 parentWorld;
+    };
+    std::vector<Pending> stack;
+    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, kNone, glm::dmat4(1.0)});
+    while (!stack.empty()) {
+      const Pending at = stack.back();
+      stack.pop_back();
+      const size_t n = at.node;
+      const std::string place = "node " + std::to_string(n);
+      if (reached[n]) {
+        bool cycle = false;
+        for (size_t a = at.parent; a != kNone; a = parentOf[a])
+          if (a == n) {
+            cycle = true;
+            break;
+          }
+        if (cycle) fail(place, "the node hierarchy has a cycle");
+        const std::string first = parentOf[n] == kNone ? "the scene" : "node " + std::to_string(parentOf[n]);
+        const std::string second = at.parent == kNone ? "the scene" : "node " + std::to_string(at.parent);
+        fail(place, "is reached twice (from " + first + " and from " + second +
+                        "); glTF requires each node to have at most one parent");
+      }
+      reached[n] = true;
+      parentOf[n] = at.parent;
+      const json& node = doc_["nodes"][n];
+      if (!node.is_object()) fail(place, "must be an object");
+      const glm::dmat4 world = at.parentWorld * localMatrix(node, place);
+      if (node.contains("mesh")) {
+        const size_t meshCount = array(doc_, "meshes", "json").size();
+        addMesh(index(node, "mesh", meshCount, place), world);
+      }
+      if (node.contains("children")) {
+        const json& children = array(node, "children", place);
+        for (size_t c = children.size(); c-- > 0;)
+          stack.push_back({indexValue(children[c], nodeCount_, place, "child node"), n, world});
+      }
     }
-    if (node.contains("children"))
-      for (const json& c : array(node, "children", place)) visit(indexValue(c, nodeCount_, place, "child node"), world, onPath);
-    onPath[n] = false;
   }
 
   void addMesh(size_t m, const glm::dmat4& world) {
@@ -487,7 +544,8 @@ private:
         double len = glm::length(n);
         mesh_.normals.push_back(len > 0.0 && std::isfinite(len) ? glm::vec3(n / len) : glm::vec3(0.0f));
       }
-      if (uv) mesh_.texcoords.emplace_back(uv->component(i, 0), uv->component(i, 1));
+      // glTF's v runs down the image, the mesh's up (mesh.h).
+      if (uv) mesh_.texcoords.emplace_back(uv->component(i, 0), 1.0f - uv->component(i, 1));
     }
     allNormals_ = allNormals_ && nrm.has_value();
     allTexcoords_ = allTexcoords_ && uv.has_value();
@@ -500,6 +558,7 @@ private:
 
   const std::string& file_;
   std::filesystem::path baseDir_;
+  bool allowOutside_ = false;
   json doc_;
   std::optional<std::string_view> bin_;
   std::vector<std::optional<std::string>> buffers_;
@@ -510,15 +569,15 @@ private:
 
 }  // namespace
 
-Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir) {
-  if (data.size() >= 4 && data.substr(0, 4) == "glTF") return loadGlb(file, data, baseDir);  // misnamed .glb
-  GltfReader reader(file, baseDir);
+Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside) {
+  if (data.size() >= 4 && data.substr(0, 4) == "glTF") return loadGlb(file, data, baseDir, allowOutside);  // misnamed .glb
+  GltfReader reader(file, baseDir, allowOutside);
   size_t skip = data.size() >= 3 && data.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
   reader.setJson(data.substr(skip), skip);
   return reader.read();
 }
 
-Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir) {
+Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
   if (data.size() < 12) throw InputError(file, "header", "file is " + std::to_string(data.size()) + " bytes, too short for GLB (12-byte header)");
   if (data.substr(0, 4) != "glTF") throw InputError(file, "header", "not a GLB file (it must start with 'glTF')");
@@ -534,7 +593,7 @@ Mesh loadGlb(const std::string& file, std::string_view data, const std::filesyst
   if (jsonType != 0x4E4F534Au) throw InputError(file, "byte 16", "the first chunk is not JSON");
   if (jsonLength > length - 20)
     throw InputError(file, "byte 12", "JSON chunk of " + withThousands(jsonLength) + " bytes runs past the end of the file (truncated)");
-  GltfReader reader(file, baseDir);
+  GltfReader reader(file, baseDir, allowOutside);
   reader.setJson(data.substr(20, jsonLength), 20);
   size_t at = 20 + static_cast<size_t>(jsonLength);
   at = (at + 3) & ~size_t{3};

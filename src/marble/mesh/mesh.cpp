@@ -5,12 +5,15 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <system_error>
 
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
+#include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh_internal.h"
 #include "marble/mesh/vertex_normals.h"
 
@@ -30,27 +33,13 @@ std::string withThousands(uint64_t n) {
 }
 
 std::string readWholeFile(const std::filesystem::path& path, const std::string& label) {
-  std::error_code ec;
-  auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw InputError(label, "", "file not found");
-  if (std::filesystem::is_directory(status)) throw InputError(label, "", "is a directory, not a mesh file");
-  struct Closer {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
-  std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-  if (!file) throw InputError(label, "", std::string("cannot open: ") + std::strerror(errno));
-  if (std::fseek(file.get(), 0, SEEK_END) != 0) throw InputError(label, "", "cannot seek (not a regular file?)");
-  long size = std::ftell(file.get());
-  if (size < 0) throw InputError(label, "", "cannot determine the file size (not a regular file?)");
-  if (size == 0) throw InputError(label, "", "file is empty");
-  if (static_cast<uint64_t>(size) > kMaxFileBytes)
-    throw InputError(label, "", "file is " + withThousands(static_cast<uint64_t>(size)) + " bytes; the limit is " +
-                                    withThousands(kMaxFileBytes));
-  std::rewind(file.get());
-  std::string data(static_cast<size_t>(size), '\0');
-  size_t got = std::fread(data.data(), 1, data.size(), file.get());
-  if (got != data.size()) throw InputError(label, "", "read error after " + std::to_string(got) + " bytes");
-  return data;
+  InputFile in(path, label, "a mesh file");
+  return readMeshBytes(in, in.size());
+}
+
+std::string readMeshBytes(const InputFile& in, uint64_t bytes) {
+  if (in.size() == 0) throw InputError(in.label(), "", "file is empty");
+  return in.read(bytes, kMaxFileBytes);
 }
 
 void rejectBinary(const std::string& file, std::string_view data, std::string_view format) {
@@ -179,38 +168,54 @@ double signedVolume(const Mesh& mesh) {
   return v / 6.0;
 }
 
-Mesh loadMesh(const std::filesystem::path& path, UpAxis up, float creaseAngleDeg) {
+Mesh loadMesh(const std::filesystem::path& path, UpAxis up) { return loadMesh(path, MeshLoadOptions{up}); }
+
+Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options) {
   const std::string file = path.string();
   std::string ext = path.extension().string();
   for (char& c : ext) c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
   // The file must exist before its extension matters (a typo'd path is the commoner mistake).
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(file, "", "file not found");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a mesh file");
+  const InputFile in(path, file, "a mesh file");
   if (ext != ".obj" && ext != ".ply" && ext != ".stl" && ext != ".gltf" && ext != ".glb")
     throw InputError(file, "", "unknown mesh format '" + (ext.empty() ? std::string("(no extension)") : ext) +
                                    "' (expected .obj, .ply, .stl, .gltf or .glb)");
-  std::string data = readWholeFile(path, file);
-  Mesh mesh;
-  if (ext == ".obj") {
-    mesh = loadObj(file, data);
-  } else if (ext == ".ply") {
-    mesh = loadPly(file, data);
-  } else if (ext == ".stl") {
-    mesh = loadStl(file, data);
-  } else if (ext == ".gltf") {
-    mesh = loadGltf(file, data, path.parent_path());
-  } else {
-    mesh = loadGlb(file, data, path.parent_path());
+  if (in.size() == 0) throw InputError(file, "", "file is empty");
+  try {
+    // A binary STL's 84-byte header says how much of the file there is to read.
+    const uint64_t bytes = ext == ".stl" ? stlBytesToRead(file, in.readPrefix(kStlProbeBytes), in.size()) : in.size();
+    std::string data = readMeshBytes(in, bytes);
+    const std::filesystem::path folder = path.parent_path();
+    Mesh mesh;
+    if (ext == ".obj") {
+      mesh = loadObj(file, data);
+    } else if (ext == ".ply") {
+      mesh = loadPly(file, data);
+    } else if (ext == ".stl") {
+      mesh = loadStl(file, data);
+    } else if (ext == ".gltf") {
+      mesh = loadGltf(file, data, folder, options.allowOutside);
+    } else {
+      mesh = loadGlb(file, data, folder, options.allowOutside);
+    }
+    { std::string().swap(data); }  // free the file bytes before the heavier steps
+    validateLoaded(mesh, file);
+    if (const size_t dropped = removeDuplicateTriangles(mesh); dropped > 0) {
+      const std::string warning = file + ": dropped " + withThousands(dropped) +
+                                  " duplicate triangles (the same three corners as an earlier triangle, same winding)";
+      if (options.warnings) options.warnings->push_back(warning);
+      else std::cerr << "warning: " << printable(warning, kMessageLineLimit) << "\n";
+    }
+    applyUpAxis(mesh, options.up);
+    // Normalizing first and computing normals second gives the same normals as the other order
+    // (normalization is a uniform scale and a shift) but keeps cross products in float range.
+    normalizeMesh(mesh, file);
+    if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg);
+    return mesh;
+  } catch (const std::bad_alloc&) {
+    // Out of memory is the machine's limit, not a fault in the file (exit 1), but the user
+    // needs to know which file asked for it.
+    throw EnvironmentError(file + ": out of memory while loading this " + withThousands(in.size()) + "-byte mesh");
   }
-  { std::string().swap(data); }  // free the file bytes before the heavier steps
-  validateLoaded(mesh, file);
-  applyUpAxis(mesh, up);
-  // Normalizing first and computing normals second gives the same normals as the other order
-  // (normalization is a uniform scale and a shift) but keeps cross products in float range.
-  normalizeMesh(mesh, file);
-  if (mesh.normals.empty()) computeVertexNormals(mesh, creaseAngleDeg);
-  return mesh;
 }
 
 }  // namespace marble

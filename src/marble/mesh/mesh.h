@@ -13,7 +13,10 @@ namespace marble {
 struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;    // empty until computed, then one per position
-  std::vector<glm::vec2> texcoords;  // empty, or one per position
+  // Texture coordinates: empty when the file has none, else one per position. OBJ's convention
+  // (and OpenGL's): v = 0 is the image's bottom row. glTF's v (0 = top row) is flipped on load
+  // and on export (bake/gltf_export.cpp).
+  std::vector<glm::vec2> texcoords;
   std::vector<uint32_t> indices;     // three per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }
@@ -33,12 +36,29 @@ inline constexpr float kDefaultCreaseAngleDeg = 60.0f;
 // 180 (or more) is "no crease": one normal per point, as Blender's Shade Smooth without Auto Smooth.
 inline constexpr float kNoCreaseDeg = 180.0f;
 
+// How a mesh file is loaded.
+struct MeshLoadOptions {
+  UpAxis up = UpAxis::Y;
+  // glTF buffers may be read from outside the glTF's folder (--allow-outside, or a scene's
+  // "allow_outside"); by default a buffer uri such as ../../etc/passwd is refused
+  // (docs/reliability.md, "What a file may pull in").
+  bool allowOutside = false;
+  // Warnings about the file (duplicate triangles dropped) are appended here; when null they are
+  // printed to stderr as "warning: ...".
+  std::vector<std::string>* warnings = nullptr;
+  // For a file without normals: edges whose faces' normals are more than this many degrees apart
+  // are hard (computeVertexNormals in vertex_normals.h). The file's own normals are used as given.
+  float creaseAngleDeg = kDefaultCreaseAngleDeg;
+};
+
 // Loads OBJ, PLY (ASCII/binary), STL (ASCII/binary) or glTF 2.0 (.gltf/.glb) by extension
 // (content sniffing for STL). Throws InputError "<file>: <place>: <problem>".
 // The result is turned to +Y up and normalized. The file's own normals are used as given; when it
 // has none, they are computed as Blender does (angle-weighted, hard edges split at
-// creaseAngleDeg: computeVertexNormals in vertex_normals.h; kDefaultCreaseAngleDeg = 60).
-Mesh loadMesh(const std::filesystem::path& path, UpAxis up = UpAxis::Y, float creaseAngleDeg = kDefaultCreaseAngleDeg);
+// options.creaseAngleDeg: computeVertexNormals in vertex_normals.h). Exact duplicate triangles are dropped with one warning (mesh/duplicate_triangles.h).
+// Running out of memory is an EnvironmentError naming the file.
+Mesh loadMesh(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
+Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options);
 
 // Bounding-box centre to the origin, then a uniform scale so the largest extent is 2.0.
 // A mesh with no positions or zero extent throws InputError(source, "bounds", ...); the

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
 #include "marble/mesh/mesh.h"
 
 namespace marble::mesh_detail {
@@ -22,9 +23,18 @@ inline constexpr uint64_t kMaxFileBytes = 4ull << 30;  // 4 GiB
 // "50,000,000"
 std::string withThousands(uint64_t n);
 
-// Reads a whole file; throws InputError(label, "", ...) for missing, directory, unreadable, empty
-// or oversized files.
+// Reads a whole file through InputFile (regular files only); throws InputError(label, "", ...)
+// for missing, non-regular, unreadable, empty or oversized files.
 std::string readWholeFile(const std::filesystem::path& path, const std::string& label);
+// The first `bytes` bytes of an opened mesh file (refusing an empty or oversized one).
+std::string readMeshBytes(const InputFile& in, uint64_t bytes);
+
+// How many bytes of an STL file of `fileSize` bytes the loader needs, from its first
+// kStlProbeBytes (`head`): a binary STL's header declares its triangle count, so a file far
+// larger than that (a 4 GB sparse file declaring no triangle) is refused or read only as far as
+// the triangles go, before anything large is read. Throws the loader's header errors.
+inline constexpr size_t kStlProbeBytes = 512;
+uint64_t stlBytesToRead(const std::string& file, std::string_view head, uint64_t fileSize);
 
 // Each loader returns the mesh as stored in the file: positions, indices, and normals/texcoords
 // only when the file supplies one per position (otherwise empty). Every index is in range and
@@ -32,8 +42,9 @@ std::string readWholeFile(const std::filesystem::path& path, const std::string& 
 Mesh loadObj(const std::string& file, std::string_view data);
 Mesh loadPly(const std::string& file, std::string_view data);
 Mesh loadStl(const std::string& file, std::string_view data);
-Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir);
-Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir);
+// glTF buffers are read only from inside `baseDir` unless `allowOutside` (docs/reliability.md).
+Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside = false);
+Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside = false);
 
 // Throws InputError(file, "byte N", ...) if a text format holds a NUL byte (binary garbage).
 void rejectBinary(const std::string& file, std::string_view data, std::string_view format);

@@ -84,21 +84,28 @@ float loadFloatLE(const unsigned char* p) {
   return std::bit_cast<float>(bits);
 }
 
-Mesh loadBinary(const std::string& file, std::string_view data) {
-  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-  if (data.size() < 84)
-    throw InputError(file, "header", "file is " + std::to_string(data.size()) +
+// Checks a binary STL's 84-byte header against the file's size; returns the triangle count.
+// `head` holds at least the file's first 84 bytes when the file has them.
+uint32_t checkBinaryHeader(const std::string& file, std::string_view head, uint64_t fileSize) {
+  if (fileSize < 84)
+    throw InputError(file, "header", "file is " + std::to_string(fileSize) +
                                          " bytes, too short for a binary STL (at least 84) and not ASCII STL ('solid ...')");
   uint32_t count;
-  std::memcpy(&count, bytes + 80, 4);
+  std::memcpy(&count, head.data() + 80, 4);
   if constexpr (std::endian::native == std::endian::big) count = __builtin_bswap32(count);
   if (count == 0) throw InputError(file, "byte 80", "the triangle count is 0: no triangles");
   if (count > kMaxTriangles)
     throw InputError(file, "byte 80", "declares " + withThousands(count) + " triangles; the limit is " + withThousands(kMaxTriangles));
   const uint64_t needed = 84 + 50ull * count;
-  if (data.size() < needed)
+  if (fileSize < needed)
     throw InputError(file, "byte 80", "declares " + withThousands(count) + " triangles (" + withThousands(needed) +
-                                          " bytes) but the file has only " + withThousands(data.size()) + " bytes (truncated)");
+                                          " bytes) but the file has only " + withThousands(fileSize) + " bytes (truncated)");
+  return count;
+}
+
+Mesh loadBinary(const std::string& file, std::string_view data) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+  const uint32_t count = checkBinaryHeader(file, data, data.size());
   // Extra bytes after the last triangle are tolerated (some exporters pad).
   Mesh mesh;
   mesh.indices.reserve(3ull * count);
@@ -179,22 +186,29 @@ bool startsWithSolid(std::string_view data) {
   return data.size() - i >= 5 && equalsIgnoreCase(data.substr(i, 5), "solid");
 }
 
+// Whether an STL of `fileSize` bytes starting with `head` (its first kStlProbeBytes) is ASCII.
+bool isAsciiStl(std::string_view head, uint64_t fileSize) {
+  if (fileSize >= 84 && head.size() >= 84) {
+    uint32_t count;
+    std::memcpy(&count, head.data() + 80, 4);
+    if constexpr (std::endian::native == std::endian::big) count = __builtin_bswap32(count);
+    if (84 + 50ull * count == fileSize) return false;
+  }
+  // "solid" but binary after all (a size that matches no count): an ASCII file has no NULs in
+  // its first bytes, a binary one nearly always does.
+  return startsWithSolid(head) && std::memchr(head.data(), '\0', std::min<size_t>(head.size(), kStlProbeBytes)) == nullptr;
+}
+
 }  // namespace
 
+uint64_t stlBytesToRead(const std::string& file, std::string_view head, uint64_t fileSize) {
+  if (isAsciiStl(head, fileSize)) return fileSize;
+  const uint32_t count = checkBinaryHeader(file, head, fileSize);
+  return 84 + 50ull * count;  // padding after the last triangle is not read
+}
+
 Mesh loadStl(const std::string& file, std::string_view data) {
-  if (data.size() >= 84) {
-    uint32_t count;
-    std::memcpy(&count, data.data() + 80, 4);
-    if constexpr (std::endian::native == std::endian::big) count = __builtin_bswap32(count);
-    if (84 + 50ull * count == data.size()) return loadBinary(file, data);
-  }
-  if (startsWithSolid(data)) {
-    // "solid" but binary after all (a size that matches no count): an ASCII file has no NULs in
-    // its first bytes, a binary one nearly always does.
-    const size_t probe = std::min<size_t>(data.size(), 512);
-    if (std::memchr(data.data(), '\0', probe) == nullptr) return loadAscii(file, data);
-  }
-  return loadBinary(file, data);
+  return isAsciiStl(data.substr(0, kStlProbeBytes), data.size()) ? loadAscii(file, data) : loadBinary(file, data);
 }
 
 }  // namespace marble::mesh_detail

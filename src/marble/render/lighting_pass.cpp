@@ -1,6 +1,7 @@
 #include "marble/render/lighting_pass.h"
 
 #include "marble/render/frame_uniforms.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble {
 
@@ -46,11 +47,6 @@ void LightingPass::resize(int width, int height, int enteringScale, GLuint depth
   gl::attachSurfaceDepth(enteringFbo_.id(), enteringDepth);
 }
 
-// sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel (Jensen et al. 2001, eq. 5).
-static glm::vec3 transportCoefficient(const Material& m) {
-  return glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
-}
-
 void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
                        const Light& light, const Material& m, const Scene& scene, float lightTexelWorld,
                        const ScreenRect& rect, const EnvironmentMap* environment) {
@@ -90,7 +86,10 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_shininess", m.shininess);
   p.set("u_oren_nayar_sigma", m.oren_nayar_sigma);
   p.set("u_mm_per_unit", scene.mm_per_unit);
-  p.set("u_sigma_tr_mm", transportCoefficient(m));
+  p.set("u_sigma_tr_mm", transportCoefficientMm(m));
+  const DipoleDepths dipole = dipoleDepthsMm(m);
+  p.set("u_dipole_zr_mm", dipole.zr_mm);
+  p.set("u_dipole_zv_mm", dipole.zv_mm);
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);

@@ -77,4 +77,11 @@ struct Material {
   bool operator==(const Material&) const = default;
 };
 
+// The effective transport coefficient sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel,
+// per mm (Jensen et al. 2001, eq. 5): light diffusing through the stone falls off as exp(-sigma_tr s).
+// Read by the `marble` mode's transmission and by the glTF export's attenuation.
+inline glm::vec3 transportCoefficientMm(const Material& m) {
+  return glm::sqrt(3.0f * m.sigma_a_mm * (m.sigma_a_mm + m.sigma_s_mm));
+}
+
 }  // namespace marble

@@ -10,6 +10,8 @@
 
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
+#include "marble/core/json_limits.h"
 #include "marble/scene/embedded_presets.h"
 #include "marble/scene/material_scattering.h"
 
@@ -21,11 +23,7 @@ using json = nlohmann::json;
 constexpr int kMaxPresetDepth = 8;
 constexpr std::uintmax_t kMaxJsonBytes = 64u << 20;
 
-std::string describe(const json& v) {
-  std::string d = v.dump();
-  if (d.size() > 40) d = d.substr(0, 37) + "...";
-  return std::string(v.type_name()) + " " + d;
-}
+std::string describe(const json& v) { return std::string(v.type_name()) + " " + jsonExcerpt(v); }
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -76,7 +74,7 @@ public:
     if (!v_.is_number()) fail("expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + describe(v_));
     const double d = v_.get<double>();
     if (!std::isfinite(d) || d < lo || d > hi)
-      fail("expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + v_.dump());
+      fail("expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(v_));
     return static_cast<float>(d);
   }
 
@@ -86,16 +84,16 @@ public:
     if (v_.is_number_float()) {
       const double d = v_.get<double>();
       if (!std::isfinite(d) || d != std::floor(d) || d < static_cast<double>(lo) || d > static_cast<double>(hi))
-        fail(want + v_.dump());
+        fail(want + jsonExcerpt(v_));
       return static_cast<long long>(d);
     }
     if (v_.is_number_unsigned()) {
       const auto u = v_.get<unsigned long long>();
-      if (u > static_cast<unsigned long long>(hi) || static_cast<long long>(u) < lo) fail(want + v_.dump());
+      if (u > static_cast<unsigned long long>(hi) || static_cast<long long>(u) < lo) fail(want + jsonExcerpt(v_));
       return static_cast<long long>(u);
     }
     const long long i = v_.get<long long>();
-    if (i < lo || i > hi) fail(want + v_.dump());
+    if (i < lo || i > hi) fail(want + jsonExcerpt(v_));
     return i;
   }
 
@@ -107,7 +105,7 @@ public:
       const json& c = v_[static_cast<size_t>(i)];
       if (!c.is_number()) fail(want + describe(v_));
       const double d = c.get<double>();
-      if (!std::isfinite(d) || d < lo || d > hi) fail(want + v_.dump());
+      if (!std::isfinite(d) || d < lo || d > hi) fail(want + jsonExcerpt(v_));
       r[i] = static_cast<float>(d);
     }
     return r;
@@ -126,7 +124,7 @@ public:
     const std::string s = v_.get<std::string>();
     for (const auto& e : table)
       if (s == e.name) return e.value;
-    fail("expected one of " + names + ", got " + v_.dump());
+    fail("expected one of " + names + ", got " + jsonExcerpt(v_));
   }
 
 private:
@@ -219,13 +217,11 @@ std::string knownPresetNames() {
 
 json parseJson(const std::string& text, const std::string& file) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
+  checkJsonNesting(text, file);
   try {
     return json::parse(text);
   } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e400
-    const std::string what = e.what();
-    auto pos = what.find("parse error");
-    if (pos == std::string::npos) pos = what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2;
-    throw InputError(file, "", "invalid JSON: " + what.substr(pos));
+    throw InputError(file, "", "invalid JSON: " + jsonErrorText(e.what()));
   }
 }
 
@@ -247,15 +243,10 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
       throw InputError(nameOrPath.empty() ? std::string("\"\"") : nameOrPath, "",
                        looksLikePath ? "no such file" : "not a built-in preset (" + knownPresetNames() + ") nor a file");
     }
-    if (std::filesystem::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a file");
-    // Not a device or a pipe (/dev/zero would never end), and not absurdly large.
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(file, "", "is not a regular file");
-    if (std::filesystem::file_size(path, ec) > kMaxJsonBytes) throw InputError(file, "", "is larger than 64 MiB; not a preset");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(file, "", "cannot open for reading");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+    // A regular file only (a FIFO or /dev/zero would never end), and not absurdly large.
+    InputFile in(path, file, "a file");
+    if (in.size() > kMaxJsonBytes) throw InputError(file, "", "is larger than 64 MiB; not a preset");
+    text = in.readAll(kMaxJsonBytes);
   }
   const json j = parseJson(text, file);
   if (!j.is_object()) throw InputError(file, "", "expected a JSON object at the top level, got " + describe(j));
@@ -305,7 +296,7 @@ Material loadPreset(const std::string& nameOrPath, std::vector<std::string>* war
   std::vector<std::string> local;
   Material m = loadPresetImpl(nameOrPath, {}, 0, warnings ? *warnings : local);
   if (!warnings)
-    for (const auto& w : local) std::cerr << "warning: " << w << "\n";
+    for (const auto& w : local) std::cerr << "warning: " << printable(w, kMessageLineLimit) << "\n";
   return m;
 }
 

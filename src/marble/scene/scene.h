@@ -73,8 +73,21 @@ struct RenderSettings {
   bool operator==(const RenderSettings&) const = default;
 };
 
+// Where a scene was read from, so that an error in a file it names says so
+// ("scene.json: mesh: model.obj: line 3: ..."). It is not part of what the scene is: the same
+// scene read from two files compares equal.
+struct SceneOrigin {
+  std::string file;            // the scene file; empty when the scene did not come from one
+  std::string mesh;            // Scene::mesh and render.environment_map as that file gave them, so
+  std::string environmentMap;  // that a value the command line replaced is not blamed on the file
+  bool operator==(const SceneOrigin&) const { return true; }
+};
+
 struct Scene {
   std::string mesh = "builtin:sculpture";  // a path (relative to the scene file) or builtin:NAME
+  // glTF buffers may be read from outside the glTF's folder ("allow_outside" in a scene file,
+  // --allow-outside on the command line; docs/reliability.md, "What a file may pull in").
+  bool allow_outside = false;
   UpAxis up = UpAxis::Y;
   // Normals for a mesh file without its own: edges whose faces' normals are more than this many
   // degrees apart are hard (Blender's Auto Smooth angle); 180 = smooth everywhere.
@@ -86,6 +99,7 @@ struct Scene {
   Light light;
   Material material;
   RenderSettings render;
+  SceneOrigin origin;
   bool operator==(const Scene&) const = default;
 };
 
@@ -101,7 +115,9 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
 // or empty (the built-in default scene).
 Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings);
 
-// Resolves Scene::mesh and loads it (builtin:NAME or a file).
-Mesh loadSceneMesh(const Scene& scene);
+// Resolves Scene::mesh and loads it (builtin:NAME or a file). An error in a mesh the scene file
+// named is reported as "<scene file>: mesh: <the mesh's error>"; warnings are appended to
+// `warnings` when given, else printed to stderr.
+Mesh loadSceneMesh(const Scene& scene, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace marble

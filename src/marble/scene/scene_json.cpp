@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "marble/core/error.h"
+#include "marble/core/input_file.h"
+#include "marble/core/json_limits.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/scene.h"
 
@@ -30,11 +33,7 @@ public:
     throw InputError(file_, prefix_ + key, problem);
   }
 
-  static std::string describe(const json& v) {
-    std::string d = v.dump();
-    if (d.size() > 40) d = d.substr(0, 37) + "...";
-    return std::string(v.type_name()) + " " + d;
-  }
+  static std::string describe(const json& v) { return std::string(v.type_name()) + " " + jsonExcerpt(v); }
 
   void number(const std::string& key, float& out, float lo, float hi) {
     const json* v = find(key);
@@ -42,7 +41,7 @@ public:
     if (!v->is_number()) fail(key, "expected a number, got " + describe(*v));
     const double d = v->get<double>();
     if (!std::isfinite(d) || d < lo || d > hi)
-      fail(key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + v->dump());
+      fail(key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(*v));
     out = static_cast<float>(d);
   }
 
@@ -51,7 +50,7 @@ public:
     if (!v) return;
     if (!v->is_number_integer()) fail(key, "expected a whole number, got " + describe(*v));
     const long long i = v->get<long long>();
-    if (i < lo || i > hi) fail(key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v->dump());
+    if (i < lo || i > hi) fail(key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + jsonExcerpt(*v));
     out = static_cast<int>(i);
   }
 
@@ -65,7 +64,7 @@ public:
       if (!c.is_number()) fail(key, "expected an array of 3 numbers, got " + describe(*v));
       const double d = c.get<double>();
       if (!std::isfinite(d) || d < lo || d > hi)
-        fail(key, "component " + std::to_string(i) + " must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + c.dump());
+        fail(key, "component " + std::to_string(i) + " must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(c));
       r[i] = static_cast<float>(d);
     }
     out = r;
@@ -189,17 +188,10 @@ void readRender(const json& j, const std::filesystem::path& scenePath, RenderSet
 }
 
 std::string readText(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "", "is a directory, not a file");
-  // Not a device or a pipe (/dev/zero would never end), and not absurdly large.
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string(), "", "is not a regular file");
-  if (std::filesystem::file_size(path, ec) > (64u << 20)) throw InputError(path.string(), "", "is larger than 64 MiB; not a scene");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open for reading");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // A regular file only (a FIFO or /dev/zero would never end), and not absurdly large.
+  InputFile in(path, path.string(), "a file");
+  if (in.size() > (64u << 20)) throw InputError(path.string(), "", "is larger than 64 MiB; not a scene");
+  return in.readAll(64u << 20);
 }
 
 }  // namespace
@@ -208,15 +200,13 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
   const std::string file = path.string();
   const std::string text = readText(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
+  checkJsonNesting(text, file);
   json root;
   try {
     root = json::parse(text);
   } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e400
     // nlohmann's message carries line and column: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-    std::string what = e.what();
-    auto pos = what.find("parse error");
-    if (pos == std::string::npos) pos = what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2;
-    throw InputError(file, "", "invalid JSON: " + what.substr(pos));
+    throw InputError(file, "", "invalid JSON: " + jsonErrorText(e.what()));
   }
   if (!root.is_object()) throw InputError(file, "", "expected a JSON object at the top level");
 
@@ -236,12 +226,17 @@ Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& war
     }
   }
   r.number("crease_angle_deg", scene.crease_angle_deg, 0.0f, 180.0f);
+  if (const json* v = r.find("allow_outside")) {
+    if (!v->is_boolean()) r.fail("allow_outside", "expected true or false, got " + ObjectReader::describe(*v));
+    scene.allow_outside = v->get<bool>();
+  }
   r.number("mm_per_unit", scene.mm_per_unit, 1e-3f, 1e6f);
   if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
   if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);
   if (const json* m = r.object("material")) applyMaterialJson(scene.material, *m, file, "material.", warnings);
   if (const json* rs = r.object("render")) readRender(*rs, path, scene.render, warnings);
   r.warnUnknown(warnings);
+  scene.origin = SceneOrigin{file, scene.mesh, scene.render.environment_map};
   return scene;
 }
 
@@ -256,9 +251,24 @@ Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings
   return scene;
 }
 
-Mesh loadSceneMesh(const Scene& scene) {
+Mesh loadSceneMesh(const Scene& scene, std::vector<std::string>* warnings) {
   if (scene.mesh.rfind("builtin:", 0) == 0) return builtinMesh(scene.mesh.substr(8));
-  return loadMesh(scene.mesh, scene.up, scene.crease_angle_deg);
+  const bool fromSceneFile = !scene.origin.file.empty() && scene.origin.mesh == scene.mesh;
+  std::vector<std::string> local;
+  MeshLoadOptions options{scene.up, scene.allow_outside, &local, scene.crease_angle_deg};
+  Mesh mesh;
+  try {
+    mesh = loadMesh(scene.mesh, options);
+  } catch (const InputError& e) {
+    if (fromSceneFile) throw InputError(scene.origin.file, "mesh", e.what());
+    throw;
+  }
+  for (auto& w : local) {
+    if (fromSceneFile) w = scene.origin.file + ": mesh: " + w;
+    if (warnings) warnings->push_back(std::move(w));
+    else std::cerr << "warning: " << printable(w, kMessageLineLimit) << "\n";
+  }
+  return mesh;
 }
 
 }  // namespace marble

@@ -1,0 +1,118 @@
+#include "marble/bake/ray_bvh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace marble {
+
+namespace {
+constexpr uint32_t kLeafSize = 4;
+}
+
+RayBvh::RayBvh(const Mesh& mesh) {
+  const uint32_t n = static_cast<uint32_t>(mesh.triangleCount());
+  corners_.resize(static_cast<size_t>(n) * 3);
+  std::vector<glm::vec3> centroids(n);
+  for (uint32_t t = 0; t < n; ++t) {
+    for (int k = 0; k < 3; ++k) corners_[t * 3 + k] = mesh.positions[mesh.indices[t * 3 + k]];
+    centroids[t] = (corners_[t * 3] + corners_[t * 3 + 1] + corners_[t * 3 + 2]) / 3.0f;
+  }
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  if (n > 0) build(0, n, centroids);
+}
+
+// Sorts triangles [begin, end) in place (corners_ and centroids together) and appends nodes.
+uint32_t RayBvh::build(uint32_t begin, uint32_t end, std::vector<glm::vec3>& centroids) {
+  const uint32_t id = static_cast<uint32_t>(nodes_.size());
+  nodes_.push_back({});
+  Node node{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest()), begin, end - begin, 0};
+  glm::vec3 clo = node.lo, chi = node.hi;
+  for (uint32_t t = begin; t < end; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      node.lo = glm::min(node.lo, corners_[t * 3 + k]);
+      node.hi = glm::max(node.hi, corners_[t * 3 + k]);
+    }
+    clo = glm::min(clo, centroids[t]);
+    chi = glm::max(chi, centroids[t]);
+  }
+  if (end - begin > kLeafSize) {
+    const glm::vec3 ext = chi - clo;
+    const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+    const uint32_t mid = begin + (end - begin) / 2;
+    std::vector<uint32_t> idx(end - begin);
+    std::iota(idx.begin(), idx.end(), begin);
+    std::nth_element(idx.begin(), idx.begin() + (mid - begin), idx.end(),
+                     [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+    std::vector<glm::vec3> c(idx.size() * 3), cen(idx.size());
+    for (size_t i = 0; i < idx.size(); ++i) {
+      for (int k = 0; k < 3; ++k) c[i * 3 + k] = corners_[idx[i] * 3 + k];
+      cen[i] = centroids[idx[i]];
+    }
+    std::copy(c.begin(), c.end(), corners_.begin() + static_cast<ptrdiff_t>(begin) * 3);
+    std::copy(cen.begin(), cen.end(), centroids.begin() + begin);
+    node.count = 0;
+    node.first = build(begin, mid, centroids);
+    node.right = build(mid, end, centroids);
+  }
+  nodes_[id] = node;
+  return id;
+}
+
+float RayBvh::nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const {
+  if (nodes_.empty()) return -1.0f;
+  const glm::vec3 inv(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
+  float best = maxT;
+  bool hit = false;
+  // Entry distance of a ray into a node's box, or +inf when it misses or enters beyond `best`.
+  auto entry = [&](const Node& node) {
+    const glm::vec3 t0 = (node.lo - origin) * inv, t1 = (node.hi - origin) * inv;
+    const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+    const float enter = std::max({tn.x, tn.y, tn.z, 0.0f}), leave = std::min({tf.x, tf.y, tf.z, best});
+    return enter <= leave ? enter : std::numeric_limits<float>::infinity();
+  };
+  struct Pending {
+    uint32_t node;
+    float enter;
+  };
+  Pending stack[64];
+  int top = 0;
+  if (entry(nodes_[0]) < std::numeric_limits<float>::infinity()) stack[top++] = {0, 0.0f};
+  while (top > 0) {
+    const Pending item = stack[--top];
+    if (item.enter > best) continue;  // a nearer hit was found since it was pushed
+    const Node& node = nodes_[item.node];
+    if (node.count == 0) {
+      // Nearer child last, so it is visited first and its hits prune the other.
+      const float l = entry(nodes_[node.first]), r = entry(nodes_[node.right]);
+      const bool leftFirst = l <= r;
+      const Pending nearer{leftFirst ? node.first : node.right, leftFirst ? l : r};
+      const Pending farther{leftFirst ? node.right : node.first, leftFirst ? r : l};
+      if (farther.enter < std::numeric_limits<float>::infinity()) stack[top++] = farther;
+      if (nearer.enter < std::numeric_limits<float>::infinity()) stack[top++] = nearer;
+      continue;
+    }
+    for (uint32_t t = node.first; t < node.first + node.count; ++t) {
+      const glm::vec3 a = corners_[t * 3], e1 = corners_[t * 3 + 1] - a, e2 = corners_[t * 3 + 2] - a;
+      const glm::vec3 p = glm::cross(dir, e2);
+      const float det = glm::dot(e1, p);
+      if (std::abs(det) < 1e-12f) continue;
+      const float invDet = 1.0f / det;
+      const glm::vec3 s = origin - a;
+      const float u = glm::dot(s, p) * invDet;
+      if (u < 0.0f || u > 1.0f) continue;
+      const glm::vec3 q = glm::cross(s, e1);
+      const float v = glm::dot(dir, q) * invDet;
+      if (v < 0.0f || u + v > 1.0f) continue;
+      const float d = glm::dot(e2, q) * invDet;
+      if (d > 0.0f && d < best) {
+        best = d;
+        hit = true;
+      }
+    }
+  }
+  return hit ? best : -1.0f;
+}
+
+}  // namespace marble

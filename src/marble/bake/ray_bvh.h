@@ -1,0 +1,34 @@
+#pragma once
+// A bounding volume hierarchy over a mesh's triangles for the nearest-hit rays of the thickness
+// bake: binary, split at the median of the longest axis of the centroids' box, leaves of at most
+// four triangles; Moller-Trumbore ray/triangle tests (both sides count: a ray cast inward leaves
+// through a back face).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "marble/mesh/mesh.h"
+
+namespace marble {
+
+class RayBvh {
+ public:
+  explicit RayBvh(const Mesh& mesh);
+  // Distance to the nearest triangle along origin + t * dir for t in (0, maxT), or a negative
+  // value when there is none. `dir` need not be unit length (t is in its units).
+  float nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const;
+
+ private:
+  struct Node {
+    glm::vec3 lo, hi;
+    uint32_t first;  // leaf: first triangle; inner: index of the left child
+    uint32_t count;  // triangles in a leaf; 0 for an inner node
+    uint32_t right;  // inner: index of the right child
+  };
+  uint32_t build(uint32_t begin, uint32_t end, std::vector<glm::vec3>& centroids);
+  std::vector<Node> nodes_;
+  std::vector<glm::vec3> corners_;  // three per triangle, in the order of the leaves
+};
+
+}  // namespace marble

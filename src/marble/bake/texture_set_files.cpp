@@ -1,0 +1,81 @@
+#include "marble/bake/texture_set_files.h"
+
+#include <unistd.h>
+
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "marble/bake/gltf_material.h"
+#include "marble/core/atomic_file.h"
+#include "marble/core/error.h"
+#include "marble/scene/material_io.h"
+
+namespace marble {
+
+using json = nlohmann::json;
+
+json describeTextureSet(const TextureSet& set, const Material& m, float mmPerUnit, const BakeMesh& mesh) {
+  const GltfMaterialParams g = gltfMaterialFor(m, mmPerUnit);
+  json uv = {{"source", mesh.unwrapped ? "unwrap" : "file"},
+             {"packing_efficiency", mesh.stats.packingEfficiency},
+             {"texel_density_cv", mesh.stats.densityCv},
+             {"texel_density_p05_over_median", mesh.stats.densityP05},
+             {"texel_density_p95_over_median", mesh.stats.densityP95}};
+  if (mesh.unwrapped) uv["charts"] = mesh.stats.charts;
+  return {
+      {"generator", "marble bake"},
+      {"mm_per_unit", mmPerUnit},
+      {"uv", uv},
+      {"textures",
+       {{"base_color", {{"file", kBaseColorFile}, {"size", set.baseColor.width}, {"encoding", "sRGB"}, {"coverage", set.coverage}}},
+        {"metallic_roughness",
+         {{"file", kMetallicRoughnessFile}, {"size", set.metallicRoughness.width}, {"encoding", "linear"},
+          {"channels", {{"G", "roughness"}, {"B", "metalness"}}}}},
+        {"thickness",
+         {{"file", kThicknessFile}, {"size", set.thickness.width}, {"encoding", "linear"},
+          {"convention", "local thickness (mean distance along rays cast inward around the normal to where they leave the mesh), "
+                         "normalized: value / 255 * scale"},
+          {"scale_units", set.thicknessScale},
+          {"scale_mm", set.thicknessScale * mmPerUnit}}}}},
+      {"gltf",
+       {{"roughnessFactor", g.roughness},
+        {"metallicFactor", g.metallic},
+        {"ior", g.ior},
+        {"specularFactor", g.specular},
+        {"attenuationColor", {g.attenuationColor.x, g.attenuationColor.y, g.attenuationColor.z}},
+        {"attenuationDistance_m", g.attenuationDistance},
+        {"diffuseTransmissionFactor", g.diffuseTransmission},
+        {"thicknessFactor_m", set.thicknessScale * g.metresPerUnit}}},
+      {"material", materialToJson(m)},
+  };
+}
+
+void checkOutputFolder(const std::filesystem::path& dir) {
+  if (dir.empty()) throw InputError("-o", "", "an output folder is required (e.g. -o textures)");
+  std::error_code ec;
+  std::filesystem::path existing = std::filesystem::absolute(dir, ec);
+  while (!existing.empty() && !std::filesystem::exists(existing, ec) && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!std::filesystem::is_directory(existing, ec))
+    throw InputError(dir.string(), "", "cannot create folder: " + existing.string() + " is not a folder");
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw InputError(dir.string(), "", "cannot create or write the folder: " + existing.string() + " is not writable");
+}
+
+void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, const json& description) {
+  std::vector<std::pair<std::string, std::string>> files = {{kBaseColorFile, encodePng(set.baseColor)},
+                                                            {kMetallicRoughnessFile, encodePng(set.metallicRoughness)},
+                                                            {kThicknessFile, encodePng(set.thickness)},
+                                                            {kMaterialFile, description.dump(2) + "\n"}};
+  for (const auto& [name, bytes] : files)
+    if (bytes.empty()) throw InputError((dir / name).string(), "", "PNG encoding failed");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError(dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
+  for (const auto& [name, bytes] : files) writeFileAtomically(dir / name, bytes);
+}
+
+}  // namespace marble

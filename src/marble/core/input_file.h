@@ -1,0 +1,48 @@
+#pragma once
+// The one way marble opens a file it reads (meshes, glTF buffers, scenes, presets, .hdr maps,
+// EXR references): only a regular file is opened, so a FIFO, a device (/dev/zero, a tape, a
+// terminal) or a socket is refused with a true message instead of blocking or never ending;
+// every failure is an InputError naming the file with the real reason (a symlink loop, a
+// dangling symlink, a permission, a directory). Sizes come from the open file, so a reader can
+// check what a header declares against them before it reads anything large.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace marble {
+
+class InputFile {
+public:
+  // `label` names the file in messages (usually the path as the user gave it); `kind` completes
+  // "is a directory, not <kind>" ("a mesh file").
+  InputFile(const std::filesystem::path& path, std::string label, std::string_view kind = "a file");
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+  InputFile(InputFile&& other) noexcept : label_(std::move(other.label_)), fd_(other.fd_), size_(other.size_) { other.fd_ = -1; }
+  InputFile& operator=(InputFile&&) = delete;
+
+  uint64_t size() const { return size_; }
+  const std::string& label() const { return label_; }
+
+  // The first min(n, size()) bytes.
+  std::string readPrefix(size_t n) const;
+  // The first min(n, size()) bytes, refusing a file larger than `maxBytes` (InputError
+  // "file is N bytes; the limit is M").
+  std::string read(uint64_t n, uint64_t maxBytes) const;
+  // The whole file, refusing one larger than `maxBytes`.
+  std::string readAll(uint64_t maxBytes) const { return read(size_, maxBytes); }
+
+private:
+  std::string label_;
+  int fd_ = -1;
+  uint64_t size_ = 0;
+};
+
+// InputFile(path, label, kind).readAll(maxBytes).
+std::string readInputFile(const std::filesystem::path& path, const std::string& label, uint64_t maxBytes,
+                          std::string_view kind = "a file");
+
+}  // namespace marble

@@ -40,6 +40,8 @@ uniform int u_mode;
 // Physically based marble (mode `marble`).
 uniform float u_mm_per_unit;     // millimetres per scene unit
 uniform vec3 u_sigma_tr_mm;      // effective transport coefficient per mm, sqrt(3 sigma_a sigma_t')
+uniform vec3 u_dipole_zr_mm;     // the dipole's real source depth 1 / sigma_t', per mm (Jensen et al. 2001)
+uniform vec3 u_dipole_zv_mm;     // and its virtual source height z_r (1 + 4A/3)
 uniform float u_ior;
 uniform float u_roughness;
 uniform float u_translucency;
@@ -77,10 +79,12 @@ float thickness_at(vec3 p) {
 // saw nothing are left out (blending in their "nothing hit" distance would invent huge entry
 // distances: the reason the map itself is sampled nearest); where none of the four saw the
 // object, nothing is in the way and s = 0, as in thickness_at().
-float transmission_thickness(vec3 p) {
+// Also returns, in .y, the cosine at which the light entered there (interpolated with the same
+// weights; light_depth.frag.glsl stores it beside the distance).
+vec2 transmission_thickness(vec3 p) {
   vec4 clip = u_light_view_proj * vec4(p, 1.0);
   vec3 ndc = clip.xyz / clip.w;
-  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec2(0.0);
   vec2 size = vec2(textureSize(u_light_distance, 0));
   vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;  // texel centres at integers
   vec2 base = floor(t);
@@ -88,13 +92,29 @@ float transmission_thickness(vec3 p) {
   // The four texels around p in one gather (the corner between them; clamped to the map's edge
   // like the sampler), in textureGather's order: (0,1), (1,1), (1,0), (0,0).
   vec4 entered = textureGather(u_light_distance, (base + 1.0) / size, 0);
+  vec4 cosines = textureGather(u_light_distance, (base + 1.0) / size, 1);
   vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // bilinear
   // "Nothing hit" is stored as far + 1000 (LightDepthPass): such texels weigh nothing.
   w *= vec4(lessThan(entered, vec4(u_light_near_far.y + 1.0)));
   float weight = w.x + w.y + w.z + w.w;
-  float sum = dot(w, entered);
-  if (weight <= 0.0) return 0.0;
-  return max(light_distance_of(p) - sum / weight, 0.0);
+  if (weight <= 0.0) return vec2(0.0);
+  return vec2(max(light_distance_of(p) - dot(w, entered) / weight, 0.0), dot(w, cosines) / weight);
+}
+
+// Diffuse transport through s mm of stone, relative to what the same stone reflects: the
+// dipole's exitance profile R_d(r) (Jensen et al. 2001, eq. 4) integrated over an entry plane s
+// away, lit uniformly (the translucent shadow map's filter, Dachsbacher & Stamminger 2003, done in
+// closed form for a locally flat entry). With d_r = sqrt(s^2 + z_r^2), d_v = sqrt(s^2 + z_v^2),
+//   int R_d(sqrt(s^2 + rho^2)) 2 pi rho drho = a'/2 (z_r e^(-sigma_tr d_r)/d_r + z_v e^(-sigma_tr d_v)/d_v),
+// which is Jensen's total diffuse reflectance at s = 0; divided by that value here because the
+// albedo multiplies the diffuse light later (post pass). It falls as e^(-sigma_tr s) / s for s
+// beyond a few mean free paths: exp(-sigma_tr s) alone let 3-10x too much through a 1-5 cm body.
+vec3 dipole_transport(float s_mm) {
+  vec3 dr = sqrt(s_mm * s_mm + u_dipole_zr_mm * u_dipole_zr_mm);
+  vec3 dv = sqrt(s_mm * s_mm + u_dipole_zv_mm * u_dipole_zv_mm);
+  vec3 through = u_dipole_zr_mm * exp(-u_sigma_tr_mm * dr) / dr + u_dipole_zv_mm * exp(-u_sigma_tr_mm * dv) / dv;
+  vec3 reflected = exp(-u_sigma_tr_mm * u_dipole_zr_mm) + exp(-u_sigma_tr_mm * u_dipole_zv_mm);
+  return through / max(reflected, vec3(1e-20));
 }
 
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
@@ -108,18 +128,21 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
   vec3 entering = marble_surface_entering(N, V, L, E, visible, F0, u_env_intensity);
 
-  // Transmission: light that entered where the light's map says and crossed s millimetres of
-  // stone to leave here, attenuated per channel by exp(-sigma_tr s) (Jensen et al. 2001's
-  // diffusion decay). An inward offset keeps the surface's own depth sample out (no acne).
+  // Transmission: light that entered where the light's map says, at the cosine stored there and
+  // through the surface's Fresnel transmittance, and crossed s millimetres of stone to leave
+  // here, carried by the dipole's transport (dipole_transport). An inward offset keeps the
+  // surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
   // The light's falloff is taken where it entered, s before the (offset) exit point.
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  float s = transmission_thickness(P_in);
+  vec2 s_cos = transmission_thickness(P_in);
+  float s = s_cos.x;
   float s_mm = s * u_mm_per_unit;
+  vec3 enters = s_cos.y * (1.0 - fresnel_schlick(F0, s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float NoV = max(dot(N, V), 1e-4);
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * exp(-u_sigma_tr_mm * s_mm) * away * away *
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * dipole_transport(s_mm) * away * away *
                         u_translucency * (1.0 - fresnel_schlick(F0, NoV));
 }
 

@@ -1,5 +1,6 @@
 // Normals, normalization, up axis, signed volume.
 #include "fixtures/mesh/mesh_test_support.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble {
 namespace {
@@ -16,42 +17,123 @@ Mesh sharedCube() {
   return m;
 }
 
-TEST(MeshNormals, SharedCubeCornersPointDiagonallyOut) {
+TEST(MeshNormals, SphereNormalsAreRadial) {
+  Mesh m = builtinMesh("sphere");
+  m.normals.clear();
+  computeVertexNormals(m, kDefaultCreaseAngleDeg);
+  for (size_t i = 0; i < m.positions.size(); ++i) EXPECT_GT(glm::dot(m.normals[i], glm::normalize(m.positions[i])), 0.999f);
+}
+
+// Angle-weighted normals without a crease (kNoCreaseDeg): every face of a cube corner meets it at
+// 90 degrees in all (one right-angled triangle, or two of 45), so the normal is exactly diagonal.
+// Area weighting (the rule before) gives the face split at that corner twice the weight.
+TEST(MeshNormals, SharedCubeCornersPointExactlyDiagonallyOutWithoutCrease) {
   Mesh m = sharedCube();
   EXPECT_NEAR(signedVolume(m), 1.0, 1e-9);
-  computeSmoothNormals(m);
+  computeVertexNormals(m, kNoCreaseDeg);
   ASSERT_EQ(m.normals.size(), 8u);
   for (size_t i = 0; i < 8; ++i) {
     glm::vec3 out = glm::normalize(m.positions[i] - glm::vec3(0.5f));
-    // Area-weighted over two triangles of one face and one of each other face, or one and two:
-    // not exactly diagonal, but well within 20 degrees of it.
-    EXPECT_GT(glm::dot(m.normals[i], out), 0.94f) << i;
+    EXPECT_GT(glm::dot(m.normals[i], out), 0.999999f) << i;
     EXPECT_NEAR(glm::length(m.normals[i]), 1.0f, 1e-6f);
   }
 }
 
-TEST(MeshNormals, SphereNormalsAreRadial) {
-  Mesh m = builtinMesh("sphere");
-  m.normals.clear();
-  computeSmoothNormals(m);
-  for (size_t i = 0; i < m.positions.size(); ++i) EXPECT_GT(glm::dot(m.normals[i], glm::normalize(m.positions[i])), 0.999f);
+// With a crease below 90 degrees each of the cube's 8 corners gets 3 normals, one per face, and
+// every triangle's three vertices carry that triangle's own normal: the cube renders flat.
+TEST(MeshNormals, CreaseSplitsTheCubeIntoThreeNormalsPerCorner) {
+  for (float crease : {kDefaultCreaseAngleDeg, 30.0f, 89.0f}) {
+    Mesh m = sharedCube();
+    computeVertexNormals(m, crease);
+    ASSERT_EQ(m.positions.size(), 24u) << crease;
+    ASSERT_EQ(m.normals.size(), 24u);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      glm::vec3 sum(0.0f);
+      int copies = 0;
+      for (size_t i = 0; i < m.positions.size(); ++i)
+        if (m.positions[i] == p) {
+          ++copies;
+          sum += glm::abs(m.normals[i]);
+          EXPECT_GT(glm::dot(m.normals[i], p - glm::vec3(0.5f)), 0.0f);  // outward
+        }
+      EXPECT_EQ(copies, 3) << corner;
+      EXPECT_NEAR(glm::distance(sum, glm::vec3(1.0f)), 0.0f, 1e-6f) << corner;  // +-x, +-y, +-z once each
+    }
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+      const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+      const glm::vec3 face = glm::normalize(glm::cross(b - a, c - a));
+      for (int k = 0; k < 3; ++k) EXPECT_GT(glm::dot(m.normals[m.indices[t + k]], face), 0.999999f) << t;
+    }
+    EXPECT_NEAR(signedVolume(m), 1.0, 1e-9);  // the same solid
+  }
+  Mesh smooth = sharedCube();  // faces 90 degrees apart stay joined under a crease above that
+  computeVertexNormals(smooth, 91.0f);
+  EXPECT_EQ(smooth.positions.size(), 8u);
 }
 
-TEST(MeshNormals, AreaWeighted) {
-  // A vertex shared by a big triangle facing +Z and a small one facing +X: the normal leans to +Z.
+// A known fan where the two rules differ: two right-angled corners at the origin, a big triangle
+// facing +Z and a small one facing 45 degrees off it (sharing the edge along +Y).
+TEST(MeshNormals, AngleWeightedNotAreaWeighted) {
   Mesh m;
-  m.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 1, 0}, {0, 0, -1}};
-  m.indices = {0, 1, 2, 0, 3, 4};
-  computeSmoothNormals(m);
-  glm::vec3 expected = glm::normalize(glm::vec3(-1, 0, 100));  // cross products: (0,0,100) and (-1,0,0)
-  EXPECT_NEAR(glm::dot(m.normals[0], expected), 1.0f, 1e-6f);
+  m.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {-1, 0, 1}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  computeVertexNormals(m, kDefaultCreaseAngleDeg);
+  ASSERT_EQ(m.positions.size(), 4u);  // 45 degrees: a smooth edge
+  const glm::vec3 angle = glm::normalize(glm::vec3(0, 0, 1) * 1.5707964f + glm::normalize(glm::vec3(1, 0, 1)) * 1.5707964f);
+  EXPECT_NEAR(glm::dot(m.normals[0], angle), 1.0f, 1e-6f);  // 22.5 degrees from +Z
+  // Negative control: area weighting (cross products (0,0,100) and (10,0,10)) leans 5.2 degrees.
+  const glm::vec3 area = glm::normalize(glm::vec3(10, 0, 110));
+  EXPECT_LT(glm::dot(m.normals[0], area), std::cos(glm::radians(15.0f)));
+  // Vertex 1 belongs to the big triangle only, 3 to the small one only.
+  EXPECT_NEAR(glm::dot(m.normals[1], glm::vec3(0, 0, 1)), 1.0f, 1e-6f);
+  EXPECT_NEAR(glm::dot(m.normals[3], glm::normalize(glm::vec3(1, 0, 1))), 1.0f, 1e-6f);
+}
+
+// Vertices at the same position are one point: triangles that do not share vertex indices (STL,
+// seams of texture coordinates) are still smooth across their common edge.
+TEST(MeshNormals, SamePositionIsOnePoint) {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0.2f}, {0, 1, 0}};
+  m.texcoords = {{0, 0}, {1, 0}, {0, 1}, {0.5f, 0}, {1, 1}, {0, 0.5f}};
+  m.indices = {0, 1, 2, 3, 4, 5};
+  computeVertexNormals(m, kDefaultCreaseAngleDeg);
+  ASSERT_EQ(m.positions.size(), 6u);
+  EXPECT_NEAR(glm::distance(m.normals[1], m.normals[3]), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(m.normals[2], m.normals[5]), 0.0f, 1e-6f);
+  EXPECT_LT(glm::dot(m.normals[1], glm::vec3(0, 0, 1)), 0.9999f);  // blended with the tilted one
+}
+
+// Blender's other hard edges: an edge of three triangles, and one whose two triangles are wound
+// against each other, are hard whatever the angle; a split vertex keeps its texture coordinate.
+TEST(MeshNormals, NonManifoldAndFlippedEdgesAreHard) {
+  {
+    Mesh m;  // a flat square whose halves are wound against each other
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    m.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    m.indices = {0, 1, 2, 0, 3, 2};
+    computeVertexNormals(m, kDefaultCreaseAngleDeg);
+    ASSERT_EQ(m.positions.size(), 6u);  // 0 and 2 split
+    ASSERT_EQ(m.texcoords.size(), 6u);
+    EXPECT_EQ(m.texcoords[4], m.texcoords[m.indices[3] == 4 ? 0 : 2]);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(m.normals[m.indices[k]].z, 1.0f, 1e-6f);
+    for (int k = 3; k < 6; ++k) EXPECT_NEAR(m.normals[m.indices[k]].z, -1.0f, 1e-6f);
+  }
+  {
+    Mesh m;  // three fins on one edge (0-1), nearly coplanar pairs
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0.01f}, {0.5f, -1, -0.01f}};
+    m.indices = {0, 1, 2, 1, 0, 3, 1, 0, 4};
+    computeVertexNormals(m, kDefaultCreaseAngleDeg);
+    EXPECT_EQ(m.positions.size(), 9u);  // 0 and 1 in three fans each
+  }
 }
 
 TEST(MeshNormals, DegenerateAndIsolatedVerticesGetUpNotNaN) {
   Mesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 5, 5}, {1, 1, 1}};
   m.indices = {0, 1, 2, 4, 4, 4};  // collinear, then all-one-point
-  computeSmoothNormals(m);
+  computeVertexNormals(m, kDefaultCreaseAngleDeg);
+  ASSERT_EQ(m.normals.size(), 5u);
   for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
 }
 
@@ -59,9 +141,12 @@ TEST(MeshNormals, DegenerateTrianglesDoNotDisturbNeighbours) {
   Mesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5f, 0, 0}};
   m.indices = {0, 1, 2, 0, 3, 1};  // the second is flat along the x axis
-  computeSmoothNormals(m);
-  EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));
-  EXPECT_EQ(m.normals[1], glm::vec3(0, 0, 1));
+  for (float crease : {kDefaultCreaseAngleDeg, kNoCreaseDeg}) {
+    computeVertexNormals(m, crease);
+    ASSERT_EQ(m.positions.size(), 4u);
+    EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));
+    EXPECT_EQ(m.normals[1], glm::vec3(0, 0, 1));
+  }
 }
 
 TEST(MeshNormals, InwardWindingGivesInwardNormals) {
@@ -69,7 +154,7 @@ TEST(MeshNormals, InwardWindingGivesInwardNormals) {
   Mesh m = sharedCube();
   for (size_t t = 0; t < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
   EXPECT_LT(signedVolume(m), 0.0);
-  computeSmoothNormals(m);
+  computeVertexNormals(m, kNoCreaseDeg);
   EXPECT_LT(glm::dot(m.normals[7], glm::vec3(1)), 0.0f);
 }
 

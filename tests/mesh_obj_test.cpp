@@ -1,8 +1,12 @@
 // OBJ loading: statement forms, index forms, vertex splitting, fans, errors with line numbers.
 #include "fixtures/mesh/mesh_test_support.h"
+#include "marble/scene/scene.h"
 
 namespace marble {
 namespace {
+
+// Loader tests check structure (welding, indices) on smooth shapes: normals without a crease
+// (kNoCreaseDeg); the crease itself is tested in mesh_geometry_test.cpp.
 
 using meshtest::bounds;
 using meshtest::fixture;
@@ -23,6 +27,31 @@ TEST(MeshObj, FlatCubeSplitsVerticesByNormal) {
     const glm::vec3 n = m.normals[i];
     EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);
     EXPECT_GT(glm::dot(n, m.positions[i]), 0.0f);
+  }
+}
+
+// The shared cube.obj's form (8 shared corners, no normals): the default crease splits it into
+// 24 vertices with flat faces; a scene's crease_angle_deg of 180 keeps it one smooth blob.
+TEST(MeshObj, CreaseAngleFromTheSceneSplitsASharedCube) {
+  TempDir dir;
+  const auto obj = dir.write("cube.obj",
+                             "v 0 0 0\nv 0 0 1\nv 0 1 0\nv 0 1 1\nv 1 0 0\nv 1 0 1\nv 1 1 0\nv 1 1 1\n"
+                             "f 1 7 5\nf 1 3 7\nf 1 4 3\nf 1 2 4\nf 3 8 7\nf 3 4 8\nf 5 7 8\nf 5 8 6\n"
+                             "f 1 5 6\nf 1 6 2\nf 2 6 8\nf 2 8 4\n");
+  Mesh flat = loadMesh(obj);
+  EXPECT_EQ(flat.positions.size(), 24u);
+  for (const glm::vec3& n : flat.normals) EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);
+  std::vector<std::string> warnings;
+  const auto scene = dir.write("scene.json", "{\"mesh\": \"cube.obj\", \"crease_angle_deg\": 180}");
+  Scene s = loadScene(scene, warnings);
+  EXPECT_EQ(s.crease_angle_deg, 180.0f);
+  EXPECT_EQ(loadSceneMesh(s).positions.size(), 8u);
+  const auto bad = dir.write("bad.json", "{\"crease_angle_deg\": 200}");
+  try {
+    loadScene(bad, warnings);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("crease_angle_deg"), std::string::npos) << e.what();
   }
 }
 
@@ -56,7 +85,7 @@ TEST(MeshObj, AllCornerForms) {
                      "f 1/1 2/2 4/1\n"         // v/vt (no normal: normals dropped for all)
                      "f 1//1 4//1 3//1\n"      // v//vn (no vt: texcoords dropped for all)
                      "f 2 3 4\n");             // v
-  Mesh m = loadMesh(p);
+  Mesh m = loadMesh(p, meshtest::noCrease());
   meshtest::expectWellFormed(m);
   EXPECT_EQ(m.triangleCount(), 4u);
   EXPECT_EQ(m.positions.size(), 4u);  // neither vt nor vn is used everywhere: the plain fast path
@@ -87,7 +116,7 @@ TEST(MeshObj, NegativeIndices) {
                      "f -4 -1 -3\n"
                      "f -4 -2 -1\n"
                      "f -2 -3 -1\n");
-  Mesh m = loadMesh(q);
+  Mesh m = loadMesh(q, meshtest::noCrease());
   ASSERT_EQ(m.indices.size(), 12u);
   EXPECT_EQ(std::vector<uint32_t>(m.indices.begin(), m.indices.end()),
             (std::vector<uint32_t>{0, 1, 2, 0, 3, 1, 0, 2, 3, 2, 1, 3}));

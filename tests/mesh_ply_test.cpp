@@ -4,6 +4,9 @@
 namespace marble {
 namespace {
 
+// Loader tests check structure (welding, indices) on smooth shapes: normals without a crease
+// (kNoCreaseDeg); the crease itself is tested in mesh_geometry_test.cpp.
+
 using meshtest::Bytes;
 using meshtest::fixture;
 using meshtest::loadError;
@@ -19,7 +22,7 @@ void expectPyramid(const Mesh& m) {
 }
 
 TEST(MeshPly, AsciiSkipsUnknownElementsAndProperties) {
-  Mesh m = loadMesh(fixture("pyramid_ascii.ply"));
+  Mesh m = loadMesh(fixture("pyramid_ascii.ply"), meshtest::noCrease());
   expectPyramid(m);
   ASSERT_EQ(m.texcoords.size(), 5u);
   EXPECT_EQ(m.texcoords[4], glm::vec2(0.5f, 0.5f));
@@ -62,7 +65,7 @@ std::string binaryPyramid(bool bigEndian, bool withNormals) {
 
 TEST(MeshPly, BinaryLittleEndian) {
   TempDir dir;
-  Mesh m = loadMesh(dir.write("le.ply", binaryPyramid(false, false)));
+  Mesh m = loadMesh(dir.write("le.ply", binaryPyramid(false, false)), meshtest::noCrease());
   expectPyramid(m);
   EXPECT_TRUE(m.texcoords.empty());
 }

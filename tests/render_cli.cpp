@@ -73,6 +73,22 @@ TEST(CliRender, DefaultSceneRendersCentredObject) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 15: the stone as a Blender user gives it renders without a warning; giving both forms
+// and a crease angle out of [0, 180] is a usage error (exit 2).
+TEST(CliRender, PrincipledMaterialRendersWithoutWarnings) {
+  const auto dir = tempDir("render-principled");
+  const auto scene = dir / "scene.json";
+  std::ofstream(scene) << R"({"mesh": "builtin:sphere", "material": {"base_color": [0.87, 0.85, 0.8],
+    "subsurface_radius_mm": [17, 12, 8], "ior": 1.5, "roughness": 0.15}, "render": {"environment": "none"}})";
+  const auto r = runMarble("render " + scene.string() + " -o " + (dir / "p.png").string() + " --width 64 --height 64");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  const auto badCrease = runMarble("render " + scene.string() + " -o " + (dir / "q.png").string() +
+                              " --width 8 --height 8 --crease-angle 181");
+  EXPECT_EQ(badCrease.exitCode, 2) << badCrease.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliRender, SupersampleRendersLargerAndWritesTheRequestedSize) {
   const auto dir = tempDir("render-supersample");
   const auto png = dir / "ss.png", exr = dir / "ss.exr";

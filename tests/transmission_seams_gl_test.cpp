@@ -267,9 +267,22 @@ void expectSeamsWithBrokenShader(const std::string& file, const std::string& fro
   EXPECT_GT(point, 0) << "the measure missed a broken " << tag << " under the point light";
 }
 
+// Since the transmission takes the light's entry cosine (issue 15), the acne a missing offset
+// causes on the grazing-lit top is mostly multiplied by cos ~ 0 there; the control removes the
+// cosine too, so that what it checks (the measure sees acne as seams) still has acne to see.
 TEST(TransmissionSeamsControl, WithoutTheInwardOffsetThereAreSeams) {
-  expectSeamsWithBrokenShader("lighting.frag.glsl", "vec3 P_in = P - N * (2.0 * u_light_texel_world);",
-                              "vec3 P_in = P;", "no-offset");
+  expectSeamsWithBrokenShader("lighting.frag.glsl",
+                              "vec3 P_in = P - N * (2.0 * u_light_texel_world);\n"
+                              "  vec2 s_cos = transmission_thickness(P_in);\n"
+                              "  float s = s_cos.x;\n"
+                              "  float s_mm = s * u_mm_per_unit;\n"
+                              "  vec3 enters = s_cos.y * (1.0 - fresnel_schlick(F0, s_cos.y));",
+                              "vec3 P_in = P;\n"
+                              "  vec2 s_cos = transmission_thickness(P_in);\n"
+                              "  float s = s_cos.x;\n"
+                              "  float s_mm = s * u_mm_per_unit;\n"
+                              "  vec3 enters = vec3(1.0);",
+                              "no-offset");
 }
 
 TEST(TransmissionSeamsControl, WithAWrongLightMapLookupThereAreSeams) {

@@ -27,8 +27,8 @@ std::string num(float v) {
 }
 
 bool isColourKey(const std::string& k) {  // per-channel keys, and the vein model's per-family triples
-  return (k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma") || k == "vein_spacing" || k == "vein_width" ||
-         k == "vein_density" || k == "vein_normal";
+  return (k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma") || k == "subsurface_radius_mm" || k == "vein_spacing" ||
+         k == "vein_width" || k == "vein_density" || k == "vein_normal";
 }
 
 namespace {

@@ -7,7 +7,12 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
 - Mesh: a file path relative to the scene (OBJ only, positions and faces; `builtin:` meshes exist
   only inside marble, so they are refused). The scene's `up` turn (the same proper rotations as
   src/marble/mesh/mesh.cpp), then normalization: bounding-box centre to the origin, largest extent
-  2.0. Smooth shading (marble computes smooth vertex normals).
+  2.0. Normals as marble makes them (src/marble/mesh/vertex_normals.h): the file's own `vn` as
+  custom split normals when every face corner has one; otherwise vertices at the same position
+  welded into one, every face smooth, Auto Smooth at the scene's `crease_angle_deg` (default 60,
+  kDefaultCreaseAngleDeg in src/marble/mesh/mesh.h; 180 = Auto Smooth off): Blender's
+  angle-weighted normals with the same hard edges (more than the angle apart, non-manifold, or
+  wound against each other).
 - Axes: marble is +Y up, Blender +Z up; every point goes through B(x, y, z) = (x, -z, y), a +90 deg
   turn about X, so the picture is the same.
 - Camera: same position, target, up and vertical field of view (sensor_fit VERTICAL), same aspect.
@@ -21,12 +26,17 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
   Radius 0 (a true point). A directional light has no falloff in either: it becomes a sun of
   strength pi I (a sun's strength is its irradiance).
 - World black (compare with marble scenes that say "render": {"environment": "none"}).
-- Material: Principled BSDF, subsurface method RANDOM_WALK, Subsurface 1 (Cycles 3.x then uses
-  the radius as given), base and subsurface colour = base_color (scenes set base/vein/vein2 equal:
-  a flat albedo), subsurface radius = 1/sigma_tr per channel in scene units with
-  sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) (Jensen et al. 2001, eq. 5) per mm, divided by
-  mm_per_unit; Subsurface IOR and IOR = ior; Specular = F0 / 0.08 with F0 = ((n-1)/(n+1))^2
-  (Blender's Principled convention); Roughness = roughness.
+- Material: Principled BSDF, subsurface method RANDOM_WALK, Subsurface 1, base and subsurface
+  colour = base_color (scenes set base/vein/vein2 equal: a flat albedo), Subsurface IOR and IOR =
+  ior; Specular = F0 / 0.08 with F0 = ((n-1)/(n+1))^2 (Blender's Principled convention);
+  Roughness = roughness (both GGX alpha = roughness^2). Subsurface Radius: in the material's
+  radius form (`"scattering": "radius"`, src/marble/scene/material_scattering.h) exactly
+  subsurface_radius_mm / mm_per_unit, so marble and Cycles mean the same stone by construction.
+  In the coefficient form (sigma_a_mm, sigma_s_mm) Cycles cannot take the coefficients, only a
+  radius: the one giving the same extinction sigma_a + sigma_s after Cycles' own rescaling,
+  r = 1 / ((sigma_a + sigma_s) sqrt(3 (1 - a'))), a' from Rd(a') = base_color; the walk's
+  single-scattering albedo is then Cycles' (from base_color), not sigma_s / (sigma_a + sigma_s),
+  and a warning says so.
 - Output: linear OpenEXR, RGBA 32-bit float, transparent film (alpha 0 and RGB 0 on the
   background), view transform Standard (EXR is written scene-linear regardless).
 """
@@ -77,8 +87,38 @@ def load_material(scene, scene_dir):
         fail("material.preset: no preset or file '%s'" % preset)
     with open(path) as f:
         merged = json.load(f)
+    # marble's rule for the overrides (selectScatteringForm in src/marble/scene/material_io.cpp):
+    # an explicit "scattering" decides, else subsurface_radius_mm selects the radius form and
+    # sigma_a_mm/sigma_s_mm the coefficient form; otherwise the preset's form stays.
+    if "scattering" not in mat:
+        if "subsurface_radius_mm" in mat:
+            mat["scattering"] = "radius"
+        elif "sigma_a_mm" in mat or "sigma_s_mm" in mat:
+            mat["scattering"] = "coefficients"
     merged.update(mat)
     return merged
+
+
+def cycles_alpha_prime(albedo, ior):
+    # Cycles' bssrdf_dipole_compute_alpha_prime (kernel/closure/bssrdf.h): 12 bisection steps on
+    # Rd(a') = albedo; marble's copy is cyclesAlphaPrime in src/marble/scene/material_scattering.cpp.
+    ior = min(max(ior, 1.01), 3.8)
+    inv = 1.0 / ior
+    fdr = inv * (-1.440 * inv + 0.710) + 0.668 + 0.0636 * ior
+    a43 = 4.0 / 3.0 * (1.0 + fdr) / (1.0 - fdr)
+    if albedo < 1e-4:
+        return 0.0
+    if albedo >= 0.995:
+        return 0.999999
+    lo, hi, mid = 0.0, 1.0, 0.5
+    for _ in range(12):
+        mid = 0.5 * (lo + hi)
+        s = math.sqrt(3.0 * (1.0 - mid))
+        if 0.5 * mid * (1.0 + math.exp(-a43 * s)) * math.exp(-s) < albedo:
+            lo = mid
+        else:
+            hi = mid
+    return mid
 
 
 def rotate_up(v, up):
@@ -93,7 +133,10 @@ def to_blender(v):
 
 
 def load_obj(path, up):
-    verts, faces = [], []
+    """Positions (welded: one vertex per distinct position, as marble's normals treat them),
+    triangles, and one file normal per triangle corner when every corner has one (else None)."""
+    verts, normals, faces, corner_normals = [], [], [], []
+    all_have_normals = True
     with open(path) as f:
         for line in f:
             parts = line.split()
@@ -101,18 +144,37 @@ def load_obj(path, up):
                 continue
             if parts[0] == "v":
                 verts.append(rotate_up(tuple(float(c) for c in parts[1:4]), up))
+            elif parts[0] == "vn":
+                normals.append(rotate_up(tuple(float(c) for c in parts[1:4]), up))
             elif parts[0] == "f":
-                idx = [int(p.split("/")[0]) for p in parts[1:]]
+                fields = [p.split("/") for p in parts[1:]]
+                idx = [int(p[0]) for p in fields]
                 idx = [i - 1 if i > 0 else len(verts) + i for i in idx]
+                nidx = [int(p[2]) if len(p) > 2 and p[2] else None for p in fields]
+                if any(n is None for n in nidx):
+                    all_have_normals = False
+                nidx = [None if n is None else (n - 1 if n > 0 else len(normals) + n) for n in nidx]
                 for k in range(1, len(idx) - 1):  # fan: marble triangulates polygons the same way
                     faces.append((idx[0], idx[k], idx[k + 1]))
+                    corner_normals.append((nidx[0], nidx[k], nidx[k + 1]))
     if not verts or not faces:
         fail(path + ": no vertices or faces")
     lo = [min(v[a] for v in verts) for a in range(3)]
     hi = [max(v[a] for v in verts) for a in range(3)]
     centre = [(lo[a] + hi[a]) * 0.5 for a in range(3)]
     scale = 2.0 / max(hi[a] - lo[a] for a in range(3))
-    return [to_blender([(v[a] - centre[a]) * scale for a in range(3)]) for v in verts], faces
+    # Weld by exact position (marble: pointIds in src/marble/mesh/vertex_normals.cpp).
+    weld, welded, remap = {}, [], []
+    for v in verts:
+        if v not in weld:
+            weld[v] = len(welded)
+            welded.append(v)
+        remap.append(weld[v])
+    faces = [tuple(remap[i] for i in f) for f in faces]
+    loop_normals = None
+    if all_have_normals and normals:
+        loop_normals = [to_blender(normals[n]).normalized() for c in corner_normals for n in c]
+    return [to_blender([(v[a] - centre[a]) * scale for a in range(3)]) for v in welded], faces, loop_normals
 
 
 def main():
@@ -142,22 +204,37 @@ def main():
     for o in list(bpy.data.objects):
         bpy.data.objects.remove(o)
 
-    verts, faces = load_obj(mesh_path, scene.get("up", "y"))
+    verts, faces, loop_normals = load_obj(mesh_path, scene.get("up", "y"))
     me = bpy.data.meshes.new("marble_mesh")
     me.from_pydata([tuple(v) for v in verts], [], faces)
     me.update()
     for p in me.polygons:
         p.use_smooth = True
+    crease = float(scene.get("crease_angle_deg", 60.0))  # kDefaultCreaseAngleDeg
+    if loop_normals is not None:
+        # The file's normals, as given (custom split normals need Auto Smooth; 180 so no edge
+        # is split by angle on top of them).
+        me.use_auto_smooth = True
+        me.auto_smooth_angle = math.pi
+        me.normals_split_custom_set(loop_normals)
+    elif crease < 180.0:
+        me.use_auto_smooth = True
+        me.auto_smooth_angle = math.radians(crease)
     obj = bpy.data.objects.new("marble", me)
     bs.collection.objects.link(obj)
 
     # Material.
     albedo = list(mat.get("base_color", [0.93, 0.89, 0.8]))
-    sa = mat.get("sigma_a_mm", [0.0021, 0.0041, 0.0071])
-    ss = mat.get("sigma_s_mm", [2.19, 2.62, 3.0])
-    sigma_tr = [math.sqrt(3.0 * a * (a + s)) for a, s in zip(sa, ss)]
-    radius = [1.0 / max(t, 1e-9) / mm_per_unit for t in sigma_tr]
     ior = float(mat.get("ior", 1.55))
+    if mat.get("scattering", "coefficients") == "radius":
+        radius = [r / mm_per_unit for r in mat.get("subsurface_radius_mm", [9.73, 6.3, 4.1])]
+    else:
+        sa = mat.get("sigma_a_mm", [0.0021, 0.0041, 0.0071])
+        ss = mat.get("sigma_s_mm", [2.19, 2.62, 3.0])
+        radius = [1.0 / ((a + s) * math.sqrt(3.0 * (1.0 - cycles_alpha_prime(c, ior)))) / mm_per_unit
+                  for a, s, c in zip(sa, ss, albedo)]
+        print("cycles_reference: warning: the material gives sigma_a_mm/sigma_s_mm; Cycles takes a radius, "
+              "so only the extinction is matched (give subsurface_radius_mm for the same stone)", file=sys.stderr)
     f0 = ((ior - 1.0) / (ior + 1.0)) ** 2
     m = bpy.data.materials.new("marble")
     m.use_nodes = True

@@ -25,6 +25,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--preset", o.preset, "Material preset by name (see `marble presets`) or a preset .json file");
   cmd.add_option("--set", o.sets, "Override one material parameter, key=value (repeatable; keys as in preset files)");
   cmd.add_option("--up", o.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
+  cmd.add_option("--crease-angle", o.creaseAngle,
+                 "For a mesh file without normals: edges whose faces meet at more than this many degrees are hard "
+                 "(Blender's Auto Smooth angle; default 60, 180 = smooth everywhere). The file's own normals are used as given")
+      ->check(CLI::Range(0.0f, 180.0f));
   cmd.add_option("--subsurface-resolution", o.subsurfaceResolution,
                  "marble mode's subsurface blur: half (default, fast) or full (crisper)");
   cmd.add_option("--antialias", o.antialias, "Antialiasing of the picture: fxaa (default) or none");
@@ -206,6 +210,10 @@ Scene buildScene(const SceneOptions& o) {
     } catch (const std::invalid_argument&) {
       throw InputError("--up", "", "expected one of y, z, x, -y, -z, -x, got \"" + o.up + "\"");
     }
+  }
+  if (o.creaseAngle) {
+    if (!std::isfinite(*o.creaseAngle)) throw InputError("--crease-angle", "", "expected a number of degrees in [0, 180]");
+    scene.crease_angle_deg = *o.creaseAngle;
   }
   if (o.subsurfaceResolution == "half") scene.render.subsurface_resolution = SubsurfaceResolution::Half;
   else if (o.subsurfaceResolution == "full") scene.render.subsurface_resolution = SubsurfaceResolution::Full;

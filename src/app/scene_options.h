@@ -19,6 +19,7 @@ struct SceneOptions {
   std::string preset;              // material preset, empty = the scene's
   std::vector<std::string> sets;   // key=value material overrides
   std::string up;                  // up axis of the mesh file
+  std::optional<float> creaseAngle;  // degrees; hard edges for computed normals
   std::string subsurfaceResolution;  // "half" | "full", empty = the scene's
   std::string antialias;           // "fxaa" or "none", empty = the scene's
   std::string environment;         // studio, none or map; empty = the scene's

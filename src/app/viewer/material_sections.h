@@ -49,6 +49,8 @@ inline void resetSection(Material& m, const Material& preset, MaterialSection se
       m.k_sss = preset.k_sss;
       m.sigma_a_mm = preset.sigma_a_mm;
       m.sigma_s_mm = preset.sigma_s_mm;
+      m.scattering = preset.scattering;
+      m.subsurface_radius_mm = preset.subsurface_radius_mm;
       m.translucency = preset.translucency;
       break;
     case MaterialSection::Reflectance:  // with the comparison models' parameters

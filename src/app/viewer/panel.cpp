@@ -4,6 +4,7 @@
 // object stays centred in what you can see. Tab hides the panel for a full-window view.
 #include <algorithm>
 
+#include "marble/scene/material_scattering.h"
 #include "panel_sections.h"
 #include "panel_widgets.h"
 
@@ -46,6 +47,9 @@ void drawPanel(ViewerState& s) {
   drawFilesSection(s);
   drawExportSection(s);
   drawPerformanceSection(s);
+  // In the radius form the coefficients follow base colour, radius and ior wherever they were
+  // edited (or reset), open section or not.
+  resolveScattering(s.scene.material);
   ImGui::PopItemWidth();
   ImGui::EndChild();
   if (!s.status.empty()) {

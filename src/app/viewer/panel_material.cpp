@@ -7,6 +7,7 @@
 #include "panel_sections.h"
 #include "panel_widgets.h"
 #include "param_ranges.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble::viewer {
 namespace {
@@ -123,10 +124,23 @@ void drawSubsurfaceSection(ViewerState& s) {
           "Low: translucent, glowing edges. High: opaque. Red travels further in marble than blue.\n"
           "(The object is 2 units across.)");
   slider("k_sss", "k_sss", m.k_sss, "Strength of the subsurface term: 0 = off, 1 = full.");
-  slider3("sigma_a 1/mm", "sigma_a_mm", m.sigma_a_mm,
-          "Measured absorption per millimetre, per channel: light lost inside the stone. Higher: darker, more coloured glow.");
-  slider3("sigma_s' 1/mm", "sigma_s_mm", m.sigma_s_mm,
-          "Reduced scattering per millimetre, per channel: how often light turns inside. Higher: milkier, shorter glow.");
+  enumCombo("given as", m.scattering, {"coefficients (sigma_a, sigma_s')", "radius (Blender's Principled BSDF)"},
+            "Coefficients: measured absorption and scattering per mm.\n"
+            "Radius: Blender's Subsurface Radius (RANDOM_WALK) with the base colour as the subsurface albedo;\n"
+            "the coefficients are then derived from them as Cycles derives its volume.");
+  if (m.scattering == ScatteringForm::Radius) {
+    slider3("radius mm", "subsurface_radius_mm", m.subsurface_radius_mm,
+            "Mean free path per channel in millimetres, exactly Blender's Subsurface Radius (times Subsurface)\n"
+            "for RANDOM_WALK. Longer: more translucent. The base colour is the albedo.");
+    resolveScattering(m);  // the coefficients follow the radius, the base colour and the ior
+    ImGui::TextDisabled("sigma_a %.4g %.4g %.4g /mm", m.sigma_a_mm.x, m.sigma_a_mm.y, m.sigma_a_mm.z);
+    ImGui::TextDisabled("sigma_s' %.4g %.4g %.4g /mm", m.sigma_s_mm.x, m.sigma_s_mm.y, m.sigma_s_mm.z);
+  } else {
+    slider3("sigma_a 1/mm", "sigma_a_mm", m.sigma_a_mm,
+            "Measured absorption per millimetre, per channel: light lost inside the stone. Higher: darker, more coloured glow.");
+    slider3("sigma_s' 1/mm", "sigma_s_mm", m.sigma_s_mm,
+            "Reduced scattering per millimetre, per channel: how often light turns inside. Higher: milkier, shorter glow.");
+  }
   slider("translucency", "translucency", m.translucency,
          "Scales light transmitted through thin parts: 1 is physical, 0 opaque, above 1 exaggerated.");
 }

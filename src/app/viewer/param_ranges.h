@@ -29,6 +29,7 @@ inline constexpr ParamRange kParamRanges[] = {
     // Measured coefficients span decades (marble's sigma_a is 0.002-0.007 /mm, a dark stone's 0.6):
     // logarithmic, with four significant digits so 0.0021 does not read 0.00.
     {"sigma_a_mm", 1.0e-4f, 2.0f, true, "%.4g"}, {"sigma_s_mm", 0.01f, 10.0f, true, "%.4g"},
+    {"subsurface_radius_mm", 0.01f, 1000.0f, true, "%.4g"},
     {"translucency", 0.0f, 2.0f, false},   {"ior", 1.0f, 3.0f, false},
     {"roughness", 0.0f, 1.0f, false},
     {"resolution", 16.0f, 1024.0f, true},  {"seed", 0.0f, 1.0e6f, false},

@@ -8,19 +8,20 @@
 #include <utility>
 
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Makes the winding outward if it came out inward, then normalizes; computes smooth normals when
-// the generator supplied none.
+// Makes the winding outward if it came out inward, then normalizes; computes angle-weighted normals
+// (default crease angle) when the generator supplied none.
 Mesh finish(Mesh mesh, const std::string& name) {
   if (signedVolume(mesh) < 0.0)
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
   normalizeMesh(mesh, "builtin:" + name);
-  if (mesh.normals.empty()) computeSmoothNormals(mesh);
+  if (mesh.normals.empty()) computeVertexNormals(mesh, kDefaultCreaseAngleDeg);
   return mesh;
 }
 

@@ -15,6 +15,7 @@
 #include "marble/core/input_file.h"
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble {
 
@@ -135,32 +136,6 @@ void applyUpAxis(Mesh& mesh, UpAxis up) {
   for (glm::vec3& n : mesh.normals) n = rotateUp(n, up);
 }
 
-void computeSmoothNormals(Mesh& mesh) {
-  std::vector<glm::vec3> acc(mesh.positions.size(), glm::vec3(0.0f));
-  const size_t n = mesh.positions.size();
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    if (a >= n || b >= n || c >= n) continue;
-    // |cross| is twice the triangle's area: area weighting comes for free; a degenerate
-    // triangle's cross product is zero and so adds nothing.
-    glm::vec3 w = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-    if (!finite(w)) continue;
-    acc[a] += w;
-    acc[b] += w;
-    acc[c] += w;
-  }
-  for (glm::vec3& v : acc) {
-    float len = glm::length(v);
-    if (std::isfinite(len) && len > 0.0f) {
-      v /= len;
-      if (!finite(v)) v = glm::vec3(0.0f, 1.0f, 0.0f);
-    } else {
-      v = glm::vec3(0.0f, 1.0f, 0.0f);
-    }
-  }
-  mesh.normals = std::move(acc);
-}
-
 void normalizeMesh(Mesh& mesh) { normalizeMesh(mesh, "mesh"); }
 
 void normalizeMesh(Mesh& mesh, const std::string& source) {
@@ -230,7 +205,7 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   // Normalizing first and computing normals second gives the same normals as the other order
   // (normalization is a uniform scale and a shift) but keeps cross products in float range.
   normalizeMesh(mesh, file);
-  if (mesh.normals.empty()) computeSmoothNormals(mesh);
+  if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg);
   return mesh;
 }
 

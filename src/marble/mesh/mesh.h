@@ -28,6 +28,14 @@ enum class UpAxis { Y, Z, X, NegY, NegZ, NegX };
 UpAxis parseUpAxis(std::string_view text);  // "y", "z", "x", "-y", ...; throws std::invalid_argument
 std::string_view upAxisName(UpAxis axis);
 
+// The crease angle used when neither the scene nor the command line gives one. 60 degrees splits
+// the cube's edges (90) and the dodecahedron's (63.4), as a user expects of them; on the shared
+// decimated scans it splits 3.3 % (dragon), 8.4 % (buddha), 0.6 % (bunny) of the edges, all on
+// tiny folded triangles where it changes no visible shading (docs/meshes.md, "Normals", measured).
+inline constexpr float kDefaultCreaseAngleDeg = 60.0f;
+// 180 (or more) is "no crease": one normal per point, as Blender's Shade Smooth without Auto Smooth.
+inline constexpr float kNoCreaseDeg = 180.0f;
+
 // How a mesh file is loaded.
 struct MeshLoadOptions {
   UpAxis up = UpAxis::Y;
@@ -38,19 +46,19 @@ struct MeshLoadOptions {
   // Warnings about the file (duplicate triangles dropped) are appended here; when null they are
   // printed to stderr as "warning: ...".
   std::vector<std::string>* warnings = nullptr;
+  // For a file without normals: edges whose faces' normals are more than this many degrees apart
+  // are hard (computeVertexNormals in vertex_normals.h). The file's own normals are used as given.
+  float creaseAngleDeg = kDefaultCreaseAngleDeg;
 };
 
 // Loads OBJ, PLY (ASCII/binary), STL (ASCII/binary) or glTF 2.0 (.gltf/.glb) by extension
 // (content sniffing for STL). Throws InputError "<file>: <place>: <problem>".
-// The result is turned to +Y up, has smooth normals when the file had none, and is normalized.
-// Exact duplicate triangles are dropped with one warning (mesh/duplicate_triangles.h).
+// The result is turned to +Y up and normalized. The file's own normals are used as given; when it
+// has none, they are computed as Blender does (angle-weighted, hard edges split at
+// options.creaseAngleDeg: computeVertexNormals in vertex_normals.h). Exact duplicate triangles are dropped with one warning (mesh/duplicate_triangles.h).
 // Running out of memory is an EnvironmentError naming the file.
 Mesh loadMesh(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
 Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options);
-
-// Area-weighted smooth normals; degenerate triangles contribute nothing, and a vertex with
-// no usable neighbour gets +Y rather than NaN.
-void computeSmoothNormals(Mesh& mesh);
 
 // Bounding-box centre to the origin, then a uniform scale so the largest extent is 2.0.
 // A mesh with no positions or zero extent throws InputError(source, "bounds", ...); the

@@ -10,7 +10,8 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
       // distance with the "nothing hit" clear value would invent huge entry distances, hence
       // zero thickness and light leaking through past the terminator.
-      distance_(gl::makeTexture2D(GL_R32F, size, size, GL_NEAREST)),
+      // RG: the distance, and the cosine at which the light enters there (light_depth.frag.glsl).
+      distance_(gl::makeTexture2D(GL_RG32F, size, size, GL_NEAREST)),
       depth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_LINEAR)),
       fbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
@@ -25,8 +26,9 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size_, size_);
   gl::setMeshPassState();  // both faces: meshes with holes must still block the light
-  const float farValue = light.far + 1e3f;  // "nothing hit": a distance beyond every surface
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &farValue);
+  // "Nothing hit": a distance beyond every surface, no light entering.
+  const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, farValue);
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);

@@ -1,6 +1,7 @@
 #include "marble/render/lighting_pass.h"
 
 #include "marble/render/frame_uniforms.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble {
 
@@ -86,6 +87,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_oren_nayar_sigma", m.oren_nayar_sigma);
   p.set("u_mm_per_unit", scene.mm_per_unit);
   p.set("u_sigma_tr_mm", transportCoefficientMm(m));
+  const DipoleDepths dipole = dipoleDepthsMm(m);
+  p.set("u_dipole_zr_mm", dipole.zr_mm);
+  p.set("u_dipole_zv_mm", dipole.zv_mm);
   p.set("u_ior", m.ior);
   p.set("u_roughness", m.roughness);
   p.set("u_translucency", m.translucency);

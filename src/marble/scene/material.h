@@ -18,6 +18,9 @@ enum class SchlickCosine { HdotV, HdotN };        // key "schlick_cos": "hv" | "
 // key "vein_model": "paper" (the paper's |sin(ramp + turbulence)|) | "network" (crack networks,
 // issue 16) | "breccia" (angular fragments in a matrix of crack veins).
 enum class VeinModel { Paper, Network, Breccia };
+// Key "scattering": how the `marble` mode's stone scatters is given: "coefficients" (sigma_a_mm,
+// sigma_s_mm) or "radius" (Blender's Principled BSDF: base_color, subsurface_radius_mm, ior).
+enum class ScatteringForm { Coefficients, Radius };
 
 struct Material {
   std::string name = "paper";
@@ -81,6 +84,16 @@ struct Material {
   float ior = 1.55f;             // "ior": calcite is 1.486-1.658 (F0 about 0.04-0.06)
   float roughness = 0.12f;       // "roughness": perceptual; GGX alpha = roughness^2. Polished 0.05-0.15, honed 0.4-0.6
   float translucency = 1.0f;     // "translucency": scales light transmitted through thin parts (1 = physical)
+
+  // --- the same stone in Blender's terms (issue 15; src/marble/scene/material_scattering.h) ---
+  // In the radius form base_color is the subsurface albedo and subsurface_radius_mm the mean free
+  // path per channel in mm, exactly Cycles' RANDOM_WALK Subsurface Radius (mm_per_unit turns it
+  // into scene units); sigma_a_mm and sigma_s_mm are then derived by Cycles' own conversion
+  // (resolveScattering). Giving subsurface_radius_mm selects the radius form, giving sigma_a_mm or
+  // sigma_s_mm the coefficient form. Default radius: Jensen's marble above, as Cycles would need
+  // it for albedo 0.83, 0.79, 0.75 at ior 1.55 (the same extinction sigma_a + sigma_s).
+  ScatteringForm scattering = ScatteringForm::Coefficients;  // "scattering"
+  glm::vec3 subsurface_radius_mm{9.73f, 6.3f, 4.1f};        // "subsurface_radius_mm", mm
 
   bool operator==(const Material&) const = default;
 };

@@ -13,6 +13,7 @@
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
 #include "marble/scene/embedded_presets.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble {
 namespace {
@@ -55,6 +56,8 @@ const EnumName kVeinModel[] = {{static_cast<int>(VeinModel::Paper), "paper"},
                                {static_cast<int>(VeinModel::Network), "network"},
                                {static_cast<int>(VeinModel::Breccia), "breccia"}};
 const EnumName kCos[] = {{static_cast<int>(SchlickCosine::HdotV), "hv"}, {static_cast<int>(SchlickCosine::HdotN), "hn"}};
+const EnumName kScattering[] = {{static_cast<int>(ScatteringForm::Coefficients), "coefficients"},
+                                {static_cast<int>(ScatteringForm::Radius), "radius"}};
 
 template <size_t N>
 const char* enumName(const EnumName (&table)[N], int value) {
@@ -142,7 +145,9 @@ const std::vector<std::string>& keyList() {
       "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency",
       // vein model (issue 16)
       "vein_model", "vein_spacing", "vein_width", "vein_density", "vein_normal", "vein_stretch", "vein_warp",
-      "vein_pinch", "vein_softness", "vein3_color", "cloud_color", "cloud_amount", "grain_amount", "fragment_tint"};
+      "vein_pinch", "vein_softness", "vein3_color", "cloud_color", "cloud_amount", "grain_amount", "fragment_tint",
+      // Principled form (issue 15)
+      "subsurface_radius_mm", "scattering"};
   return keys;
 }
 
@@ -193,8 +198,35 @@ bool applyKey(Material& m, const std::string& key, const json& v, const std::str
   else if (key == "cloud_amount") m.cloud_amount = s.number(0, 1);
   else if (key == "grain_amount") m.grain_amount = s.number(0, 1);
   else if (key == "fragment_tint") m.fragment_tint = s.number(0, 1);
+  else if (key == "scattering") m.scattering = static_cast<ScatteringForm>(s.choice(kScattering));
+  else if (key == "subsurface_radius_mm") m.subsurface_radius_mm = s.color(1e-3, 1e4);
   else return false;
   return true;
+}
+
+// Which scattering form an object of keys selects (material.h, "the same stone in Blender's
+// terms"): an explicit "scattering" decides; otherwise subsurface_radius_mm selects the radius
+// form and sigma_a_mm or sigma_s_mm the coefficient form, starting from the coefficients the
+// material had in effect (so a key left out keeps the stone's value). Both at once is an error:
+// which one was meant cannot be known.
+void selectScatteringForm(Material& m, bool hasForm, bool hasRadius, bool hasSigma, const std::string& file,
+                          const std::string& placePrefix) {
+  if (hasForm) return;
+  if (hasRadius && hasSigma)
+    throw InputError(file, placePrefix + "subsurface_radius_mm",
+                     "give either subsurface_radius_mm (Blender's Principled BSDF, with base_color and ior) or "
+                     "sigma_a_mm/sigma_s_mm, not both (or say which with \"scattering\")");
+  if (hasRadius) {
+    m.scattering = ScatteringForm::Radius;
+  } else if (hasSigma) {
+    resolveScattering(m);
+    m.scattering = ScatteringForm::Coefficients;
+  }
+}
+
+void selectScatteringForm(Material& m, const json& j, const std::string& file, const std::string& placePrefix) {
+  selectScatteringForm(m, j.contains("scattering"), j.contains("subsurface_radius_mm"),
+                       j.contains("sigma_a_mm") || j.contains("sigma_s_mm"), file, placePrefix);
 }
 
 std::string builtinFileName(const std::string& name) { return name + ".json"; }
@@ -249,12 +281,14 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
     if (!it->is_string()) throw InputError(file, "preset", "expected a preset name or path, got " + describe(*it));
     m = loadPresetImpl(it->get<std::string>(), dir, depth + 1, warnings);
   }
+  selectScatteringForm(m, j, file, "");
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() == "preset") continue;
     if (!applyKey(m, it.key(), it.value(), file, it.key()))
       warnings.push_back(file + ": " + it.key() + ": unknown key '" + it.key() + "' (ignored)");
   }
   validateMaterial(m, file, "");
+  resolveScattering(m);
   return m;
 }
 
@@ -313,12 +347,14 @@ void applyMaterialJson(Material& m, const json& j, const std::string& file, cons
       throw InputError(file, placePrefix + "preset", e.what());
     }
   }
+  selectScatteringForm(m, j, file, placePrefix);
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() == "preset") continue;
     if (!applyKey(m, it.key(), it.value(), file, placePrefix + it.key()))
       warnings.push_back(file + ": " + placePrefix + it.key() + ": unknown key '" + it.key() + "' (ignored)");
   }
   validateMaterial(m, file, placePrefix);
+  resolveScattering(m);
 }
 
 void setMaterialKey(Material& m, const std::string& key, const std::string& value) {
@@ -370,8 +406,10 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
     v = value;
   }
   Material copy = m;
+  selectScatteringForm(copy, false, key == "subsurface_radius_mm", key == "sigma_a_mm" || key == "sigma_s_mm", "--set", "");
   applyKey(copy, key, v, "--set", key);
   validateMaterial(copy, "--set", "");
+  resolveScattering(copy);
   m = copy;
 }
 
@@ -423,6 +461,8 @@ json materialToJson(const Material& m) {
   j["cloud_amount"] = floatJson(m.cloud_amount);
   j["grain_amount"] = floatJson(m.grain_amount);
   j["fragment_tint"] = floatJson(m.fragment_tint);
+  j["scattering"] = enumName(kScattering, static_cast<int>(m.scattering));
+  j["subsurface_radius_mm"] = col(m.subsurface_radius_mm);
   return j;
 }
 

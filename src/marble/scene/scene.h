@@ -94,6 +94,9 @@ struct Scene {
   // --allow-outside on the command line; docs/reliability.md, "What a file may pull in").
   bool allow_outside = false;
   UpAxis up = UpAxis::Y;
+  // Normals for a mesh file without its own: edges whose faces' normals are more than this many
+  // degrees apart are hard (Blender's Auto Smooth angle); 180 = smooth everywhere.
+  float crease_angle_deg = kDefaultCreaseAngleDeg;
   // Real size: millimetres per scene unit. The normalized mesh is 2 units across, so the
   // default 100 makes it a 20 cm statuette. Scattering lengths are in millimetres.
   float mm_per_unit = 100.0f;

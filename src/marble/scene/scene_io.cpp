@@ -65,6 +65,7 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
   j["mesh"] = meshField(scene.mesh, path);
   j["up"] = std::string(upAxisName(scene.up));
   j["mm_per_unit"] = number(scene.mm_per_unit);
+  j["crease_angle_deg"] = number(scene.crease_angle_deg);
   if (scene.allow_outside) j["allow_outside"] = true;
   j["camera"] = {{"position", vec3(scene.camera.position)},
                  {"target", vec3(scene.camera.target)},

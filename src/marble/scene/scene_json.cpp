@@ -240,6 +240,7 @@ Scene loadSceneText(const std::string& text, const std::filesystem::path& path, 
       r.fail("up", "expected one of \"y\", \"z\", \"x\", \"-y\", \"-z\", \"-x\", got \"" + up + "\"");
     }
   }
+  r.number("crease_angle_deg", scene.crease_angle_deg, 0.0f, 180.0f);
   if (const json* v = r.find("allow_outside")) {
     if (!v->is_boolean()) r.fail("allow_outside", "expected true or false, got " + ObjectReader::describe(*v));
     scene.allow_outside = v->get<bool>();
@@ -274,7 +275,7 @@ Mesh loadSceneMesh(const Scene& scene, std::vector<std::string>* warnings) {
   if (scene.mesh.rfind("builtin:", 0) == 0) return builtinMesh(scene.mesh.substr(8));
   const bool fromSceneFile = !scene.origin.file.empty() && scene.origin.mesh == scene.mesh;
   std::vector<std::string> local;
-  MeshLoadOptions options{scene.up, scene.allow_outside, &local};
+  MeshLoadOptions options{scene.up, scene.allow_outside, &local, scene.crease_angle_deg};
   Mesh mesh;
   try {
     mesh = loadMesh(scene.mesh, options);

@@ -1,0 +1,25 @@
+#pragma once
+// Vertex normals as Blender makes them for a mesh that has none: each face's normal weighted by
+// the angle of its corner at the vertex (Thürmer & Wüthrich 1998; Blender's mesh_normals.cc), and
+// hard edges split where the two faces' normals are more than a crease angle apart (Blender's
+// "Auto Smooth" angle).
+#include "marble/mesh/mesh.h"
+
+namespace marble {
+
+// kDefaultCreaseAngleDeg and kNoCreaseDeg are in mesh.h (loadMesh's default).
+
+// Replaces mesh.normals by angle-weighted normals with hard edges at `creaseAngleDeg`:
+// - Vertices at exactly the same position are the same point (so seams of texture coordinates,
+//   or formats that store every triangle's own corners, like STL, do not split normals).
+// - An edge is smooth when exactly two triangles share it, they use it in opposite directions
+//   (consistent winding) and their normals are at most creaseAngleDeg apart; otherwise it is hard,
+//   as in Blender with Auto Smooth. The corners around a point that are connected through smooth
+//   edges form one fan and share one normal: the sum of their faces' normals, each weighted by
+//   its corner's angle. With creaseAngleDeg >= 180 every corner of a point is in one fan.
+// - A render vertex whose corners fall into several fans is duplicated (position and texture
+//   coordinate copied), one copy per fan; the indices are rewritten to match.
+// - Degenerate (zero-area) triangles add nothing; a vertex with no usable neighbour gets +Y.
+void computeVertexNormals(Mesh& mesh, float creaseAngleDeg);
+
+}  // namespace marble

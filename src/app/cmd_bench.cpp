@@ -79,6 +79,7 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   addSceneOptions(cmd, o.scene, true);
+  o.scene.showcaseWhenEmpty = false;  // the benchmark's built-in scene is fixed: figures stay comparable
   cmd.add_option("--frames", o.frames, "Frames to measure (default 20)");
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
   cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");

@@ -30,12 +30,20 @@ int run(int argc, char** argv) {
   RenderOptions render;
   auto* renderCmd = app.add_subcommand("render", "Render a scene or mesh headless (no display needed) to a PNG");
   addSceneOptions(*renderCmd, render.scene, true);
-  renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically; required)");
+  renderCmd->add_option("-o,--output", render.output, "Output PNG file, carrying the scene (written atomically; required); with --turntable, a folder");
   renderCmd->add_option("--hdr", render.hdr, "Also write the linear, not tone-mapped image as OpenEXR");
   renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
   renderCmd->add_option("--supersample", render.supersample,
                         "Render N times wider and higher, then average each NxN block in linear light (1-4, default 1)")
       ->check(CLI::Range(1, 4));
+  renderCmd->add_option("--quality", render.quality,
+                        "draft (default: the scene's settings) or final: supersampled 3x3 (2x2 or less where the size "
+                        "limit needs), full-resolution subsurface blur, no FXAA");
+  renderCmd->add_option("--turntable", render.turntable,
+                        "Render N frames of a full turn into the folder -o names (frame_0000.png, ...)");
+  renderCmd->add_option("--turntable-of", render.turntableOf, "What turns: object (default) or light");
+  renderCmd->add_option("--video", render.video, "Encode the turntable as .mp4, .webm or animated .webp (needs ffmpeg)");
+  renderCmd->add_option("--fps", render.fps, "The video's frames per second (default 24)");
 
   ViewOptions view;
   auto* viewCmd = app.add_subcommand("view", "Open the interactive viewer (needs a display)");

@@ -66,6 +66,8 @@ void drawPerformanceSection(ViewerState& s) {
   if (marble)
     passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");
   passLine("post", t.postMs, t.postRan, "Marble mode: blurred light x albedo + reflections, then tone mapping; evaluates the pattern when the view or pattern changed, reuses the stored diffuse part when only gloss, exposure or background changed. Runs whenever anything changed.");
+  if (sceneHasStage(s.scene))
+    passLine("stage", t.stageMs, t.stageRan, "Backdrop and ground around the object (and, when the model moved, the floor's contact map). Runs whenever anything changed.");
   if (s.scene.render.mode != RenderMode::Floor && s.scene.render.antialias == Antialias::Fxaa)
     passLine("fxaa", t.fxaaMs, t.fxaaRan, "Antialiasing (FXAA) of the displayed picture, on the tiles the object can cover: blends across contrast edges. Runs whenever anything changed.");
   if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, t.floorRan, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");

@@ -3,6 +3,7 @@
 // the panel reports, and requests from the panel to the frame loop (which owns GL and does
 // the work, so the panel never touches the renderer).
 #include <deque>
+#include <map>
 #include <string>
 
 #include "interaction_detail.h"
@@ -15,6 +16,17 @@ namespace marble {
 
 enum class Turntable { Off, Object, Light };
 
+// The Export section's settings and the job's progress (export_job.h does the work).
+struct ExportPanel {
+  std::string path = "marble.glb";
+  int size = 1024;
+  bool textureSet = false;      // a folder of PNGs + material.json instead of a glTF file
+  bool requestStart = false, requestCancel = false;
+  bool running = false;
+  float progress = 0.0f;
+  std::string stage;
+};
+
 struct ViewerState {
   Scene scene;
   Orbit camera;
@@ -25,6 +37,9 @@ struct ViewerState {
   float meshRadius = 1.7320508f;  // bounding sphere about the origin, for framing (F)
   std::string meshLabel;          // what is loaded, for the panel
   size_t triangles = 0;
+  // Each mesh file's up axis, as the scene, --up or the panel said it: a file loaded again
+  // gets its own back; a new file starts at +Y (the OBJ/glTF convention), never a guess.
+  std::map<std::string, UpAxis> meshUp;
 
   // Path boxes.
   std::string meshPathInput;
@@ -38,6 +53,8 @@ struct ViewerState {
   std::string presetName;         // the preset the material started from
   Material presetMaterial;        // what "reset" returns a section to
   UndoStack undo;
+
+  ExportPanel exportPanel;
 
   std::string status;             // last message (errors in red)
   bool statusIsError = false;

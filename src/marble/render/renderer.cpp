@@ -10,7 +10,7 @@ namespace marble {
 
 struct Renderer::Passes {
   explicit Passes(const ShaderLibrary& s)
-      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
+      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s), stage(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   AlbedoPass albedo;
@@ -20,7 +20,10 @@ struct Renderer::Passes {
   PostPass post;
   FloorPass floor;
   FxaaPass fxaa;
+  StagePass stage;
 };
+
+void Renderer::invalidateStage() { passes_->stage.invalidateBottomMap(); }
 
 bool samePattern(const Material& a, const Material& b) {
   return a.seed == b.seed && a.resolution == b.resolution && a.basis == b.basis && a.mapping == b.mapping &&
@@ -165,7 +168,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;
-  times_.postRan = times_.fxaaRan = times_.floorRan = false;
+  times_.postRan = times_.fxaaRan = times_.floorRan = times_.stageRan = false;
   times_.diffuseSource = -1;
   outputValid_ = true;
   lastOutput_ = OutputKey{scene, model, targetFbo, width, height};
@@ -263,13 +266,22 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   times_.fxaaRan = fxaa;
   if (marble) albedoValid_ = true;  // the post pass wrote it (other modes: the albedo pass, or not needed)
   diffuseValid_ = marble;  // other modes do not write it
+  const bool stage = sceneHasStage(scene);
+  if (stage) {
+    if (scene.render.ground) passes_->stage.updateBottomMap(*mesh_, model);
+    passes_->stage.run(scene, camera, light, lightTexelWorld, environment(), passes_->geometry.depthTexture(),
+                       passes_->lightDepth.depthTexture(), mesh_->boundsMin().y - 0.002f, display.fbo(), width, height,
+                       fxaa);
+    times_.stageRan = true;
+  }
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;  // the light's map: all content
+    // The light's map, or a stage around the object: content everywhere.
+    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || stage;
     passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
                       glm::clamp(scene.render.background, 0.0f, 1.0f));
   }
@@ -312,12 +324,13 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.floorMs = get(passes_->floor.timer());
   times_.fxaaMs = get(passes_->fxaa.timer());
   times_.blurDepthMs = get(passes_->blurDepth.timer());
+  times_.stageMs = get(passes_->stage.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
+         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
          (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
 }

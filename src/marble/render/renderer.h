@@ -7,6 +7,8 @@
 //   5 subsurface blur  -> with 4 (`marble` only; half resolution by default)
 //   6 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
 // The screen passes (3-6) draw only inside the mesh's screen rectangle.
+//   6b stage           -> every frame the scene shows a backdrop or a ground (`marble`; the
+//                         floor's contact map from below when the mesh or model changed)
 //   7 FXAA             -> every frame when antialiasing is on (display image -> target)
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
@@ -25,6 +27,7 @@
 #include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/screen_tiles.h"
+#include "marble/render/stage_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
 #include "marble/render/turbulence_texture.h"
 #include "marble/core/image.h"
@@ -34,9 +37,9 @@ namespace marble {
 
 struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
-         fxaaMs = 0, blurDepthMs = 0;
+         fxaaMs = 0, blurDepthMs = 0, stageMs = 0;
   bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
-  bool postRan = false, fxaaRan = false, floorRan = false;  // false only when the whole frame was unchanged
+  bool postRan = false, fxaaRan = false, floorRan = false, stageRan = false;  // false only when the whole frame was unchanged
   // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
   // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
   int diffuseSource = -1;
@@ -114,6 +117,7 @@ public:
   GLuint displayImageTexture() const { return displayImage_ ? displayImage_->texture() : 0; }
   void invalidate() {
     lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
+    invalidateStage();
   }
 
   // Off: the pattern's turbulence is evaluated per pixel even where a baked grid would give the
@@ -185,6 +189,7 @@ private:
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  void invalidateStage();
   // `target`, (re)made at this size and format, with the G-buffer's depth attached.
   OffscreenTarget& surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height, GLenum format);
   const EnvironmentMap* environment() const { return environment_ ? &*environment_ : nullptr; }

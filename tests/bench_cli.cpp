@@ -106,6 +106,21 @@ TEST(CliBench, TurbulenceGridCanBeTurnedOffToCompare) {
   EXPECT_GE(on.value("gl_bytes", 0.0) - off.value("gl_bytes", 0.0), 256.0 * 256 * 256 * 2);
 }
 
+// The default mesh (25,600 triangles) is below the light proxy's and the interaction copy's
+// thresholds (render/mesh_detail.h): both draw the whole mesh. (The copies themselves are
+// tested in tests/mesh_detail_gl_test.cpp.)
+TEST(CliBench, MeshDetailOptionsAreReported) {
+  const auto plain = benchJson("--motion camera");
+  EXPECT_EQ(plain.value("draw_order", ""), "optimized");
+  EXPECT_EQ(plain.value("light_triangles", 0), plain.value("triangles", 1));
+  EXPECT_EQ(plain.value("light_proxy_error_units", 1.0), 0.0);
+  EXPECT_EQ(plain.value("interaction_triangles", 1), 0) << "not made unless asked for";
+  EXPECT_EQ(benchJson("--draw-order file").value("draw_order", ""), "file");
+  const auto interaction = benchJson("--motion camera --interaction-detail on --light-proxy off");
+  EXPECT_EQ(interaction.value("interaction_triangles", 0), interaction.value("triangles", 1));
+  EXPECT_EQ(interaction["pass_runs"].value("geometry", 0), 3);
+}
+
 TEST(CliBench, OtherModesHaveAnAlbedoPass) {
   const auto j = benchJson("--mode paper --motion pattern");
   EXPECT_EQ(j["pass_runs"].value("albedo", -1), 3);

@@ -138,6 +138,15 @@ TEST(ViewerCli, TurntableTurnsTheObjectBetweenFrames) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ViewerCli, InteractionDetailSettingIsCheckedAndRuns) {
+  const auto bad = runMarble("view --frames 1 --interaction-detail sometimes", xvfb());
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_EQ(lineCount(bad.output), 1) << bad.output;
+  EXPECT_NE(bad.output.find("--interaction-detail"), std::string::npos) << bad.output;
+  const auto on = runMarble("view --frames 4 --width 320 --height 240 --interaction-detail on --turntable object", xvfb());
+  EXPECT_EQ(on.exitCode, 0) << on.output;
+}
+
 TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {
   const auto r = runMarble("view /nonexistent/thing.obj --frames 1", xvfb());
   EXPECT_EQ(r.exitCode, 2) << r.output;

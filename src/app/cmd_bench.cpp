@@ -10,6 +10,7 @@
 #include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
+#include "marble/render/mesh_detail.h"
 #include "marble/render/renderer.h"
 #include "shader_source.h"
 
@@ -95,12 +96,13 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                  "in the file's order (to compare the two)")
       ->check(CLI::IsMember({"optimized", "file"}));
   cmd.add_option("--light-proxy", o.lightProxy,
-                 "on (default): the light's pass draws a simplified copy of a mesh above 60,000 triangles; off: "
-                 "the full mesh (to compare)")
+                 "on (default): the light's pass draws a simplified copy of a mesh above " +
+                     std::to_string(kLightProxyMinTriangles) + " triangles; off: the full mesh (to compare)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--interaction-detail", o.interactionDetail,
-                 "on: every measured frame draws the camera's passes from the interaction copy (about 100,000 "
-                 "triangles), as the viewer does while the view moves; off (default): the full mesh")
+                 "on: every measured frame draws the camera's passes from the interaction copy (about " +
+                     std::to_string(kInteractionTriangles) +
+                     " triangles), as the viewer does while the view moves; off (default): the full mesh")
       ->check(CLI::IsMember({"on", "off"}));
 }
 

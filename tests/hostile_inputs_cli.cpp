@@ -8,7 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -112,4 +114,29 @@ TEST_F(HostileCli, OutOfMemoryIsOneLineAndExitCodeOne) {
       << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 #endif
+}
+
+TEST_F(HostileCli, AllowOutsideLetsAGltfReadABufferBesideItsFolder) {
+  // One triangle: positions (0,0,0) (1,0,0) (0,1,0) and the indices 0 1 2.
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const uint16_t indices[3] = {0, 1, 2};
+  {
+    std::ofstream bin(dir / "shared.bin", std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.write(reinterpret_cast<const char*>(indices), sizeof indices);
+  }
+  fs::create_directories(dir / "models");
+  std::ofstream(dir / "models" / "tri.gltf")
+      << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"../shared.bin","byteLength":42}],)"
+         R"("bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],)"
+         R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+         R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}],)"
+         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}]})";
+  const auto refused = run("render models/tri.gltf -o out.png --width 16 --height 16");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("'uri' \"../shared.bin\" is outside the glTF's folder"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+  const auto allowed = run("render --allow-outside models/tri.gltf -o out.png --width 16 --height 16");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.output;
+  EXPECT_TRUE(fs::exists(dir / "out.png"));
 }

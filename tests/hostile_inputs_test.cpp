@@ -127,6 +127,13 @@ TEST_F(HostileInputs, AHugeValueIsNeverEchoedWhole) {
   EXPECT_NE(p.find("got array [1,1,1"), std::string::npos) << p;
 }
 
+TEST_F(HostileInputs, APresetThatIsASymlinkLoopSaysSo) {
+  fs::create_symlink("b.json", dir / "a.json");
+  fs::create_symlink("a.json", dir / "b.json");
+  EXPECT_EQ(errorOf([&] { loadPreset((dir / "a.json").string()); }),
+            (dir / "a.json").string() + ": too many levels of symbolic links (a symbolic link loop?)");
+}
+
 TEST_F(HostileInputs, AFileThatIsNotJsonIsNotEchoed) {
   const auto p = put("credentials.json", "root:$6$secretHASH:19000:0:99999:7:::\n");
   const std::string e = errorOf([&] { loadPreset(p.string()); });

@@ -3,8 +3,10 @@
 // the panel reports, and requests from the panel to the frame loop (which owns GL and does
 // the work, so the panel never touches the renderer).
 #include <deque>
+#include <map>
 #include <string>
 
+#include "interaction_detail.h"
 #include "marble/render/renderer.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/scene.h"
@@ -35,6 +37,9 @@ struct ViewerState {
   float meshRadius = 1.7320508f;  // bounding sphere about the origin, for framing (F)
   std::string meshLabel;          // what is loaded, for the panel
   size_t triangles = 0;
+  // Each mesh file's up axis, as the scene, --up or the panel said it: a file loaded again
+  // gets its own back; a new file starts at +Y (the OBJ/glTF convention), never a guess.
+  std::map<std::string, UpAxis> meshUp;
 
   // Path boxes.
   std::string meshPathInput;
@@ -63,6 +68,7 @@ struct ViewerState {
   float turntableAngle = 0.0f;    // degrees; transient, not part of the scene or undo
 
   bool vsync = true;
+  InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

@@ -28,14 +28,20 @@ std::array<Corner, 3> canonical(const Mesh& mesh, size_t t) {
   return {c[first], c[(first + 1) % 3], c[(first + 2) % 3]};
 }
 
+// The nine words folded in pairs, then MurmurHash3's 64-bit finalizer, so that the low bits
+// (the table index) depend on every bit of every coordinate.
 uint64_t hashOf(const std::array<Corner, 3>& key) {
   uint64_t h = 0x9E3779B97F4A7C15ull;
-  for (const Corner& c : key)
-    for (uint32_t v : c) {
-      h ^= v;
-      h *= 0xFF51AFD7ED558CCDull;
-      h ^= h >> 32;
-    }
+  for (const Corner& c : key) {
+    h = (h ^ ((static_cast<uint64_t>(c[0]) << 32) | c[1])) * 0x9FB21C651E98DF25ull;
+    h = (h ^ c[2]) * 0xC2B2AE3D27D4EB4Full;
+    h ^= h >> 29;
+  }
+  h ^= h >> 33;
+  h *= 0xFF51AFD7ED558CCDull;
+  h ^= h >> 33;
+  h *= 0xC4CEB9FE1A85EC53ull;
+  h ^= h >> 33;
   return h;
 }
 

@@ -193,6 +193,49 @@ double signedVolume(const Mesh& mesh) {
   return v / 6.0;
 }
 
+namespace {
+
+// Drops exact duplicate triangles (mesh/duplicate_triangles.h) and says so once.
+void dropDuplicateTriangles(Mesh& mesh, const std::string& file, std::vector<std::string>* warnings) {
+  const size_t dropped = removeDuplicateTriangles(mesh);
+  if (dropped == 0) return;
+  const std::string warning = file + ": dropped " + withThousands(dropped) +
+                              " duplicate triangles (the same three corners as an earlier triangle, same winding)";
+  if (warnings) warnings->push_back(warning);
+  else std::cerr << "warning: " << printable(warning, kMessageLineLimit) << "\n";
+}
+
+Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, const InputFile& in,
+                    const MeshLoadOptions& options) {
+  const std::string& file = in.label();
+  // A binary STL's 84-byte header says how much of the file there is to read.
+  const uint64_t bytes = ext == ".stl" ? stlBytesToRead(file, in.readPrefix(kStlProbeBytes), in.size()) : in.size();
+  std::string data = readMeshBytes(in, bytes);
+  Mesh mesh;
+  if (ext == ".obj") {
+    mesh = loadObj(file, data);
+  } else if (ext == ".ply") {
+    mesh = loadPly(file, data);
+  } else if (ext == ".stl") {
+    mesh = loadStl(file, data);
+  } else if (ext == ".gltf") {
+    mesh = loadGltf(file, data, path.parent_path(), options.allowOutside);
+  } else {
+    mesh = loadGlb(file, data, path.parent_path(), options.allowOutside);
+  }
+  { std::string().swap(data); }  // free the file bytes before the heavier steps
+  validateLoaded(mesh, file);
+  dropDuplicateTriangles(mesh, file, options.warnings);
+  applyUpAxis(mesh, options.up);
+  // Normalizing first and computing normals second gives the same normals as the other order
+  // (normalization is a uniform scale and a shift) but keeps cross products in float range.
+  normalizeMesh(mesh, file);
+  if (mesh.normals.empty()) computeSmoothNormals(mesh);
+  return mesh;
+}
+
+}  // namespace
+
 Mesh loadMesh(const std::filesystem::path& path, UpAxis up) { return loadMesh(path, MeshLoadOptions{up}); }
 
 Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options) {
@@ -206,36 +249,7 @@ Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options)
                                    "' (expected .obj, .ply, .stl, .gltf or .glb)");
   if (in.size() == 0) throw InputError(file, "", "file is empty");
   try {
-    // A binary STL's 84-byte header says how much of the file there is to read.
-    const uint64_t bytes = ext == ".stl" ? stlBytesToRead(file, in.readPrefix(kStlProbeBytes), in.size()) : in.size();
-    std::string data = readMeshBytes(in, bytes);
-    const std::filesystem::path folder = path.parent_path();
-    Mesh mesh;
-    if (ext == ".obj") {
-      mesh = loadObj(file, data);
-    } else if (ext == ".ply") {
-      mesh = loadPly(file, data);
-    } else if (ext == ".stl") {
-      mesh = loadStl(file, data);
-    } else if (ext == ".gltf") {
-      mesh = loadGltf(file, data, folder, options.allowOutside);
-    } else {
-      mesh = loadGlb(file, data, folder, options.allowOutside);
-    }
-    { std::string().swap(data); }  // free the file bytes before the heavier steps
-    validateLoaded(mesh, file);
-    if (const size_t dropped = removeDuplicateTriangles(mesh); dropped > 0) {
-      const std::string warning = file + ": dropped " + withThousands(dropped) +
-                                  " duplicate triangles (the same three corners as an earlier triangle, same winding)";
-      if (options.warnings) options.warnings->push_back(warning);
-      else std::cerr << "warning: " << printable(warning, kMessageLineLimit) << "\n";
-    }
-    applyUpAxis(mesh, options.up);
-    // Normalizing first and computing normals second gives the same normals as the other order
-    // (normalization is a uniform scale and a shift) but keeps cross products in float range.
-    normalizeMesh(mesh, file);
-    if (mesh.normals.empty()) computeSmoothNormals(mesh);
-    return mesh;
+    return loadOpenedMesh(path, ext, in, options);
   } catch (const std::bad_alloc&) {
     // Out of memory is the machine's limit, not a fault in the file (exit 1), but the user
     // needs to know which file asked for it.

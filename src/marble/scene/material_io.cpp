@@ -207,7 +207,8 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
     if (path.is_relative() && !relativeTo.empty()) path = relativeTo / path;
     file = path.string();
     std::error_code ec;
-    if (nameOrPath.empty() || !std::filesystem::exists(path, ec)) {
+    // symlink_status: a symbolic link loop or a dangling link is there, and InputFile says what it is.
+    if (nameOrPath.empty() || !std::filesystem::exists(std::filesystem::symlink_status(path, ec))) {
       const bool looksLikePath = nameOrPath.find('/') != std::string::npos || path.extension() == ".json";
       throw InputError(nameOrPath.empty() ? std::string("\"\"") : nameOrPath, "",
                        looksLikePath ? "no such file" : "not a built-in preset (" + knownPresetNames() + ") nor a file");

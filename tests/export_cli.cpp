@@ -149,3 +149,21 @@ TEST(ExportCli, TextureCoordinatesSurviveAGlbRoundTrip) {
   VALIDATE_OR_SKIP(report, dir / "second.glb");
   expectClean(report);
 }
+
+TEST(ExportCli, AMeshWoundInwardIsWrittenWoundOutward) {
+  // glTF viewers cull back faces (and a volume must not be double-sided): a tetrahedron wound
+  // inward comes out wound outward, with normals that agree.
+  const fs::path dir = tempDir("export-winding");
+  spit(dir / "inward.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  ASSERT_LT(marble::signedVolume(marble::loadMesh(dir / "inward.obj")), 0.0);  // the fixture is what it says
+  ASSERT_EQ(runMarble("export " + (dir / "inward.obj").string() + " --size 32 -o " + (dir / "out.glb").string()).exitCode, 0);
+  const marble::Mesh m = marble::loadMesh(dir / "out.glb");
+  EXPECT_GT(marble::signedVolume(m), 0.0);
+  // Vertex normals point the way the triangles face.
+  double agreement = 0;
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+    agreement += glm::dot(glm::cross(b - a, c - a), m.normals[m.indices[t]]);
+  }
+  EXPECT_GT(agreement, 0.0);
+}

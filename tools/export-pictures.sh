@@ -4,10 +4,11 @@
 # (tools/web/shoot.mjs, lit mode) and by Blender's Cycles through tools/blender_marble.py.
 # Needs the meshes in ../shared/models (not part of the repository), chromium, node with
 # tools/web (tools/setup-web-tools.sh) and Blender (with python3-numpy).
-# Usage: tools/export-pictures.sh [MODELS_DIR]
+# Usage: tools/export-pictures.sh [MODELS_DIR [NAME...]]   (names: bunny dragon teapot; default all)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 models=${1:-$root/../../shared/models}
+names="${*:2}"
 [[ -d $models ]] || models=/work/shared/models
 marble=$root/build/marble
 out=$root/docs/images
@@ -15,8 +16,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 size=320
 
+wanted() { [[ -z ${names:-} || " $names " == *" $1 "* ]]; }
 shoot() {  # name, mesh, "options for render and export" (preset, up), "options for export only"
   local name=$1 input=$2
+  wanted "$name" || return 0
   read -r -a common <<< "$3"
   read -r -a only <<< "$4"
   "$marble" export "$input" -o "$work/$name.glb" "${common[@]}" "${only[@]}"
@@ -33,5 +36,5 @@ shoot() {  # name, mesh, "options for render and export" (preset, up), "options 
 shoot bunny "$models/bunny.obj" "" "--size 1024"
 shoot dragon "$models/dragon.obj" "--up z --preset calacatta" "--size 2048"
 # A glTF with its own texture coordinates: an export read back and exported again with --uv-from file.
-"$marble" export "$models/teapot.obj" -o "$work/teapot-uv.glb" --size 1024 --preset nero-marquina > /dev/null
+wanted teapot && "$marble" export "$models/teapot.obj" -o "$work/teapot-uv.glb" --size 1024 --preset nero-marquina > /dev/null
 shoot teapot "$work/teapot-uv.glb" "--preset nero-marquina" "--uv-from file --size 1024"

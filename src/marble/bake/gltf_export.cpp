@@ -97,11 +97,27 @@ std::string encodeGltf(const GltfExportInput& in, GltfContainer container) {
     uvs[i * 2 + 1] = 1.0f - mesh.texcoords[i].y;
   }
 
+  // glTF viewers cull back faces (and KHR_materials_volume must not be double-sided), while
+  // marble draws a mesh whatever its winding: a mesh wound inward (negative enclosed volume, as
+  // the Utah teapot) is written wound outward, its normals turned to match.
+  std::vector<uint32_t> indices = mesh.indices;
+  if (signedVolume(mesh) < 0) {
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+    double agreement = 0;  // do the normals follow the new winding?
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const glm::vec3 a = mesh.positions[indices[t]], b = mesh.positions[indices[t + 1]], c = mesh.positions[indices[t + 2]];
+      const glm::vec3 face = glm::cross(b - a, c - a);
+      for (int k = 0; k < 3; ++k) agreement += glm::dot(face, glm::vec3(normals[indices[t + k] * 3], normals[indices[t + k] * 3 + 1], normals[indices[t + k] * 3 + 2]));
+    }
+    if (agreement < 0)
+      for (float& x : normals) x = -x;
+  }
+
   BinaryBuilder bin;
   const int posView = bin.add(positions.data(), positions.size() * sizeof(float), kArrayBuffer);
   const int nrmView = bin.add(normals.data(), normals.size() * sizeof(float), kArrayBuffer);
   const int uvView = bin.add(uvs.data(), uvs.size() * sizeof(float), kArrayBuffer);
-  const int idxView = bin.add(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t), kElementArrayBuffer);
+  const int idxView = bin.add(indices.data(), indices.size() * sizeof(uint32_t), kElementArrayBuffer);
   const std::string pngs[3] = {encodePng(in.textures.baseColor), encodePng(in.textures.metallicRoughness),
                                encodePng(in.textures.thickness)};
   const char* imageNames[3] = {"base_color", "metallic_roughness", "thickness"};
@@ -119,7 +135,7 @@ std::string encodeGltf(const GltfExportInput& in, GltfContainer container) {
       {{"bufferView", posView}, {"componentType", kFloat}, {"count", n}, {"type", "VEC3"}, {"min", vec3Json(lo)}, {"max", vec3Json(hi)}},
       {{"bufferView", nrmView}, {"componentType", kFloat}, {"count", n}, {"type", "VEC3"}},
       {{"bufferView", uvView}, {"componentType", kFloat}, {"count", n}, {"type", "VEC2"}},
-      {{"bufferView", idxView}, {"componentType", kUnsignedInt}, {"count", mesh.indices.size()}, {"type", "SCALAR"}},
+      {{"bufferView", idxView}, {"componentType", kUnsignedInt}, {"count", indices.size()}, {"type", "SCALAR"}},
   });
   const std::string name = in.material.name.empty() ? "marble" : in.material.name;
   json material = {

@@ -141,6 +141,87 @@ bool packShelves(std::vector<Chart>& charts, const std::vector<uint32_t>& order,
   return true;
 }
 
+// Where a point of the chart (in its projected, turned plane) lands inside the chart's box, in
+// texels at `scale`; a quarter turn (not a mirror, so triangles keep their winding) for charts
+// packed on their side.
+glm::dvec2 localTexel(const Chart& ch, glm::vec2 planar, double scale) {
+  const glm::dvec2 local = glm::dvec2(planar - ch.lo) * scale;
+  if (!ch.rotated) return local;
+  return {static_cast<double>(ch.hi.y - ch.lo.y) * scale - local.y, local.x};
+}
+
+// Skyline packing of the charts' own shapes: each chart's footprint (its triangles on a grid of
+// `cell` texels, grown by the padding plus one cell for the grid's rounding) drops onto the
+// skyline of what is placed, at the column that leaves it lowest (a Tetris drop). Tighter than
+// shelves because irregular charts interlock instead of each taking its bounding box.
+bool packSkyline(std::vector<Chart>& charts, const std::vector<uint32_t>& order, const std::vector<std::vector<glm::vec2>>& corners,
+                 double scale, int size, int pad) {
+  const int cell = size >= 1024 ? 2 : 1;
+  const int W = size / cell;
+  const int grow = (pad + cell - 1) / cell + 1;
+  std::vector<int> sky(static_cast<size_t>(W), 0), bottom, top;
+  std::vector<uint8_t> fp, tmp;
+  constexpr int kEmpty = std::numeric_limits<int>::max();
+  for (uint32_t c : order) {
+    Chart& ch = charts[c];
+    glm::dvec2 ext = glm::dvec2(ch.hi - ch.lo) * scale;
+    if (ch.rotated) std::swap(ext.x, ext.y);
+    const int fw = static_cast<int>(std::ceil(ext.x / cell)) + 2 * grow + 1, fh = static_cast<int>(std::ceil(ext.y / cell)) + 2 * grow + 1;
+    if (fw > W || fh > W) return false;
+    fp.assign(static_cast<size_t>(fw) * fh, 0);
+    const int res = std::max(fw, fh);
+    auto toGrid = [&](glm::vec2 planar) { return localTexel(ch, planar, scale) / static_cast<double>(cell) + static_cast<double>(grow); };
+    const std::vector<glm::vec2>& tri = corners[c];
+    for (size_t i = 0; i + 2 < tri.size(); i += 3) {
+      glm::vec2 uv[3];
+      for (int k = 0; k < 3; ++k) {
+        const glm::dvec2 g = toGrid(tri[i + k]);
+        const int gx = std::clamp(static_cast<int>(g.x), 0, fw - 1), gy = std::clamp(static_cast<int>(g.y), 0, fh - 1);
+        fp[static_cast<size_t>(gy) * fw + gx] = 1;  // a vertex's cell, for slivers no centre falls in
+        uv[k] = glm::vec2(static_cast<float>(g.x / res), static_cast<float>(1.0 - g.y / res));
+      }
+      rasterizeUvTriangle(uv[0], uv[1], uv[2], res, [&](int x, int y, glm::vec3) {
+        if (x < fw && y < fh) fp[static_cast<size_t>(y) * fw + x] = 1;
+      });
+    }
+    // Grow by `grow` cells: a max filter along rows, then along columns.
+    tmp.assign(fp.size(), 0);
+    for (int y = 0; y < fh; ++y)
+      for (int x = 0; x < fw; ++x)
+        if (fp[static_cast<size_t>(y) * fw + x])
+          for (int k = std::max(0, x - grow); k <= std::min(fw - 1, x + grow); ++k) tmp[static_cast<size_t>(y) * fw + k] = 1;
+    std::fill(fp.begin(), fp.end(), 0);
+    for (int y = 0; y < fh; ++y)
+      for (int x = 0; x < fw; ++x)
+        if (tmp[static_cast<size_t>(y) * fw + x])
+          for (int k = std::max(0, y - grow); k <= std::min(fh - 1, y + grow); ++k) fp[static_cast<size_t>(k) * fw + x] = 1;
+    bottom.assign(static_cast<size_t>(fw), kEmpty);
+    top.assign(static_cast<size_t>(fw), 0);
+    for (int x = 0; x < fw; ++x)
+      for (int y = 0; y < fh; ++y)
+        if (fp[static_cast<size_t>(y) * fw + x]) {
+          if (bottom[static_cast<size_t>(x)] == kEmpty) bottom[static_cast<size_t>(x)] = y;
+          top[static_cast<size_t>(x)] = y + 1;
+        }
+    int bestY = kEmpty, bestX = 0;
+    for (int X = 0; X + fw <= W; ++X) {
+      int y = 0;
+      for (int i = 0; i < fw && y < bestY; ++i)
+        if (bottom[static_cast<size_t>(i)] != kEmpty) y = std::max(y, sky[static_cast<size_t>(X + i)] - bottom[static_cast<size_t>(i)]);
+      if (y < bestY) {
+        bestY = y;
+        bestX = X;
+      }
+    }
+    if (bestY == kEmpty || bestY + fh > W) return false;
+    for (int i = 0; i < fw; ++i)
+      if (bottom[static_cast<size_t>(i)] != kEmpty)
+        sky[static_cast<size_t>(bestX + i)] = std::max(sky[static_cast<size_t>(bestX + i)], bestY + top[static_cast<size_t>(i)]);
+    ch.offset = glm::vec2(static_cast<float>((bestX + grow) * cell), static_cast<float>((bestY + grow) * cell));
+  }
+  return true;
+}
+
 }  // namespace
 
 UvUnwrapStats measureUvLayout(const Mesh& mesh) {
@@ -312,16 +393,32 @@ UvUnwrapResult unwrapUvs(const Mesh& mesh, const UvUnwrapOptions& options) {
   if (!(lo > 0) || !packShelves(charts, order, lo, size, pad))
     throw InputError("mesh", "unwrap", std::to_string(charts.size()) + " charts do not fit a " + std::to_string(size) +
                                            "-texel texture with " + std::to_string(pad) + " texels of padding");
+  // Then the charts' own shapes on a skyline, at the largest scale that fits (bisection from the
+  // shelves' scale up); the shelves stay when the skyline does no better.
+  std::vector<std::vector<glm::vec2>> corners(charts.size());
+  for (size_t c = 0; c < charts.size(); ++c)
+    for (uint32_t t : charts[c].triangles)
+      for (int k = 0; k < 3; ++k) corners[c].push_back(planar[out.mesh.indices[t * 3 + k]]);
+  double scale = lo;
+  if (packSkyline(charts, order, corners, lo, size, pad)) {
+    double good = lo, bad = 4.0 * lo;
+    while (packSkyline(charts, order, corners, bad, size, pad)) bad *= 2;
+    for (int i = 0; i < 12; ++i) {
+      const double mid = 0.5 * (good + bad);
+      (packSkyline(charts, order, corners, mid, size, pad) ? good : bad) = mid;
+    }
+    scale = good;
+    packSkyline(charts, order, corners, scale, size, pad);
+  } else {
+    packShelves(charts, order, scale, size, pad);
+  }
 
   out.mesh.positions.resize(vertices);
   out.mesh.texcoords.resize(vertices);
   if (!mesh.normals.empty()) out.mesh.normals.resize(vertices);
   for (uint32_t v = 0; v < vertices; ++v) {
     const Chart& ch = charts[chartOfVertex[v]];
-    glm::dvec2 local = glm::dvec2(planar[v] - ch.lo) * lo;
-    // A quarter turn (not a mirror, so triangles keep their winding in texture space).
-    if (ch.rotated) local = glm::dvec2(static_cast<double>(ch.hi.y - ch.lo.y) * lo - local.y, local.x);
-    const glm::dvec2 texel = glm::dvec2(ch.offset) + local;
+    const glm::dvec2 texel = glm::dvec2(ch.offset) + localTexel(ch, planar[v], scale);
     out.mesh.texcoords[v] = glm::vec2(texel / static_cast<double>(size));
     out.mesh.positions[v] = mesh.positions[out.sourceVertex[v]];
     if (!mesh.normals.empty()) out.mesh.normals[v] = mesh.normals[out.sourceVertex[v]];

@@ -32,6 +32,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--environment-intensity", o.environmentIntensity,
                  "Scale of the environment's light (default: the scene's, 0.6; a captured map is usually meant at 1)")
       ->check(CLI::Range(0.0f, 100.0f));
+  addAllowOutsideFlag(cmd, o);
+}
+
+void addAllowOutsideFlag(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--allow-outside", o.allowOutside,
                "Let a glTF read buffer files outside its own folder (refused by default; see docs/reliability.md)");
 }

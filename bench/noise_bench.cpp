@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "marble/noise/marble_pattern.h"
+#include "marble/scene/material_io.h"
 
 namespace {
 
@@ -122,6 +123,19 @@ void BM_Marble_Pattern3D_Rows_Value(benchmark::State& state) {
   });
 }
 
+// The vein model (issue 16), a row at a time: the Carrara preset's colour at the same grid of
+// points (object space: texel / 128 - 1, so the 256 x 256 points span the object), four
+// turbulence samples by rows plus three Voronoi families per point: what `marble texture`
+// runs for a stone preset.
+void BM_Marble_Veins3D_Rows(benchmark::State& state) {
+  const Material m = marble::loadPreset("carrara");
+  std::vector<glm::vec3> colours(kGrid);
+  runGrid(state, [&](int y, float* out) {
+    const glm::vec3 origin(-1.0f, static_cast<float>(y) / 128.0f - 1.0f, kZ / 128.0f - 1.0f);
+    marble::veinAlbedoRow(m, origin, glm::vec3(1.0f / 128.0f, 0.0f, 0.0f), kGrid, colours.data(), out);
+  });
+}
+
 const int kThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
 #define MARBLE_BENCH(fn) BENCHMARK(fn)->Arg(1)->Arg(kThreads)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond)
@@ -130,6 +144,7 @@ MARBLE_BENCH(BM_Marble_Turbulence3D_PerPoint_Perlin);
 MARBLE_BENCH(BM_Marble_Turbulence3D_PerPoint_Value);
 MARBLE_BENCH(BM_Marble_Turbulence3D_Rows_Value);
 MARBLE_BENCH(BM_Marble_Pattern3D_Rows_Value);
+MARBLE_BENCH(BM_Marble_Veins3D_Rows);
 
 }  // namespace
 

@@ -31,6 +31,25 @@ uniform float u_pat_vein2_amount;
 uniform vec3 u_pat_base_color;
 uniform vec3 u_pat_vein_color;
 uniform vec3 u_pat_vein2_color;
+// The vein model (issue 16): a program constant when the pass specializes for it.
+#ifdef PAT_VEIN_MODEL
+const int u_pat_vein_model = PAT_VEIN_MODEL;
+#else
+uniform int u_pat_vein_model;
+#endif
+uniform vec3 u_pat_vein_spacing;
+uniform vec3 u_pat_vein_width;
+uniform vec3 u_pat_vein_density;
+uniform vec3 u_pat_vein_normal;
+uniform float u_pat_vein_stretch;
+uniform float u_pat_vein_warp;
+uniform float u_pat_vein_pinch;
+uniform float u_pat_vein_softness;
+uniform vec3 u_pat_vein3_color;
+uniform vec3 u_pat_cloud_color;
+uniform float u_pat_cloud_amount;
+uniform float u_pat_grain_amount;
+uniform float u_pat_fragment_tint;
 
 PatParams marble_params() {
   PatParams P;
@@ -47,6 +66,20 @@ PatParams marble_params() {
   P.baseColor = u_pat_base_color;
   P.veinColor = u_pat_vein_color;
   P.vein2Color = u_pat_vein2_color;
+  P.veinModel = u_pat_vein_model;
+  P.veinSpacing = u_pat_vein_spacing;
+  P.veinWidth = u_pat_vein_width;
+  P.veinDensity = u_pat_vein_density;
+  P.veinNormal = u_pat_vein_normal;
+  P.veinStretch = u_pat_vein_stretch;
+  P.veinWarp = u_pat_vein_warp;
+  P.veinPinch = u_pat_vein_pinch;
+  P.veinSoftness = u_pat_vein_softness;
+  P.vein3Color = u_pat_vein3_color;
+  P.cloudColor = u_pat_cloud_color;
+  P.cloudAmount = u_pat_cloud_amount;
+  P.grainAmount = u_pat_grain_amount;
+  P.fragmentTint = u_pat_fragment_tint;
   return P;
 }
 
@@ -66,7 +99,7 @@ float pat_grid_pattern2(PatParams P, vec2 q) { return pat_sine(pat_ramp2(P, q), 
 #endif
 
 // pat_value_at (pattern_core.glsl) with the grid's turbulence.
-float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
+float marble_paper_value(vec3 objectPos, vec3 objectNormal) {
   PatParams P = marble_params();
   vec3 q = pat_texel_pos(P, objectPos);
 #if PAT_TURBULENCE_GRID == 3
@@ -79,11 +112,31 @@ float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
 #endif
 }
 #else
-float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
+float marble_paper_value(vec3 objectPos, vec3 objectNormal) {
   return pat_value_at(marble_params(), objectPos, objectNormal);
 }
 #endif
 
+// The vein model's turbulence sample k (pattern_core.glsl: pat_vein_sample_point): from the
+// grid where the passes bound one (always 3D for the vein models), else evaluated.
+float marble_vein_turbulence(PatParams P, vec3 objectPos, int k) {
+#if defined(PAT_TURBULENCE_GRID) && PAT_TURBULENCE_GRID == 3
+  return pat_grid_turbulence3(pat_vein_sample_point(P, objectPos, k));
+#else
+  return pat_vein_turbulence(P, objectPos, k);
+#endif
+}
+
+float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
+  if (u_pat_vein_model == PAT_VEINS_PAPER) return marble_paper_value(objectPos, objectNormal);
+  PatParams P = marble_params();
+  return pat_vein_value(P, objectPos, marble_vein_turbulence(P, objectPos, 0), marble_vein_turbulence(P, objectPos, 1),
+                        marble_vein_turbulence(P, objectPos, 2), marble_vein_turbulence(P, objectPos, 3));
+}
+
 vec3 marble_albedo(vec3 objectPos, vec3 objectNormal) {
-  return pat_color(marble_params(), marble_pattern_value(objectPos, objectNormal));
+  PatParams P = marble_params();
+  if (u_pat_vein_model == PAT_VEINS_PAPER) return pat_color(P, marble_paper_value(objectPos, objectNormal));
+  return pat_vein_albedo(P, objectPos, marble_vein_turbulence(P, objectPos, 0), marble_vein_turbulence(P, objectPos, 1),
+                         marble_vein_turbulence(P, objectPos, 2), marble_vein_turbulence(P, objectPos, 3));
 }

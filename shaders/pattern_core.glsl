@@ -51,6 +51,21 @@ struct PatParams {
   vec3 baseColor;
   vec3 veinColor;
   vec3 vein2Color;
+  // --- vein model (issue 16): read only when veinModel != PAT_VEINS_PAPER ---
+  int veinModel;      // PAT_VEINS_*
+  vec3 veinSpacing;   // dominant, secondary, hairline: mean distance between cracks, object units
+  vec3 veinWidth;     // full width of each family's veins, object units
+  vec3 veinDensity;   // fraction of each family's cracks that are filled, [0,1]
+  vec3 veinNormal;   // unit: the normal of the planes the dominant veins lie in (bedding)
+  float veinStretch;  // how much thinner the dominant cells are across veinNormal (>= 1)
+  float veinWarp;     // domain-warp amplitude, object units
+  float veinPinch;    // [0,1]: how much a vein's width swells and pinches (1: down to nothing)
+  float veinSoftness; // [0,1]: edge blur relative to the width
+  vec3 vein3Color;    // hairline veins
+  vec3 cloudColor;    // the ground's clouds (nuvolato)
+  float cloudAmount;  // [0,1]
+  float grainAmount;  // [0,1]: contrast of the fine calcite grain
+  float fragmentTint; // [0,1], breccia: how much fragments differ in colour
 };
 
 // ---- white noise ------------------------------------------------------------------------
@@ -300,4 +315,201 @@ vec3 pat_color(PatParams P, float v) {
 
 vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {
   return pat_color(P, pat_value_at(P, objectPos, objectNormal));
+}
+
+// ---- vein networks (issue 16): marble as mineral-filled fractures ---------------------------
+//
+// Real veins are cracks filled with other minerals, so they form networks: they fork, rejoin,
+// end against each other, swell and pinch. The model, in object space (solid, no seams):
+//   * the crack network of one family is the set of faces of a 3D Voronoi diagram (Worley,
+//     "A Cellular Texture Basis Function", SIGGRAPH 1996): points where the distances to the
+//     nearest and second-nearest feature points are close (within width/2 of their bisecting
+//     plane: the exact distance, not F2 - F1, which widens where two points nearly coincide). Voronoi faces meet
+//     three at an edge, so in any slice veins meet at Y junctions -- the forks of real marble;
+//   * the space is domain-warped first (Quilez, "Domain warping", 2002/2012): p + a * (T - 0.5)
+//     with T three samples of the paper's turbulence, so the faces meander like veins instead
+//     of being flat; the space is also stretched along the veins' normal, so cells are
+//     flattened and the dominant veins lie roughly in one family of planes;
+//   * each face (a pair of cells) is filled or not by a hash of the pair (density: the fraction
+//     of cracks that are filled), and its width follows a fourth turbulence sample, so veins
+//     swell, pinch and fade out inside the stone;
+//   * three families at different spacings (dominant, secondary, hairline) are composed from
+//     the finest to the coarsest over a cloudy ground with fine grain;
+//   * breccia: the dominant family's cells are angular fragments, each tinted at random, and
+//     its faces are the matrix between them.
+// Voronoi search: the 2 x 2 x 2 cells nearest the point (not 3 x 3 x 3), with feature points
+// jittered over the central 80 % of their cells. This is exact for F1 almost everywhere and
+// rarely picks a wrong F2 (a short straight cut in a vein where it does, hidden by the warp);
+// it costs 8 cells instead of 27, which is what fits the frame budget.
+
+const int PAT_VEINS_PAPER = 0;
+const int PAT_VEINS_NETWORK = 1;
+const int PAT_VEINS_BRECCIA = 2;
+
+// The result of one Voronoi search: the two nearest distances and their cells' hashes.
+struct PatCells {
+  float f1;  // squared distances while searching
+  float f2;
+  uint h1;
+  uint h2;
+  vec3 v1;   // from the point to the nearest and second-nearest feature points
+  vec3 v2;
+  float edge;  // twice the distance to the face between the two nearest cells (cell units)
+};
+
+// 3D Voronoi F1/F2 at p (cell units), feature points from the cell hash; `salt` picks the family.
+PatCells pat_voronoi(vec3 p, uint salt) {
+  vec3 i = floor(p);
+  vec3 f = p - i;
+  // The 2x2x2 block of cells nearest p: from i or i-1 along each axis.
+  float bx = f.x < 0.5f ? -1.0f : 0.0f;
+  float by = f.y < 0.5f ? -1.0f : 0.0f;
+  float bz = f.z < 0.5f ? -1.0f : 0.0f;
+  PatCells c;
+  c.f1 = 1e9f;
+  c.f2 = 1e9f;
+  c.h1 = 0u;
+  c.h2 = 0u;
+  c.v1 = vec3(0.0f);
+  c.v2 = vec3(0.0f);
+  for (int k = 0; k < 8; ++k) {
+    float ox = bx + float(k & 1);
+    float oy = by + float((k >> 1) & 1);
+    float oz = bz + float((k >> 2) & 1);
+    // Integer cell coordinates (offset by 2^20 so negative cells hash as distinct uints).
+    uint h = pat_hash(uint(i.x + ox + 1048576.0f) * 0x8da6b343u + uint(i.y + oy + 1048576.0f) * 0xd8163841u +
+                      uint(i.z + oz + 1048576.0f) * 0xcb1ab31fu + salt);
+    // Three 10-bit jitters in [0.1, 0.9).
+    float jx = 0.1f + 0.8f * float(h & 1023u) * (1.0f / 1024.0f);
+    float jy = 0.1f + 0.8f * float((h >> 10u) & 1023u) * (1.0f / 1024.0f);
+    float jz = 0.1f + 0.8f * float((h >> 20u) & 1023u) * (1.0f / 1024.0f);
+    float dx = ox + jx - f.x;
+    float dy = oy + jy - f.y;
+    float dz = oz + jz - f.z;
+    float d = dx * dx + dy * dy + dz * dz;
+    if (d < c.f1) {
+      c.f2 = c.f1;
+      c.h2 = c.h1;
+      c.v2 = c.v1;
+      c.f1 = d;
+      c.h1 = h;
+      c.v1 = vec3(dx, dy, dz);
+    } else if (d < c.f2) {
+      c.f2 = d;
+      c.h2 = h;
+      c.v2 = vec3(dx, dy, dz);
+    }
+  }
+  // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
+  // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
+  vec3 dv = c.v2 - c.v1;
+  c.edge = (c.f2 - c.f1) / max(sqrt(dot(dv, dv)), 1e-6f);
+  c.f1 = sqrt(c.f1);
+  c.f2 = sqrt(c.f2);
+  return c;
+}
+
+// 1 at the heart of a vein of full width w (object units) at e = twice the distance to its
+// crack (PatCells.edge, in object units), 0 outside, a smooth edge of relative width `soft`.
+float pat_vein_cover(float e, float w, float soft) {
+  float lo = w * (1.0f - soft);
+  float hi = w * (1.0f + soft) + 1e-6f;
+  float t = min(max((hi - e) / (hi - lo), 0.0f), 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// A face's fill in [0,1): symmetric in the two cells, so the face is one crack.
+float pat_face_random(PatCells c) { return pat_unit(pat_hash((c.h1 ^ c.h2) + 0x68e31da4u)); }
+
+// Expands p along the unit normal n by `stretch`: cells become `stretch` times thinner along n,
+// so most of their faces (the veins) are sheets across n -- veins that lie in one family of
+// planes, as in a stone whose fractures follow its bedding. A cut across n shows them as
+// roughly parallel lines; a cut along n (a "fleuri" cut, in the trade) shows broad clouds.
+vec3 pat_stretch(vec3 p, vec3 n, float stretch) { return p + n * (dot(p, n) * (stretch - 1.0f)); }
+
+// The texel-space points of the four turbulence samples the vein model reads at object point
+// p: 0-2 the warp, 3 the width field. Offsets are fractions of the period W so the samples are
+// independent (the turbulence wraps with period W).
+vec3 pat_vein_sample_point(PatParams P, vec3 objectPos, int k) {
+  vec3 q = pat_texel_pos(P, objectPos);
+  float W = P.resolution;
+  if (k == 1) return q + vec3(0.31f * W, 0.57f * W, 0.13f * W);
+  if (k == 2) return q + vec3(0.71f * W, 0.19f * W, 0.43f * W);
+  if (k == 3) return q + vec3(0.47f * W, 0.83f * W, 0.67f * W);
+  return q;
+}
+
+// One family's coverage at warped point p: `spacing` apart, `stretch` along d, width w,
+// `density` of faces filled, width modulated by m in [0,1] (the width field).
+float pat_family_cover(PatParams P, vec3 p, float spacing, float stretch, float w, float density, float m, uint salt) {
+  if (w <= 0.0f || density <= 0.0f) return 0.0f;
+  PatCells c = pat_voronoi(pat_stretch(p, P.veinNormal, stretch) * (1.0f / spacing), salt);
+  if (pat_face_random(c) >= density) return 0.0f;
+  // Swell and pinch: width from (1 - pinch) to (1 + pinch) times w as m goes 0 -> 1; at pinch
+  // 1 the vein fades out where m is low.
+  float width = w * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f);
+  return pat_vein_cover(c.edge * spacing, width, P.veinSoftness);
+}
+
+// Maps a turbulence sample (mean 0.5, mostly within 0.3-0.7) to [0,1].
+float pat_spread(float t) { return min(max((t - 0.5f) * 3.0f + 0.5f, 0.0f), 1.0f); }
+
+// The warped point at which the families are evaluated.
+vec3 pat_vein_warped(PatParams P, vec3 objectPos, float t0, float t1, float t2) {
+  return objectPos + (vec3(t0, t1, t2) - 0.5f) * (2.0f * P.veinWarp);
+}
+
+// The three families' coverages at warped point p with width field m: (dominant -- for breccia
+// the matrix between fragments --, secondary, hairline), and in w the dominant cell's random
+// in [0,1) (breccia: which tint its fragment takes).
+vec4 pat_vein_covers(PatParams P, vec3 p, float m) {
+  float hair = pat_family_cover(P, p, P.veinSpacing.z, 1.0f, P.veinWidth.z, P.veinDensity.z, 1.0f - m, 0x27d4eb2fu);
+  float secondary = pat_family_cover(P, p, P.veinSpacing.y, sqrt(P.veinStretch), P.veinWidth.y, P.veinDensity.y, m, 0x165667b1u);
+  if (P.veinModel == PAT_VEINS_BRECCIA) {
+    // Every face of the dominant family is matrix: the fragments are its cells.
+    PatCells f = pat_voronoi(pat_stretch(p, P.veinNormal, P.veinStretch) * (1.0f / P.veinSpacing.x), 0x9e3779b9u);
+    float width = P.veinWidth.x * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f);
+    float matrix = pat_vein_cover(f.edge * P.veinSpacing.x, width, P.veinSoftness);
+    return vec4(matrix, secondary, hair, pat_unit(pat_hash(f.h1 + 0x85ebca6bu)));
+  }
+  float dominant = pat_family_cover(P, p, P.veinSpacing.x, P.veinStretch, P.veinWidth.x, P.veinDensity.x, m, 0x9e3779b9u);
+  return vec4(dominant, secondary, hair, 0.0f);
+}
+
+// The vein model at object point p, given the four turbulence samples at
+// pat_vein_sample_point(P, p, 0..3) (the caller evaluates them, or reads them from the grid):
+// the colour in xyz, and in w the value before colour, as the paper's: 0 at the heart of a
+// vein, 1 in the ground.
+vec4 pat_vein_shade(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+  vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3));
+  // Ground: clouds (the third warp sample, a broad turbulence); breccia fragments' tints.
+  vec3 c = pat_mix3(P.baseColor, P.cloudColor, P.cloudAmount * pat_spread(t2));
+  if (P.veinModel == PAT_VEINS_BRECCIA) c = pat_mix3(c, P.cloudColor, P.fragmentTint * cov.w);
+  c = pat_mix3(c, P.vein3Color, cov.z);
+  c = pat_mix3(c, P.vein2Color, cov.y);
+  c = pat_mix3(c, P.veinColor, cov.x);
+  // Grain: one octave of value noise at 1.5 texels, a multiplicative speckle.
+  float g = pat_value3(pat_texel_pos(P, objectPos) * 0.6667f, 1048576.0f, 0x3c6ef372u);
+  c = c * (1.0f + P.grainAmount * (g - 0.5f));
+  return vec4(c.x, c.y, c.z, 1.0f - max(cov.x, max(cov.y, cov.z)));
+}
+vec3 pat_vein_albedo(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+  vec4 s = pat_vein_shade(P, objectPos, t0, t1, t2, t3);
+  return vec3(s.x, s.y, s.z);
+}
+float pat_vein_value(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+  return pat_vein_shade(P, objectPos, t0, t1, t2, t3).w;
+}
+
+// The turbulence samples evaluated (the reference; the GPU may read them from the grid).
+float pat_vein_turbulence(PatParams P, vec3 objectPos, int k) {
+  return pat_turbulence3(P, pat_vein_sample_point(P, objectPos, k));
+}
+vec3 pat_vein_albedo_at(PatParams P, vec3 objectPos) {
+  return pat_vein_albedo(P, objectPos, pat_vein_turbulence(P, objectPos, 0), pat_vein_turbulence(P, objectPos, 1),
+                         pat_vein_turbulence(P, objectPos, 2), pat_vein_turbulence(P, objectPos, 3));
+}
+float pat_vein_value_at(PatParams P, vec3 objectPos) {
+  return pat_vein_value(P, objectPos, pat_vein_turbulence(P, objectPos, 0), pat_vein_turbulence(P, objectPos, 1),
+                        pat_vein_turbulence(P, objectPos, 2), pat_vein_turbulence(P, objectPos, 3));
 }

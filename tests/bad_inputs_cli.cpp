@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cli_support.h"
+#include "marble/core/image.h"
 #include "hdr_support.h"
 
 namespace {
@@ -143,6 +144,10 @@ void writeInputs(const fs::path& dir) {
   put("huge.hdr", marble::test::hdrHeader(20000, 10000) + std::string(64, '\x80'));
   put("envmissing.json", R"({"render": {"environment_map": "nothere.hdr"}})");
   put("envnofile.json", R"({"render": {"environment": "map"}})");
+  // A valid 1x1 PNG without text chunks (written as marble writes one, without a scene).
+  marble::writePng(dir / "plain.png", marble::ImageRGBA8{1, 1, {0, 0, 0, 255}});
+  put("notpng.png", "just text");
+  put("groundtype.json", R"({"render": {"ground": "yes"}})");
   put("envsky.json", R"({"render": {"environment": "sky"}})");
   // Issue 18: hostile inputs.
   ::mkfifo((dir / "pipe.obj").c_str(), 0644);
@@ -317,7 +322,7 @@ const std::vector<Row>& rows() {
       {"EnvMapWithoutFile", "--environment map without a map", "render --environment map" + kSmall, 2,
        "marble render: --environment: \"map\" needs a file: add --environment-map FILE.hdr"},
       {"EnvUnknown", "--environment sky", "render --environment sky" + kSmall, 2,
-       "marble render: --environment: expected \"studio\", \"none\" or \"map\", got \"sky\""},
+       "marble render: --environment: expected \"studio\", \"none\", \"map\" or a FILE.hdr, got \"sky\""},
       {"SceneEnvMapMissing", "scene naming a missing .hdr", "render envmissing.json" + kSmall, 2,
        "marble render: envmissing.json: render.environment_map: nothere.hdr: file not found"},
       {"SceneEnvMapWithoutFile", "scene asking for \"map\" without environment_map", "render envnofile.json" + kSmall, 2,
@@ -384,6 +389,52 @@ const std::vector<Row>& rows() {
       {"BadUp", "--up w", "render --up w" + kSmall, 2, "marble render: --up: expected one of y, z, x, -y, -z, -x, got \"w\""},
       {"UnknownAntialias", "--antialias msaa", "render --antialias msaa" + kSmall, 2,
        "marble render: --antialias: expected \"fxaa\" or \"none\", got \"msaa\""},
+      // Look-dev flags (issue 19).
+      {"LightUnknown", "--light sideways", "render --light sideways" + kSmall, 2,
+       "marble render: --light: expected front, side, back, top, or AZ,EL (degrees, elevation in [-90, 90]), got \"sideways\""},
+      {"LightElevation", "--light 0,120 (elevation past the zenith)", "render --light 0,120" + kSmall, 2,
+       "marble render: --light: expected front, side, back, top, or AZ,EL"},
+      {"LightPositionAtOrigin", "--light-position 0,0,0", "render --light-position 0,0,0" + kSmall, 2,
+       "marble render: --light-position: must not be at the origin (the object is there)"},
+      {"LightPositionShort", "--light-position 1,2", "render --light-position 1,2" + kSmall, 2,
+       "marble render: --light-position: expected X,Y,Z (three numbers in [-10000, 10000]), got \"1,2\""},
+      {"CameraElevation", "--camera 0,95", "render --camera 0,95" + kSmall, 2,
+       "marble render: --camera: expected front, side, back, top, or AZ,EL[,DIST] (degrees, elevation in (-90, 90), distance in [0.2, 100]), got \"0,95\""},
+      {"CameraDistance", "--camera 0,10,500", "render --camera 0,10,500" + kSmall, 2, "marble render: --camera: expected front, side,"},
+      {"CameraPositionAbove", "--camera-position straight above the target", "render --camera-position 0,3,0" + kSmall, 2,
+       "marble render: --camera-position: must not be straight above or below the target (the camera's up is +Y)"},
+      {"CameraPositionNan", "--camera-position 1,nan,3", "render --camera-position 1,nan,3" + kSmall, 2,
+       "marble render: --camera-position: expected X,Y,Z (three numbers in [-10000, 10000]), got \"1,nan,3\""},
+      {"SizeZero", "--size-mm 0", "render --size-mm 0" + kSmall, 2,
+       "marble render: --size-mm: expected the object's size in millimetres, in [0.002, 2000000]"},
+      {"ExposureRange", "--exposure 11", "render --exposure 11" + kSmall, 2, "marble render: --exposure: expected stops in [-10, 10]"},
+      {"BackgroundRange", "--background 1,2,3", "render --background 1,2,3" + kSmall, 2,
+       "marble render: --background: expected R,G,B (three numbers in [0, 1]), got \"1,2,3\""},
+      {"EnvironmentHdrMissing", "--environment of a missing .hdr", "render --environment nothere.hdr" + kSmall, 2,
+       "marble render: nothere.hdr: file not found"},
+      {"GroundNotOnOff", "--ground yes", "render --ground yes" + kSmall, 2, "marble render: --ground: expected on or off, got \"yes\""},
+      {"BackdropNotOnOff", "--backdrop 1", "render --backdrop 1" + kSmall, 2, "marble render: --backdrop: expected on or off, got \"1\""},
+      {"BackdropBlurRange", "--backdrop-blur 2", "render --backdrop-blur 2" + kSmall, 2, "marble render: --backdrop-blur: expected a number in [0, 1]"},
+      {"SceneGroundType", "scene with \"ground\": \"yes\"", "render groundtype.json" + kSmall, 2,
+       "marble render: groundtype.json: render.ground: expected true or false, got string \"yes\""},
+      {"QualityUnknown", "--quality ultra", "render --quality ultra" + kSmall, 2, "marble render: --quality: expected draft or final, got \"ultra\""},
+      {"TurntableZero", "--turntable 0", "render --turntable 0 -o frames --width 16 --height 16", 2,
+       "marble render: --turntable: expected 1 to 3600 frames, got 0"},
+      {"TurntableOfCamera", "--turntable-of camera", "render --turntable 2 --turntable-of camera -o frames --width 16 --height 16", 2,
+       "marble render: --turntable-of: expected object or light, got \"camera\""},
+      {"TurntableIntoPng", "--turntable with -o a .png", "render --turntable 2 -o out.png --width 16 --height 16", 2,
+       "marble render: -o: out.png: --turntable writes numbered frames into a folder: give -o a folder (e.g. -o frames/)"},
+      {"TurntableFps", "--fps 0", "render --turntable 2 --fps 0 -o frames --width 16 --height 16", 2,
+       "marble render: --fps: expected 1 to 120 frames per second, got 0"},
+      {"VideoWithoutTurntable", "--video without --turntable", "render --video out.mp4" + kSmall, 2,
+       "marble render: --video: needs --turntable N (the frames to encode)"},
+      {"VideoFormat", "--video out.avi", "render --turntable 2 --video out.avi -o frames --width 16 --height 16", 2,
+       "marble render: --video: expected a .mp4, .webm or .webp file, got \"out.avi\""},
+      {"VideoNoFfmpeg", "--video without ffmpeg installed (PATH without it)", "render --turntable 2 --video out.mp4 -o frames --width 16 --height 16", 1,
+       "marble render: --video: ffmpeg is not installed (not on PATH); install the package ffmpeg", "PATH=/nonexistent"},
+      {"PngWithoutScene", "a PNG that marble did not write, as the input", "render plain.png" + kSmall, 2,
+       "marble render: plain.png: carries no marble scene (only PNGs written by `marble render` do)"},
+      {"PngNotPng", "text named .png, as the input", "render notpng.png" + kSmall, 2, "marble render: notpng.png: not a PNG file"},
       {"SupersampleOutOfRange", "--supersample 5", "render --supersample 5" + kSmall, 2, "--supersample: Value 5 not in range 1 to 4"},
       {"SupersampleTooLarge", "--supersample 4 of a 4000-pixel-wide image", "render -o out.png --width 4000 --height 16 --supersample 4", 2,
        "marble render: --supersample: 4 times 4000x16 is 16000x64, above the limit of 8192 pixels a side; lower --supersample or the size"},

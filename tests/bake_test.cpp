@@ -2,8 +2,12 @@
 // unwrap, the file-UV checks and the baked textures against closed forms (bake/*.h).
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <unistd.h>
 
+#include <cmath>
+#include <filesystem>
+
+#include "marble/bake/background_export.h"
 #include "marble/bake/bake_mesh.h"
 #include "marble/bake/ray_bvh.h"
 #include "marble/bake/texture_bake.h"
@@ -201,4 +205,51 @@ TEST(TextureBake, CancelStopsTheBake) {
   o.size = 64;
   o.progress = [](double, const char*) { return false; };
   EXPECT_THROW(bakeTextureSet(unitQuad(), Material{}, o), BakeCancelled);
+}
+
+namespace {
+marble::ExportOutcome finish(marble::BackgroundExport& job) {
+  job.wait();
+  auto outcome = job.takeOutcome();
+  EXPECT_TRUE(outcome.has_value());
+  return outcome.value_or(marble::ExportOutcome{});
+}
+}  // namespace
+
+TEST(BackgroundExport, WritesWhatTheCommandWritesAndReportsOnce) {
+  const auto dir = std::filesystem::temp_directory_path() / ("marble-bg-export-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Scene scene;
+  scene.mesh = "builtin:cube";
+  BackgroundExport job;
+  ASSERT_TRUE(job.start(scene, {(dir / "cube.glb").string(), 64, false}));
+  const ExportOutcome o = finish(job);
+  EXPECT_TRUE(o.ok) << o.message;
+  EXPECT_TRUE(std::filesystem::exists(dir / "cube.glb"));
+  EXPECT_FALSE(job.takeOutcome().has_value());  // once
+  ASSERT_TRUE(job.start(scene, {(dir / "set").string(), 64, true}));
+  EXPECT_TRUE(finish(job).ok);
+  EXPECT_TRUE(std::filesystem::exists(dir / "set" / "material.json"));
+  // A bad path: an error, nothing written.
+  ASSERT_TRUE(job.start(scene, {(dir / "missing" / "cube.glb").string(), 64, false}));
+  const ExportOutcome bad = finish(job);
+  EXPECT_FALSE(bad.ok);
+  EXPECT_NE(bad.message.find("does not exist"), std::string::npos) << bad.message;
+  EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BackgroundExport, CancelWritesNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / ("marble-bg-cancel-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Scene scene;
+  scene.mesh = "builtin:torus";
+  BackgroundExport job;
+  ASSERT_TRUE(job.start(scene, {(dir / "t.glb").string(), 2048, false}));
+  EXPECT_FALSE(job.start(scene, {(dir / "u.glb").string(), 64, false}));  // one at a time
+  job.cancel();
+  const ExportOutcome o = finish(job);
+  EXPECT_TRUE(o.cancelled) << o.message;
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.glb"));
+  std::filesystem::remove_all(dir);
 }

@@ -60,7 +60,10 @@ TEST(ViewerCli, ABrokenShaderIsOneLineAndExitOne) {
 TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
   const auto dir = tempDir("viewer-shot");
   const auto shot = dir / "shot.png";
-  const auto r = runMarble("view --frames 4 --width 800 --height 500 --screenshot " + shot.string(), xvfb());
+  // The showcase's stage off and the paper's brown behind it, so that the object can be found.
+  const auto r = runMarble("view --frames 4 --width 800 --height 500 --screenshot " + shot.string() +
+                               " --ground off --backdrop off --background 0.19,0.11,0.03",
+                           xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const ImageRGBA8 img = readPng(shot);
   ASSERT_EQ(img.width, 800);

@@ -26,7 +26,10 @@ std::string num(float v) {
   return s.str();
 }
 
-bool isColourKey(const std::string& k) { return k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma"; }  // per-channel keys
+bool isColourKey(const std::string& k) {  // per-channel keys, and the vein model's per-family triples
+  return (k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma") || k == "vein_spacing" || k == "vein_width" ||
+         k == "vein_density" || k == "vein_normal";
+}
 
 namespace {
 // A preset value as numbers: one for a scalar, three for an RGB triple.

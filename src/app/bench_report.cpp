@@ -30,7 +30,14 @@ void printBenchTable(const BenchResult& r) {
   if (r.passTiming == "serial") std::printf("passes serialized (--serial-passes): each timed by the wall clock\n");
   if (!r.turbulenceGrid) std::printf("turbulence evaluated per pixel (--turbulence-grid off)\n");
   std::printf("GL: %s; %s\n", r.glRenderer.c_str(), r.glVersion.c_str());
-  std::printf("triangles %zu, mesh load %.1f ms, upload %.1f ms\n\n", r.triangles, r.loadMs, r.uploadMs);
+  std::printf("triangles %zu (%s order), mesh load %.1f ms, upload %.1f ms\n", r.triangles, r.drawOrder.c_str(),
+              r.loadMs, r.uploadMs);
+  std::printf("light's pass draws %zu triangles (proxy error bound %.5f units)\n", r.lightTriangles,
+              r.lightProxyErrorUnits);
+  if (r.interactionTriangles > 0)
+    std::printf("camera's passes draw the interaction copy: %zu triangles (made in %.1f ms)\n",
+                r.interactionTriangles, r.interactionMs);
+  std::printf("\n");
   std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
   row("frame (wall)", r.frameMs);
   for (const auto& p : r.passes) {
@@ -59,6 +66,11 @@ void printBenchJson(const BenchResult& r) {
   j["turbulence_grid"] = r.turbulenceGrid;
   j["warmup"] = r.warmup;
   j["triangles"] = r.triangles;
+  j["draw_order"] = r.drawOrder;
+  j["light_triangles"] = r.lightTriangles;
+  j["light_proxy_error_units"] = r.lightProxyErrorUnits;
+  j["interaction_triangles"] = r.interactionTriangles;
+  j["interaction_ms"] = rounded(r.interactionMs);
   j["frame_ms_median"] = rounded(frame.median);
   j["frame_ms_min"] = rounded(frame.min);
   j["frame_ms_max"] = rounded(frame.max);

@@ -23,6 +23,11 @@ struct BenchResult {
   bool turbulenceGrid = true;              // --turbulence-grid
   int frames = 0, warmup = 0;
   size_t triangles = 0;
+  std::string drawOrder = "optimized";  // --draw-order
+  size_t lightTriangles = 0;            // what the light's pass draws (the proxy's, or all)
+  float lightProxyErrorUnits = 0;       // meshoptimizer's bound for the proxy (scene units)
+  size_t interactionTriangles = 0;      // --interaction-detail on: what the camera's passes draw
+  double interactionMs = 0;             // making that copy
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)
   double uploadMs = 0;      // copying it into GL buffers
   std::string glRenderer, glVersion;

@@ -78,6 +78,7 @@ void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   addSceneOptions(cmd, o.scene, true);
+  o.scene.showcaseWhenEmpty = false;  // the benchmark's built-in scene is fixed: figures stay comparable
   cmd.add_option("--frames", o.frames, "Frames to measure (default 20)");
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
   cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");
@@ -88,6 +89,18 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--turbulence-grid", o.turbulenceGrid,
                  "on (default): the pattern's turbulence read from its baked grid where that is exact; off: "
                  "evaluated per pixel (the same picture within rounding; to compare the two)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--draw-order", o.drawOrder,
+                 "optimized (default): triangles reordered for the vertex cache and overdraw at upload; file: "
+                 "in the file's order (to compare the two)")
+      ->check(CLI::IsMember({"optimized", "file"}));
+  cmd.add_option("--light-proxy", o.lightProxy,
+                 "on (default): the light's pass draws a simplified copy of a mesh above 60,000 triangles; off: "
+                 "the full mesh (to compare)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--interaction-detail", o.interactionDetail,
+                 "on: every measured frame draws the camera's passes from the interaction copy (about 100,000 "
+                 "triangles), as the viewer does while the view moves; off (default): the full mesh")
       ->check(CLI::IsMember({"on", "off"}));
 }
 
@@ -120,11 +133,23 @@ int runBenchCommand(const BenchOptions& o) {
     Renderer renderer(std::move(shaders));
     renderer.setTurbulenceGridEnabled(o.turbulenceGrid == "on");
     r.turbulenceGrid = o.turbulenceGrid == "on";
+    renderer.setDrawOrderOptimized(o.drawOrder == "optimized");
+    renderer.setLightProxyEnabled(o.lightProxy == "on");
     t0 = wallMs();
     renderer.setMesh(mesh);
     glFinish();
     r.uploadMs = wallMs() - t0;
     r.triangles = renderer.triangleCount();
+    r.drawOrder = o.drawOrder;
+    r.lightTriangles = renderer.lightTriangleCount();
+    r.lightProxyErrorUnits = renderer.lightProxyErrorUnits();
+    if (o.interactionDetail == "on") {
+      t0 = wallMs();
+      r.interactionTriangles = renderer.interactionTriangleCount();  // made here, outside the frames
+      glFinish();
+      r.interactionMs = wallMs() - t0;
+      renderer.setMeshDetail(Renderer::MeshDetail::Interaction);
+    }
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     r.passes = emptySeries(base.render);

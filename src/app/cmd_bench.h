@@ -17,6 +17,9 @@ struct BenchOptions {
   bool json = false;
   bool serialPasses = false;  // --serial-passes
   std::string turbulenceGrid = "on";  // --turbulence-grid on|off
+  std::string drawOrder = "optimized";  // --draw-order optimized|file
+  std::string lightProxy = "on";      // --light-proxy on|off
+  std::string interactionDetail = "off";  // --interaction-detail on|off
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);

@@ -11,6 +11,7 @@
 #include "marble/scene/material_io.h"
 #include "image_set_output.h"
 #include "scene_options.h"
+#include "texture_slice.h"
 
 namespace marble {
 namespace {
@@ -39,6 +40,18 @@ void putGrey(ImageRGBA8& img, int x, int y, float v) {
   p[0] = p[1] = p[2] = toByte(v);
 }
 
+// The paper's texture repeats exactly when every octave's lattice wraps with the texture (octave
+// sizes dividing the resolution: turb_size a power of two dividing it) and the sine's ramp
+// advances by whole periods across it (x_period, y_period whole numbers).
+void checkPaperTiles(const Material& m) {
+  const float s = m.turb_size;
+  const bool powerOfTwo = s >= 1.0f && s == std::floor(s) && (static_cast<uint32_t>(s) & (static_cast<uint32_t>(s) - 1u)) == 0u;
+  if (!powerOfTwo || m.resolution % static_cast<int>(s) != 0)
+    throw InputError("--tile", "turb_size", "the paper's texture tiles only when turb_size is a power of two dividing the resolution");
+  if (m.x_period != std::floor(m.x_period) || m.y_period != std::floor(m.y_period))
+    throw InputError("--tile", "x_period/y_period", "the paper's texture tiles only with whole-number periods");
+}
+
 }  // namespace
 
 int runTextureCommand(const TextureOptions& options) {
@@ -57,6 +70,16 @@ int runTextureCommand(const TextureOptions& options) {
     std::filesystem::create_directories(options.out_dir, ec);
     if (ec || !std::filesystem::is_directory(options.out_dir))
       throw InputError(options.out_dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
+
+    if (m.vein_model != VeinModel::Paper) {
+      const SliceSpec slice = parseSlice(options.slice.empty() ? "z=0" : options.slice);
+      const SliceImages images = renderVeinSlice(m, slice, options.size, options.tile);
+      writeImageSet(options.out_dir, {{"marble.png", &images.marble}, {"veins.png", &images.veins}});
+      return 0;
+    }
+    if (!options.slice.empty())
+      throw InputError("--slice", options.slice, "slices are of the vein models (vein_model network or breccia); the paper's texture is 2D");
+    if (options.tile) checkPaperTiles(m);
 
     const int n = options.size;
     const float W = static_cast<float>(m.resolution);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "cmd_bake.h"
 #include "cmd_bench.h"
@@ -14,6 +15,7 @@
 #include "cmd_texture.h"
 #include "marble/core/allocator_tuning.h"
 #include "marble/core/message_text.h"
+#include "marble/render/mesh_detail.h"
 #include "viewer/cmd_view.h"
 
 namespace {
@@ -28,12 +30,20 @@ int run(int argc, char** argv) {
   RenderOptions render;
   auto* renderCmd = app.add_subcommand("render", "Render a scene or mesh headless (no display needed) to a PNG");
   addSceneOptions(*renderCmd, render.scene, true);
-  renderCmd->add_option("-o,--output", render.output, "Output PNG file (written atomically; required)");
+  renderCmd->add_option("-o,--output", render.output, "Output PNG file, carrying the scene (written atomically; required); with --turntable, a folder");
   renderCmd->add_option("--hdr", render.hdr, "Also write the linear, not tone-mapped image as OpenEXR");
   renderCmd->add_flag("--timings", render.timings, "Print each pass's GPU time");
   renderCmd->add_option("--supersample", render.supersample,
                         "Render N times wider and higher, then average each NxN block in linear light (1-4, default 1)")
       ->check(CLI::Range(1, 4));
+  renderCmd->add_option("--quality", render.quality,
+                        "draft (default: the scene's settings) or final: supersampled 3x3 (2x2 or less where the size "
+                        "limit needs), full-resolution subsurface blur, no FXAA");
+  renderCmd->add_option("--turntable", render.turntable,
+                        "Render N frames of a full turn into the folder -o names (frame_0000.png, ...)");
+  renderCmd->add_option("--turntable-of", render.turntableOf, "What turns: object (default) or light");
+  renderCmd->add_option("--video", render.video, "Encode the turntable as .mp4, .webm or animated .webp (needs ffmpeg)");
+  renderCmd->add_option("--fps", render.fps, "The video's frames per second (default 24)");
 
   ViewOptions view;
   auto* viewCmd = app.add_subcommand("view", "Open the interactive viewer (needs a display)");
@@ -42,6 +52,11 @@ int run(int argc, char** argv) {
   viewCmd->add_option("--screenshot", view.screenshot, "After the last frame, save the whole window (panel included) as PNG");
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from $MARBLE_SHADER_DIR, else the source tree's shaders/");
   viewCmd->add_option("--turntable", view.turntable, "Start turning: off (default), object or light (the panel's turntable)");
+  viewCmd->add_option("--interaction-detail", view.interactionDetail,
+                      "While the camera or object moves, draw a simplified mesh (about " +
+                          std::to_string(kInteractionTriangles) +
+                          " triangles) and the full mesh on the first still frame: auto (default: on above " +
+                          std::to_string(kInteractionMinTriangles) + " triangles), on, off");
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;
@@ -50,6 +65,9 @@ int run(int argc, char** argv) {
   textureCmd->add_option("--size", texture.size, "Image size in pixels (square)")->check(CLI::Range(8, 8192));
   textureCmd->add_option("--preset", texture.preset, "Material preset");
   textureCmd->add_option("--set", texture.sets, "Override one material parameter, key=value (repeatable)");
+  textureCmd->add_option("--slice", texture.slice,
+                         "Vein models: marble.png is the solid pattern on the plane AXIS=OFFSET (x, y or z; default z=0)");
+  textureCmd->add_flag("--tile", texture.tile, "Write a tile that repeats without a seam");
 
   BakeCommandOptions bake;
   auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "marble/scene/placement.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
@@ -24,6 +25,20 @@ struct SceneOptions {
   std::string environmentMap;      // a .hdr (relative to the working folder); implies "map"
   std::optional<float> environmentRotation;  // degrees about +Y
   std::optional<float> environmentIntensity;
+  // Look-dev (issue 19): light, camera, size and stage without writing JSON.
+  std::string light;               // front | side | back | top | AZ,EL (degrees, about the camera's azimuth)
+  std::string lightPosition;       // X,Y,Z
+  std::string camera;              // AZ,EL[,DIST] about the camera's target
+  std::string cameraPosition;      // X,Y,Z
+  std::optional<float> sizeMm;     // the object's largest extent in mm (mm_per_unit = size / 2)
+  std::optional<float> exposure;   // stops
+  std::string background;          // R,G,B in [0, 1], as displayed
+  std::string backdrop;            // on | off: the environment seen behind the object
+  std::optional<float> backdropBlur;
+  std::string ground;              // on | off: a floor with the object's shadow
+  // Without an input: the showcase scene (render, view) or the fixed built-in Scene{} (bench,
+  // whose figures must stay comparable).
+  bool showcaseWhenEmpty = true;
   bool allowOutside = false;       // glTF buffers may come from outside the glTF's folder
 };
 

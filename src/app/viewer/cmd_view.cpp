@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "export_job.h"
 #include "glfw_window.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
@@ -59,12 +60,16 @@ void installCallbacks(GLFWwindow* w) {
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     auto* st = static_cast<ViewerState*>(glfwGetWindowUserPointer(win));
     if (count > 0) {
-      // A Radiance .hdr becomes the environment; anything else is tried as a mesh.
+      // A Radiance .hdr becomes the environment, a scene or a marble PNG the scene; anything else
+      // is tried as a mesh.
       std::string ext = std::filesystem::path(paths[0]).extension().string();
       for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (ext == ".hdr") {
         st->environmentPathInput = paths[0];
         st->requestEnvironmentLoad = true;
+      } else if (ext == ".json" || ext == ".png") {  // a scene, or a picture marble rendered (its scene)
+        st->scenePathInput = paths[0];
+        st->requestLoadScene = true;
       } else {
         st->meshPathInput = paths[0];
         st->requestMeshLoad = true;
@@ -128,6 +133,7 @@ int runViewCommand(const ViewOptions& o) {
       throw InputError("--turntable-speed", "", std::string("expected -3600 to 3600 degrees per second, got ") + got);
     }
     s.turntableDegPerSec = o.turntableSpeed;
+    s.interactionDetail = parseInteractionDetail(o.interactionDetail);
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
@@ -158,8 +164,10 @@ int runViewCommand(const ViewOptions& o) {
     installCallbacks(w);
 
     std::optional<OffscreenTarget> view;  // the 3D view's image, blitted right of the panel
+    BackgroundExport exportJob;  // the Export section's bake: CPU only, on its own thread; cancelled and joined on exit
     MouseControl mouse;
     KeyEdges keys;
+    InteractionDetailTracker detail;
     auto last = std::chrono::steady_clock::now();
     for (int frame = 0; !glfwWindowShouldClose(w) && (o.frames == 0 || frame < o.frames); ++frame) {
       glfwPollEvents();
@@ -177,8 +185,9 @@ int runViewCommand(const ViewOptions& o) {
       if (!ImGui::IsAnyItemActive() && !mouse.dragging()) s.undo.commit(currentEdit(s));
       ImGui::Render();
 
+      runFileRequests(renderer, s);  // first: a mesh loaded now is framed below, before it is drawn
       if (std::exchange(s.requestFrame, false)) frameObject(s, rect.aspect());
-      runFileRequests(renderer, s);
+      updateExport(exportJob, s);
       if (s.vsync != vsyncApplied) {
         glfwSwapInterval(s.vsync ? 1 : 0);
         vsyncApplied = s.vsync;
@@ -204,6 +213,7 @@ int runViewCommand(const ViewOptions& o) {
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
+        renderer.setMeshDetail(detail.next(s.interactionDetail, renderer.triangleCount(), scene.camera, model));
         viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
         if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
       }

@@ -12,6 +12,7 @@ struct ViewOptions {
   bool dev = false;        // shader hot reload from the source tree
   std::string turntable = "off";  // off, object, light: start turning (as the panel's turntable)
   float turntableSpeed = 15.0f;   // degrees per second
+  std::string interactionDetail = "auto";  // auto, on, off (interaction_detail.h)
 };
 
 int runViewCommand(const ViewOptions& o);

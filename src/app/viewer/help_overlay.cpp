@@ -26,7 +26,7 @@ constexpr Shortcut kShortcuts[] = {
     {"R", "reload shaders from shaders/ (marble view --dev)"},
     {"F1, ?", "this help"},
     {"Escape", "close this help, then quit"},
-    {"Drop a file", "load it as the mesh (a .hdr: as the environment map)"},
+    {"Drop a file", "load it as the mesh (a .hdr: the environment map; a .json or a PNG marble rendered: the scene)"},
     {"Ctrl+click a slider", "type an exact value"},
 };
 

@@ -21,6 +21,18 @@ inline void resetSection(Material& m, const Material& preset, MaterialSection se
       m.turb_power = preset.turb_power;
       m.turb_size = preset.turb_size;
       m.pattern_scale = preset.pattern_scale;
+      // vein model (issue 16)
+      m.vein_model = preset.vein_model;
+      m.vein_spacing = preset.vein_spacing;
+      m.vein_width = preset.vein_width;
+      m.vein_density = preset.vein_density;
+      m.vein_normal = preset.vein_normal;
+      m.vein_stretch = preset.vein_stretch;
+      m.vein_warp = preset.vein_warp;
+      m.vein_pinch = preset.vein_pinch;
+      m.vein_softness = preset.vein_softness;
+      m.grain_amount = preset.grain_amount;
+      m.fragment_tint = preset.fragment_tint;
       break;
     case MaterialSection::Colour:
       m.base_color = preset.base_color;
@@ -28,6 +40,9 @@ inline void resetSection(Material& m, const Material& preset, MaterialSection se
       m.vein2_color = preset.vein2_color;
       m.vein_sharpness = preset.vein_sharpness;
       m.vein2_amount = preset.vein2_amount;
+      m.vein3_color = preset.vein3_color;  // vein model (issue 16)
+      m.cloud_color = preset.cloud_color;
+      m.cloud_amount = preset.cloud_amount;
       break;
     case MaterialSection::Subsurface:
       m.sigma_t = preset.sigma_t;

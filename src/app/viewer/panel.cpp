@@ -44,6 +44,7 @@ void drawPanel(ViewerState& s) {
   drawViewSection(s);
   drawMeshSection(s);
   drawFilesSection(s);
+  drawExportSection(s);
   drawPerformanceSection(s);
   ImGui::PopItemWidth();
   ImGui::EndChild();

@@ -1,5 +1,5 @@
 // The panel's Environment section: studio, none or an equirectangular .hdr map, its strength and
-// turn. Loading is a request to the frame loop (viewer_actions.cpp), which keeps the previous
+// turn; the stage (backdrop and its blur, ground). Loading is a request to the frame loop (viewer_actions.cpp), which keeps the previous
 // environment when the file is bad.
 #include <filesystem>
 
@@ -44,6 +44,18 @@ void drawEnvironmentSection(ViewerState& s) {
   ImGui::SliderFloat("turn##env", &r.environment_rotation_deg, -180.0f, 180.0f, "%.0f deg");
   tooltip("Turns the map about the vertical axis: moves its sun and windows around the object.");
   ImGui::EndDisabled();
+  // The stage (render/stage_pass.h): what surrounds the object in the picture.
+  ImGui::Checkbox("backdrop", &r.backdrop);
+  tooltip("Show the environment behind the object instead of the background colour (marble mode; `--backdrop on`).");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!r.backdrop);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  ImGui::SliderFloat("blur##backdrop", &r.backdrop_blur, 0.0f, 1.0f, "%.2f");
+  tooltip("How blurred the backdrop is: the roughness of the reflection that would show it (0 sharp, 1 a soft glow).");
+  ImGui::EndDisabled();
+  ImGui::Checkbox("ground", &r.ground);
+  tooltip("A grey floor under the object receiving its shadow and a soft contact shadow, fading into the backdrop\n"
+          "(marble mode; `--ground on`). Off in the comparison scenes.");
   if (inputText("path##env", s.environmentPathInput, "sky.hdr - or drop a .hdr file")) s.requestEnvironmentLoad = true;
   tooltip("An equirectangular Radiance .hdr, width = 2 x height (at most 8192 x 4096). Enter or Load.\n"
           "Reading and prefiltering takes a second or two; a bad file keeps the current environment.");

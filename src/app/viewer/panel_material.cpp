@@ -15,6 +15,42 @@ std::string resetTip(const ViewerState& s, const char* what) {
   return std::string("Set the ") + what + " parameters back to preset \"" + s.presetName + "\".";
 }
 
+// The vein model (issue 16; docs/materials.md "Vein model"). Triples are (dominant, secondary, hairline).
+void drawVeinModelControls(Material& m) {
+  ImGui::Separator();  // ImGui 1.86 has no SeparatorText
+  ImGui::TextDisabled("vein model");
+  enumCombo("vein model", m.vein_model, {"paper (|sin|)", "crack network", "breccia"},
+            "paper: the paper's veins, contour lines of |sin(ramp + turbulence)|.\n"
+            "crack network: veins are mineral-filled fractures that fork, rejoin, swell and fade (Carrara, Calacatta).\n"
+            "breccia: angular fragments of stone cemented by a matrix, cut by crack veins (Rosso Levanto, Emperador).\n"
+            "The network models are solid (object space) whatever the mapping; the turbulence above warps them.");
+  if (m.vein_model == VeinModel::Paper) return;
+  slider3("spacing", "vein_spacing", m.vein_spacing,
+          "Mean distance between cracks of each family (dominant, secondary, hairline), object units (the object is 2 across).\n"
+          "Breccia: the first is the fragments' size.");
+  slider3("width", "vein_width", m.vein_width,
+          "Full width of each family's veins, object units: how thick the mineral filling is.\n"
+          "Breccia: the first is the matrix between fragments.");
+  slider3("density", "vein_density", m.vein_density,
+          "Fraction of each family's cracks that are filled: 1 a closed network, low values isolated veins that end.");
+  slider3("vein normal", "vein_normal", m.vein_normal,
+          "Normal (object space) of the planes the dominant veins lie in: the stone's bedding.\n"
+          "A cut across it shows roughly parallel veins; a cut along it broad clouds (a 'fleuri' cut).");
+  slider("stretch", "vein_stretch", m.vein_stretch,
+         "How much thinner the dominant cells are across the vein normal: 1 veins in every direction, high parallel veins (Statuario, Calacatta).\n"
+         "The secondary family gets its square root, hairlines none.");
+  slider("warp", "vein_warp", m.vein_warp,
+         "How far the turbulence bends the cracks, object units: 0 straight-faced cells, high meandering, folded veins.");
+  slider("pinch", "vein_pinch", m.vein_pinch,
+         "How much a vein's width swells and pinches along it: 0 constant width, 1 veins that thin out and vanish.");
+  slider("softness", "vein_softness", m.vein_softness,
+         "Edge blur relative to the width: 0 crisp fractures, 1 veins that bleed into the ground.");
+  slider("grain", "grain_amount", m.grain_amount, "Contrast of the fine calcite grain (crystals about 1.5 texels across).");
+  if (m.vein_model == VeinModel::Breccia)
+    slider("fragment tint", "fragment_tint", m.fragment_tint,
+           "How much the fragments differ in colour, from the base toward the cloud colour.");
+}
+
 }  // namespace
 
 void drawPatternSection(ViewerState& s) {
@@ -50,6 +86,7 @@ void drawPatternSection(ViewerState& s) {
   tooltip("Texels across the pattern: the density of the white-noise lattice. More gives finer detail.");
   m.turb_size = std::min(m.turb_size, static_cast<float>(m.resolution));  // the loader's cross-field rule
   slider("pattern scale", "pattern_scale", m.pattern_scale, "Size of the pattern on the object: larger spreads the veins out.");
+  drawVeinModelControls(m);
 }
 
 void drawColourSection(ViewerState& s) {
@@ -66,6 +103,12 @@ void drawColourSection(ViewerState& s) {
          "Exponent on the sine pattern: higher gives thinner, crisper veins; 1 is the paper.");
   slider("vein 2 amount", "vein2_amount", m.vein2_amount,
          "How much of the secondary colour the ramp uses: 0 is the paper's two-colour ramp.");
+  if (m.vein_model != VeinModel::Paper) {  // vein model (issue 16)
+    ImGui::TextDisabled("vein model: vein = dominant, vein 2 = secondary veins");
+    colour("vein 3", m.vein3_color, "Albedo of the hairline veins (linear RGB).");
+    colour("clouds", m.cloud_color, "The ground's clouds (Carrara's nuvolato) and the breccia fragments' tints (linear RGB).");
+    slider("cloud amount", "cloud_amount", m.cloud_amount, "How strongly the ground clouds toward the cloud colour: 0 a plain ground.");
+  }
 }
 
 void drawSubsurfaceSection(ViewerState& s) {

@@ -1,8 +1,11 @@
 // The panel's non-material sections: files, mesh, light, view.
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 
 #include "marble/mesh/mesh.h"
 #include "marble/scene/material_io.h"
+#include "marble/scene/placement.h"
 #include "panel_sections.h"
 #include "panel_widgets.h"
 
@@ -97,12 +100,28 @@ void drawMeshSection(ViewerState& s) {
     }
   }
   if (enumCombo("file up axis", s.scene.up, {"+Y", "+Z", "+X", "-Y", "-Z", "-X"},
-                "Which axis of the file points up (many scans, like the paper's dragon, are Z-up).\nReloads the mesh."))
+                "Which axis of this file points up (many scans, like the paper's dragon, are Z-up).\n"
+                "Reloads and frames the mesh. Each file keeps its own: a new file starts at +Y."))
     if (s.scene.mesh.rfind("builtin:", 0) != 0) {
       s.meshPathInput = s.scene.mesh;
       s.requestMeshLoad = true;
     }
 }
+
+namespace {
+// A row of small buttons, one per preset, after a label.
+void presetButtons(const char* label, const std::vector<Placement>& presets,
+                   const std::function<void(const Placement&)>& apply, const char* tip) {
+  ImGui::TextUnformatted(label);
+  for (const auto& p : presets) {
+    ImGui::SameLine();
+    ImGui::PushID(label);
+    if (ImGui::SmallButton(p.name)) apply(p);
+    ImGui::PopID();
+    tooltip(tip);
+  }
+}
+}  // namespace
 
 void drawLightSection(ViewerState& s) {
   bool reset;
@@ -125,12 +144,20 @@ void drawLightSection(ViewerState& s) {
   tooltip("Distance from the object's centre in scene units (the object is 2 units across).\n"
           "Closer: stronger falloff across the object (marble mode); the brightness at the centre stays.");
   ImGui::PopItemWidth();
-  if (ImGui::Button("behind")) s.light = Orbit::fromPosition(-s.camera.position() * 1.2f + glm::vec3(0, 0.5f, 0));
-  tooltip("Put the light behind the object as seen from the camera: shows the subsurface glow.");
-  ImGui::SameLine();
-  if (ImGui::Button("at camera")) s.light = Orbit::fromPosition(s.camera.position());
-  tooltip("Light from the viewer's position: flat, shows the pattern best.");
   ImGui::EndGroup();
+  presetButtons("light", lightPresets(), [&](const Placement& p) {
+    // The presets' azimuths are relative to the camera: "back" stays behind the object as seen.
+    Scene placed = s.scene;
+    placed.camera.position = s.camera.position();
+    placed.camera.target = s.camera.target;
+    placed.light.position = s.light.position();
+    placeLight(placed, p.azimuthDeg, p.elevationDeg);
+    s.light = Orbit::fromPosition(placed.light.position);
+  }, "Where the light stands, as seen from the camera (distance kept): front 30 deg up, side 90 deg to the right,\n"
+     "back behind the object (the subsurface glow shows), top straight above. The same as `--light NAME`.");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("at camera")) s.light = Orbit::fromPosition(s.camera.position());
+  tooltip("Light from the viewer's position: flat, shows the pattern best.");
   enumCombo("type", s.scene.light.type, {"point", "directional"},
             "Point: light from a position, with falloff. Directional: parallel light from that direction (the sun).");
   colour("colour##light", s.scene.light.color, "Colour of the light (linear RGB).");
@@ -146,6 +173,10 @@ void drawViewSection(ViewerState& s) {
   ImGui::SameLine();
   if (ImGui::Button("Reset view (Home)")) s.camera = s.initialCamera;
   tooltip("Back to the scene's camera.");
+  presetButtons("camera", cameraPresets(), [&](const Placement& p) {
+    s.camera.yaw_deg = p.azimuthDeg;
+    s.camera.pitch_deg = std::clamp(p.elevationDeg, -89.0f, 89.0f);
+  }, "Look from the front (+Z), the side (+X), the back or the top, keeping the distance. The same as `--camera NAME`.");
   ImGui::SliderFloat("field of view", &s.scene.camera.fov_y_deg, 10.0f, 90.0f, "%.0f deg");
   tooltip("Vertical field of view: small is a telephoto (flat), large a wide angle (strong perspective).");
   enumCombo("turntable (T)", s.turntable, {"off", "object", "light"},
@@ -155,6 +186,13 @@ void drawViewSection(ViewerState& s) {
     ImGui::SliderFloat("speed", &s.turntableDegPerSec, -90.0f, 90.0f, "%.0f deg/s");
     tooltip("Degrees per second; negative turns the other way.");
   }
+  float sizeMm = objectSizeMm(s.scene);
+  if (ImGui::SliderFloat("object size", &sizeMm, 5.0f, 5000.0f, "%.0f mm", ImGuiSliderFlags_Logarithmic))
+    setObjectSizeMm(s.scene, std::clamp(sizeMm, 0.002f, 2e6f));
+  tooltip("The object's real size: its largest extent (the scene's mm_per_unit x 2; `--size-mm`).\n"
+          "Light travels millimetres in marble: a 5 cm figurine glows through, a 2 m statue is nearly opaque.");
+  ImGui::SliderFloat("exposure", &s.scene.render.exposure, -5.0f, 5.0f, "%+.1f EV");
+  tooltip("Stops of brightness before tone mapping (+1 doubles the light; `--exposure`). Saved with the scene.");
   colour("background", s.scene.render.background, "Colour behind the object (linear RGB), saved with the scene.");
   enumCombo("antialiasing", s.scene.render.antialias, {"none", "FXAA"},
             "FXAA smooths the stair-stepped edges of the picture (silhouettes, sharp veins) after tone mapping;\n"

@@ -14,6 +14,7 @@ void drawReflectanceSection(ViewerState& s);
 void drawLightSection(ViewerState& s);
 void drawEnvironmentSection(ViewerState& s);  // studio / none / .hdr map, strength, turn
 void drawViewSection(ViewerState& s);     // camera, turntable, background, antialiasing, vsync, screenshot
+void drawExportSection(ViewerState& s);   // bake and write glTF or a texture set (export_job.h)
 void drawPerformanceSection(ViewerState& s);
 
 // A square pad showing the light's direction from above; click or drag to move it.

@@ -32,6 +32,13 @@ inline constexpr ParamRange kParamRanges[] = {
     {"translucency", 0.0f, 2.0f, false},   {"ior", 1.0f, 3.0f, false},
     {"roughness", 0.0f, 1.0f, false},
     {"resolution", 16.0f, 1024.0f, true},  {"seed", 0.0f, 1.0e6f, false},
+    // vein model (issue 16): spacings and widths span decades (a dominant vein 0.05, a hairline 0.002).
+    {"vein_spacing", 0.01f, 4.0f, true},   {"vein_width", 1.0e-4f, 0.5f, true, "%.4g"},
+    {"vein_density", 0.0f, 1.0f, false},   {"vein_normal", -1.0f, 1.0f, false},
+    {"vein_stretch", 1.0f, 20.0f, true},   {"vein_warp", 0.0f, 2.0f, false},
+    {"vein_pinch", 0.0f, 1.0f, false},     {"vein_softness", 0.0f, 1.0f, false},
+    {"cloud_amount", 0.0f, 1.0f, false},   {"grain_amount", 0.0f, 1.0f, false},
+    {"fragment_tint", 0.0f, 1.0f, false},
 };
 
 // The range of `key`; a zero range ({nullptr, 0, 0}) for a key without a slider.

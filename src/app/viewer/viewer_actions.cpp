@@ -50,7 +50,7 @@ void saveSceneFile(ViewerState& s) {
 
 void loadSceneFile(Renderer& renderer, ViewerState& s) {
   std::vector<std::string> warnings;
-  const Scene scene = loadScene(s.scenePathInput, warnings);  // throws: nothing changed yet
+  const Scene scene = sceneForInput(s.scenePathInput, warnings);  // .json or a marble PNG; throws: nothing changed yet
   const Mesh mesh = loadSceneMesh(scene);                      // likewise
   const auto environment = loadSceneEnvironment(scene);        // likewise
   adoptScene(s, scene);
@@ -100,6 +100,7 @@ void adoptScene(ViewerState& s, const Scene& scene) {
 void adoptMesh(Renderer& renderer, ViewerState& s, const Mesh& mesh, const std::string& source) {
   renderer.setMesh(mesh);
   s.scene.mesh = source;
+  s.meshUp[source] = s.scene.up;
   s.meshLabel = source;
   s.triangles = mesh.triangleCount();
   s.meshRadius = 0;
@@ -120,8 +121,15 @@ void adoptEnvironment(Renderer& renderer, ViewerState& s, const PrefilteredEnvir
 void loadMeshInto(Renderer& renderer, ViewerState& s, const std::string& source) {
   Scene candidate = s.scene;
   candidate.mesh = source;
+  // Reloading the same file keeps the up axis the panel just chose; another file gets its own.
+  if (source != s.scene.mesh) {
+    const auto known = s.meshUp.find(source);
+    candidate.up = known != s.meshUp.end() ? known->second : UpAxis::Y;
+  }
   const Mesh mesh = loadSceneMesh(candidate);  // throws InputError: the current mesh stays
+  s.scene.up = candidate.up;
   adoptMesh(renderer, s, mesh, source);
+  s.requestFrame = true;  // a new mesh, or the same one stood up differently: frame it
 }
 
 void frameObject(ViewerState& s, float aspect) {

@@ -3,8 +3,10 @@
 // the panel reports, and requests from the panel to the frame loop (which owns GL and does
 // the work, so the panel never touches the renderer).
 #include <deque>
+#include <map>
 #include <string>
 
+#include "interaction_detail.h"
 #include "marble/render/renderer.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/scene.h"
@@ -13,6 +15,17 @@
 namespace marble {
 
 enum class Turntable { Off, Object, Light };
+
+// The Export section's settings and the job's progress (export_job.h does the work).
+struct ExportPanel {
+  std::string path = "marble.glb";
+  int size = 1024;
+  bool textureSet = false;      // a folder of PNGs + material.json instead of a glTF file
+  bool requestStart = false, requestCancel = false;
+  bool running = false;
+  float progress = 0.0f;
+  std::string stage;
+};
 
 struct ViewerState {
   Scene scene;
@@ -24,6 +37,9 @@ struct ViewerState {
   float meshRadius = 1.7320508f;  // bounding sphere about the origin, for framing (F)
   std::string meshLabel;          // what is loaded, for the panel
   size_t triangles = 0;
+  // Each mesh file's up axis, as the scene, --up or the panel said it: a file loaded again
+  // gets its own back; a new file starts at +Y (the OBJ/glTF convention), never a guess.
+  std::map<std::string, UpAxis> meshUp;
 
   // Path boxes.
   std::string meshPathInput;
@@ -38,6 +54,8 @@ struct ViewerState {
   Material presetMaterial;        // what "reset" returns a section to
   UndoStack undo;
 
+  ExportPanel exportPanel;
+
   std::string status;             // last message (errors in red)
   bool statusIsError = false;
   std::string lastScreenshot;     // absolute path of the last screenshot saved
@@ -50,6 +68,7 @@ struct ViewerState {
   float turntableAngle = 0.0f;    // degrees; transient, not part of the scene or undo
 
   bool vsync = true;
+  InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

@@ -12,6 +12,7 @@
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
+#include "marble/scene/material_io.h"
 
 namespace marble {
 namespace {
@@ -123,6 +124,8 @@ std::string encodeGltf(const GltfExportInput& in, GltfContainer container) {
   const std::string name = in.material.name.empty() ? "marble" : in.material.name;
   json material = {
       {"name", name},
+      // The design itself, for tools that read it back (tools/blender_marble.py): every key of a preset file.
+      {"extras", {{"marble", materialToJson(in.material)}, {"mm_per_unit", in.mmPerUnit}}},
       {"pbrMetallicRoughness",
        {{"baseColorTexture", {{"index", 0}}},
         {"metallicRoughnessTexture", {{"index", 1}}},

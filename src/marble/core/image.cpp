@@ -17,6 +17,7 @@
 
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
+#include "marble/core/png_text.h"
 #include "marble/core/input_file.h"
 
 namespace marble {
@@ -39,13 +40,14 @@ std::string encodePng(const ImageRGBA8& image) {
   return bytes;
 }
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image) {
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image, const std::vector<PngText>& text) {
   std::string bytes;
   try {
     bytes = encodePng(image);
   } catch (const std::runtime_error& e) {
     throw InputError(path.string(), "", e.what());
   }
+  for (const auto& t : text) bytes = insertPngText(bytes, t.keyword, t.text);
   writeFileAtomically(path, bytes);
 }
 
@@ -57,6 +59,16 @@ ImageRGBA8 readPng(const std::filesystem::path& path) {
   ImageRGBA8 img{w, h, std::vector<uint8_t>(data, data + static_cast<size_t>(w) * h * 4)};
   stbi_image_free(data);
   return img;
+}
+
+std::optional<std::string> readPngText(const std::filesystem::path& path, const std::string& keyword) {
+  // The whole file: the text may follow the image data. 1 GiB is far beyond any marble PNG.
+  const std::string bytes = InputFile(path, path.string(), "an image file").readAll(1ull << 30);
+  try {
+    return findPngText(bytes, keyword);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path.string(), "", e.what());
+  }
 }
 
 void flipRows(ImageRGBA8& image) {

@@ -3,6 +3,7 @@
 // written atomically.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,20 @@ struct ImageRGBF {
 std::string encodePng(const ImageRGBA8& image);
 std::string encodeExr(const ImageRGBF& image);
 
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image);  // throws InputError
-ImageRGBA8 readPng(const std::filesystem::path& path);                     // throws InputError
+// A text chunk of a PNG file: a keyword (1-79 printable Latin-1 characters) and UTF-8 text,
+// written as an uncompressed iTXt chunk (PNG specification, 11.3.4.5).
+struct PngText {
+  std::string keyword;
+  std::string text;
+};
+
+// `text` chunks go before the image data, where a reader finds them without decoding it.
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image,
+              const std::vector<PngText>& text = {});          // throws InputError
+ImageRGBA8 readPng(const std::filesystem::path& path);       // throws InputError
+// The text of the first tEXt or uncompressed iTXt chunk named `keyword`, or nothing. Throws
+// InputError naming the file when it cannot be read or is not a PNG.
+std::optional<std::string> readPngText(const std::filesystem::path& path, const std::string& keyword);
 // Linear half-float RGBA; A is image.alpha (1 everywhere when it is empty). A file written with
 // alpha says so in its header (kExrCoverageAttribute), so that a reader can tell coverage that
 // happens to be 1 everywhere from an alpha channel that means nothing.

@@ -22,6 +22,7 @@ inline float floor(float x) {
 }
 inline float sin(float x) { return std::sin(x); }
 inline float abs(float x) { return std::fabs(x); }
+inline float sqrt(float x) { return std::sqrt(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
@@ -54,10 +55,62 @@ PatParams toParams(const Material& m) {
   P.baseColor = m.base_color;
   P.veinColor = m.vein_color;
   P.vein2Color = m.vein2_color;
+  const VeinUniformValues v = veinUniformValues(m);
+  P.veinModel = v.model;
+  P.veinSpacing = m.vein_spacing;
+  P.veinWidth = m.vein_width;
+  P.veinDensity = m.vein_density;
+  P.veinNormal = v.direction;
+  P.veinStretch = m.vein_stretch;
+  P.veinWarp = m.vein_warp;
+  P.veinPinch = m.vein_pinch;
+  P.veinSoftness = m.vein_softness;
+  P.vein3Color = m.vein3_color;
+  P.cloudColor = m.cloud_color;
+  P.cloudAmount = m.cloud_amount;
+  P.grainAmount = m.grain_amount;
+  P.fragmentTint = m.fragment_tint;
   return P;
 }
 
 }  // namespace
+
+VeinUniformValues veinUniformValues(const Material& m) {
+  const int model = m.vein_model == VeinModel::Network   ? patglsl::PAT_VEINS_NETWORK
+                    : m.vein_model == VeinModel::Breccia ? patglsl::PAT_VEINS_BRECCIA
+                                                         : patglsl::PAT_VEINS_PAPER;
+  const float len = glm::length(m.vein_normal);
+  return {model, len > 0.0f ? m.vein_normal / len : glm::vec3(1.0f, 0.0f, 0.0f)};
+}
+
+float veinPatternValue(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_value_at(toParams(m), objectPos); }
+glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_albedo_at(toParams(m), objectPos); }
+
+void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
+  const PatParams P = toParams(m);
+  auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
+  std::vector<float> t[4];
+  const bool alongX = step.y == 0.0f && step.z == 0.0f;
+  if (alongX) {
+    // The four samples' texel points share y and z along the row: the turbulence by rows.
+    std::vector<float> xs(static_cast<size_t>(count));
+    for (int k = 0; k < 4; ++k) {
+      for (int i = 0; i < count; ++i) xs[static_cast<size_t>(i)] = patglsl::pat_vein_sample_point(P, point(i), k).x;
+      const glm::vec3 q = patglsl::pat_vein_sample_point(P, point(0), k);
+      t[k].resize(static_cast<size_t>(count));
+      patternRow3(m, xs.data(), q.y, q.z, count, t[k].data(), nullptr);
+    }
+  }
+  for (int i = 0; i < count; ++i) {
+    const glm::vec3 p = point(i);
+    float s[4];
+    for (int k = 0; k < 4; ++k)
+      s[k] = alongX ? t[k][static_cast<size_t>(i)] : patglsl::pat_vein_turbulence(P, p, k);
+    const glm::vec4 shade = patglsl::pat_vein_shade(P, p, s[0], s[1], s[2], s[3]);  // colour and value at once
+    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
+    if (valueOut) valueOut[i] = shade.w;
+  }
+}
 
 float whiteNoise(const Material& m, glm::vec2 q) {
   return patglsl::pat_white2(patglsl::floor(q), static_cast<float>(m.resolution), patglsl::pat_hash(m.seed));
@@ -88,10 +141,12 @@ float perlinNoise3(glm::vec3 p, float period, uint32_t seed) {
 glm::vec3 texelPosition(const Material& m, glm::vec3 objectPos) { return patglsl::pat_texel_pos(toParams(m), objectPos); }
 float mirrorTexel(float s, float W) { return patglsl::pat_mirror(s, W); }
 float marblePatternValue(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal) {
+  if (m.vein_model != VeinModel::Paper) return veinPatternValue(m, objectPos);
   return patglsl::pat_value_at(toParams(m), objectPos, objectNormal);
 }
 glm::vec3 patternColor(const Material& m, float v) { return patglsl::pat_color(toParams(m), v); }
 glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal) {
+  if (m.vein_model != VeinModel::Paper) return veinAlbedo(m, objectPos);
   return patglsl::pat_albedo(toParams(m), objectPos, objectNormal);
 }
 

@@ -42,6 +42,25 @@ float marblePatternValue(const Material& m, glm::vec3 objectPos, glm::vec3 objec
 glm::vec3 patternColor(const Material& m, float v);
 glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal);
 
+// ---- the vein model (issue 16; pattern_core.glsl "vein networks") ----
+// What the uniforms carry beyond the Material's own numbers: the model's PAT_VEINS_* value
+// and the normalized vein direction (one place for both, used by the CPU and the GPU side).
+struct VeinUniformValues {
+  int model;
+  glm::vec3 direction;
+};
+VeinUniformValues veinUniformValues(const Material& m);
+// The vein model's value before colour (0 in a vein's heart, 1 in the ground) and colour at
+// an object-space point; marblePatternValue / marbleAlbedo dispatch to these when
+// m.vein_model != VeinModel::Paper.
+float veinPatternValue(const Material& m, glm::vec3 objectPos);
+glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
+// A row of object-space points (x0 + i * dx, y, z), i < count, the colour of each (the fast
+// path of `marble texture`: the four turbulence samples by rows, then the cells per point;
+// equal to veinAlbedo up to float rounding of the point positions -- bit-identical for the
+// same points, tested).
+void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
+
 // ---- batched rows (the fast path: bit-identical to the functions above) ----
 // A row of points (xs[i], y) or (xs[i], y, z) in texels. Lattice columns and the row's y/z
 // hashes are computed once per cell instead of once per point (value basis; the Perlin basis

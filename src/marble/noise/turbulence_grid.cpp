@@ -28,7 +28,8 @@ int turbulenceGridDimensions(const Material& m) {
   // Every octave size (turb_size, /2, ..., 1) an integer dividing W: turb_size a power of two
   // dividing W (pattern_core.glsl: an octave of size s has W/s lattice cells when s divides W).
   if (!isPowerOfTwo(m.turb_size) || m.resolution % static_cast<int>(m.turb_size) != 0) return 0;
-  if (m.mapping == PatternMapping::Solid) return m.resolution <= kMaxSolidTurbulenceGrid ? 3 : 0;
+  // The vein models are solid whatever the mapping (pattern_core.glsl "vein networks").
+  if (m.mapping == PatternMapping::Solid || m.vein_model != VeinModel::Paper) return m.resolution <= kMaxSolidTurbulenceGrid ? 3 : 0;
   return 2;
 }
 

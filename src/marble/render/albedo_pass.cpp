@@ -1,5 +1,6 @@
 #include "marble/render/albedo_pass.h"
 
+#include "marble/noise/marble_pattern.h"
 #include "marble/noise/pattern_uniforms.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/turbulence_texture.h"
@@ -14,14 +15,16 @@ AlbedoPass::AlbedoPass(const ShaderLibrary& shaders)
 
 std::vector<std::string> patternDefines(const Material& m, GLuint turbulenceGrid) {
   std::vector<std::string> d = {"PAT_BASIS " + std::to_string(static_cast<int>(m.basis)),
-                                "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping))};
+                                "PAT_MAPPING " + std::to_string(static_cast<int>(m.mapping)),
+                                "PAT_VEIN_MODEL " + std::to_string(veinUniformValues(m).model)};
   if (turbulenceGrid != 0) d.push_back("PAT_TURBULENCE_GRID " + std::to_string(turbulenceGridDimensions(m)));
   return d;
 }
 
 uint32_t patternVariantKey(const Material& m, GLuint turbulenceGrid) {
   // The grid's dimensions follow from the mapping: one bit says whether it is read.
-  return static_cast<uint32_t>(m.basis) * 3u + static_cast<uint32_t>(m.mapping) + (turbulenceGrid != 0 ? 6u : 0u);
+  return static_cast<uint32_t>(m.basis) * 3u + static_cast<uint32_t>(m.mapping) + (turbulenceGrid != 0 ? 6u : 0u) +
+         12u * static_cast<uint32_t>(veinUniformValues(m).model);
 }
 
 void setPatternUniforms(const gl::Program& p, const glm::mat4& model, const CameraMatrices& camera,
@@ -41,6 +44,12 @@ void AlbedoPass::compileAll() {
       programs_.get(patternDefines(m, 0));
       if (turbulenceGridDimensions(m) > 0) programs_.get(patternDefines(m, 1));  // any nonzero grid
     }
+  for (VeinModel v : {VeinModel::Network, VeinModel::Breccia}) {  // solid whatever the mapping
+    Material m;
+    m.vein_model = v;
+    programs_.get(patternDefines(m, 0));
+    programs_.get(patternDefines(m, 1));
+  }
 }
 
 void AlbedoPass::resize(int width, int height, GLuint depthTexture) {

@@ -51,6 +51,12 @@ void PostPass::compileAll() {
         program(true, kind, DiffuseSource::Pattern, material, 0);
         if (turbulenceGridDimensions(material) > 0) program(true, kind, DiffuseSource::Pattern, material, 1);
       }
+    for (VeinModel v : {VeinModel::Network, VeinModel::Breccia}) {  // solid whatever the mapping
+      Material material;
+      material.vein_model = v;
+      program(true, kind, DiffuseSource::Pattern, material, 0);
+      program(true, kind, DiffuseSource::Pattern, material, 1);
+    }
   }
 }
 

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cstring>
 
+#include "marble/mesh/mesh_optimize.h"
+#include "marble/render/mesh_detail.h"
+
 namespace marble {
 
 struct Renderer::Passes {
   explicit Passes(const ShaderLibrary& s)
-      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s) {}
+      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s), stage(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   AlbedoPass albedo;
@@ -17,14 +20,23 @@ struct Renderer::Passes {
   PostPass post;
   FloorPass floor;
   FxaaPass fxaa;
+  StagePass stage;
 };
+
+void Renderer::invalidateStage() { passes_->stage.invalidateBottomMap(); }
 
 bool samePattern(const Material& a, const Material& b) {
   return a.seed == b.seed && a.resolution == b.resolution && a.basis == b.basis && a.mapping == b.mapping &&
          a.x_period == b.x_period && a.y_period == b.y_period && a.z_period == b.z_period &&
          a.turb_power == b.turb_power && a.turb_size == b.turb_size && a.pattern_scale == b.pattern_scale &&
          a.base_color == b.base_color && a.vein_color == b.vein_color && a.vein2_color == b.vein2_color &&
-         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount;
+         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount &&
+         // vein model (issue 16)
+         a.vein_model == b.vein_model && a.vein_spacing == b.vein_spacing && a.vein_width == b.vein_width &&
+         a.vein_density == b.vein_density && a.vein_normal == b.vein_normal && a.vein_stretch == b.vein_stretch &&
+         a.vein_warp == b.vein_warp && a.vein_pinch == b.vein_pinch && a.vein_softness == b.vein_softness &&
+         a.vein3_color == b.vein3_color && a.cloud_color == b.cloud_color && a.cloud_amount == b.cloud_amount &&
+         a.grain_amount == b.grain_amount && a.fragment_tint == b.fragment_tint;
 }
 
 namespace {
@@ -65,10 +77,76 @@ Renderer::Renderer(ShaderLibrary shaders) : shaders_(std::move(shaders)), passes
 Renderer::~Renderer() = default;
 
 void Renderer::setMesh(const Mesh& mesh) {
-  mesh_.emplace(mesh);
-  meshCells_ = OccupancyGrid(mesh);
+  cpuMesh_ = mesh;
+  if (drawOrderOptimized_) optimizeDrawOrder(cpuMesh_);
+  mesh_.emplace(cpuMesh_);
+  meshCells_ = OccupancyGrid(cpuMesh_);
   aaSpansWidth_ = 0;  // made anew for this mesh
+  interactionMesh_.reset();
+  interactionIsFull_ = false;
+  makeLightProxy();
   invalidate();
+}
+
+void Renderer::makeLightProxy() {
+  lightMesh_.reset();
+  lightProxyMesh_ = Mesh();
+  lightProxyErrorUnits_ = 0.0f;
+  const size_t triangles = cpuMesh_.triangleCount();
+  if (!lightProxyEnabled_ || triangles <= kLightProxyMinTriangles) return;
+  const auto target = std::min(kLightProxyMaxTriangles,
+                               static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction));
+  SimplifiedMesh proxy = simplifiedMesh(cpuMesh_, target, lightProxyMaxErrorUnits(passes_->lightDepth.size()));
+  if (proxy.mesh.triangleCount() >= triangles) return;  // nothing could be collapsed
+  lightProxyErrorUnits_ = proxy.errorUnits;
+  lightMesh_.emplace(proxy.mesh);
+  lightProxyMesh_ = std::move(proxy.mesh);
+}
+
+void Renderer::setLightProxyEnabled(bool enabled) {
+  if (enabled == lightProxyEnabled_) return;
+  lightProxyEnabled_ = enabled;
+  if (mesh_) makeLightProxy();
+  interactionMesh_.reset();  // it is made from the proxy: made again at its next use
+  interactionIsFull_ = false;
+  lightValid_ = lightingValid_ = outputValid_ = false;
+}
+
+size_t Renderer::lightTriangleCount() const {
+  if (!mesh_) return 0;
+  return lightMesh().triangleCount();
+}
+
+const GpuMesh& Renderer::cameraMesh() {
+  if (detail_ == MeshDetail::Full || !mesh_) return *mesh_;
+  if (!interactionMesh_ && !interactionIsFull_) {
+    if (cpuMesh_.triangleCount() <= kInteractionTriangles) {
+      interactionIsFull_ = true;
+    } else {
+      // From the light's proxy where there is one: the simplifier's cost grows with what it
+      // starts from (1.6 M triangles: 1.7 s from the mesh, far less from the proxy).
+      const Mesh& from = lightProxyMesh_.indices.empty() ? cpuMesh_ : lightProxyMesh_;
+      interactionMesh_.emplace(simplifiedMesh(from, kInteractionTriangles, kInteractionMaxErrorUnits).mesh);
+    }
+  }
+  return interactionMesh_ ? *interactionMesh_ : *mesh_;
+}
+
+void Renderer::setMeshDetail(MeshDetail detail) {
+  if (detail == detail_) return;
+  detail_ = detail;
+  // The camera's passes re-run with the other mesh (the interaction copy may be the full mesh
+  // itself: re-running then costs one frame and changes nothing).
+  geometryValid_ = outputValid_ = false;
+}
+
+size_t Renderer::interactionTriangleCount() {
+  if (!mesh_) return 0;
+  const MeshDetail saved = detail_;
+  detail_ = MeshDetail::Interaction;
+  const size_t n = cameraMesh().triangleCount();
+  detail_ = saved;
+  return n;
 }
 
 void Renderer::setEnvironmentMap(const PrefilteredEnvironment& environment) {
@@ -96,12 +174,12 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;
-  times_.postRan = times_.fxaaRan = times_.floorRan = false;
+  times_.postRan = times_.fxaaRan = times_.floorRan = times_.stageRan = false;
   times_.diffuseSource = -1;
   outputValid_ = true;
   lastOutput_ = OutputKey{scene, model, targetFbo, width, height};
   if (scene.render.mode == RenderMode::Floor) {
-    passes_->floor.run(*mesh_, model, camera, scene.light.position, scene.material.base_color, scene.render.background,
+    passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
     times_.floorRan = true;
     return;
@@ -109,7 +187,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const LightMatrices light = lightMatrices(scene.light);
   const bool modelMoved = !sameMatrix(model, lastModel_);
   if (!lightValid_ || !sameMatrix(light.viewProj, lastLight_.viewProj) || modelMoved) {
-    passes_->lightDepth.run(*mesh_, model, light);
+    passes_->lightDepth.run(lightMesh(), model, light);
     lightValid_ = true;
     times_.lightDepthRan = true;
   }
@@ -117,7 +195,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const bool viewMoved = !geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || modelMoved ||
                          width != lastWidth_ || height != lastHeight_;
   if (viewMoved) {
-    passes_->geometry.run(*mesh_, model, camera);
+    passes_->geometry.run(cameraMesh(), model, camera);
     geometryValid_ = true;
     times_.geometryRan = true;
   }
@@ -194,13 +272,22 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   times_.fxaaRan = fxaa;
   if (marble) albedoValid_ = true;  // the post pass wrote it (other modes: the albedo pass, or not needed)
   diffuseValid_ = marble;  // other modes do not write it
+  const bool stage = sceneHasStage(scene);
+  if (stage) {
+    if (scene.render.ground) passes_->stage.updateBottomMap(*mesh_, model);
+    passes_->stage.run(scene, camera, light, lightTexelWorld, environment(), passes_->geometry.depthTexture(),
+                       passes_->lightDepth.depthTexture(), mesh_->boundsMin().y - 0.002f, display.fbo(), width, height,
+                       fxaa);
+    times_.stageRan = true;
+  }
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth;  // the light's map: all content
+    // The light's map, or a stage around the object: content everywhere.
+    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || stage;
     passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
                       glm::clamp(scene.render.background, 0.0f, 1.0f));
   }
@@ -243,13 +330,15 @@ PassTimes Renderer::passTimes(bool wait) {
   times_.floorMs = get(passes_->floor.timer());
   times_.fxaaMs = get(passes_->fxaa.timer());
   times_.blurDepthMs = get(passes_->blurDepth.timer());
+  times_.stageMs = get(passes_->stage.timer());
   return times_;
 }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
-         (mesh_ ? mesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
+         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
+         (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
+         (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
 }
 
 ImageRGBF Renderer::readHdr() {

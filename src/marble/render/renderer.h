@@ -7,6 +7,8 @@
 //   5 subsurface blur  -> with 4 (`marble` only; half resolution by default)
 //   6 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
 // The screen passes (3-6) draw only inside the mesh's screen rectangle.
+//   6b stage           -> every frame the scene shows a backdrop or a ground (`marble`; the
+//                         floor's contact map from below when the mesh or model changed)
 //   7 FXAA             -> every frame when antialiasing is on (display image -> target)
 // The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
@@ -25,6 +27,7 @@
 #include "marble/render/offscreen_target.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/screen_tiles.h"
+#include "marble/render/stage_pass.h"
 #include "marble/render/subsurface_blur_pass.h"
 #include "marble/render/turbulence_texture.h"
 #include "marble/core/image.h"
@@ -34,9 +37,9 @@ namespace marble {
 
 struct PassTimes {
   double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
-         fxaaMs = 0, blurDepthMs = 0;
+         fxaaMs = 0, blurDepthMs = 0, stageMs = 0;
   bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
-  bool postRan = false, fxaaRan = false, floorRan = false;  // false only when the whole frame was unchanged
+  bool postRan = false, fxaaRan = false, floorRan = false, stageRan = false;  // false only when the whole frame was unchanged
   // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
   // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
   int diffuseSource = -1;
@@ -47,9 +50,36 @@ public:
   explicit Renderer(ShaderLibrary shaders = ShaderLibrary());
   ~Renderer();
 
+  // Uploads `mesh` with its triangles in the order that suits the GPU (optimizeDrawOrder: the
+  // one place every mesh is reordered), and, above kLightProxyMinTriangles, a simplified copy
+  // for the light's pass (render/mesh_detail.h). Keeps the reordered mesh on the CPU for the
+  // interaction copy, made at its first use.
   void setMesh(const Mesh& mesh);
   bool hasMesh() const { return mesh_ && !mesh_->empty(); }
   size_t triangleCount() const { return mesh_ ? mesh_->triangleCount() : 0; }
+
+  // Off: setMesh keeps the file's triangle order (for comparisons; on by default). Applies to
+  // the next setMesh.
+  void setDrawOrderOptimized(bool optimized) { drawOrderOptimized_ = optimized; }
+
+  // The light's pass from a proxy (on by default; off: the full mesh, for comparisons). Takes
+  // effect at once (the light's map is redrawn).
+  void setLightProxyEnabled(bool enabled);
+  bool lightProxyEnabled() const { return lightProxyEnabled_; }
+  // Triangles the light's pass draws, and meshoptimizer's bound on how far its surface lies
+  // from the mesh's (scene units; 0 without a proxy).
+  size_t lightTriangleCount() const;
+  float lightProxyErrorUnits() const { return lightProxyErrorUnits_; }
+
+  // Which mesh the camera's passes (geometry, floor) draw: the full mesh, or -- while the view
+  // moves -- the interaction copy (about kInteractionTriangles, render/mesh_detail.h; made at
+  // the first request for this mesh; a mesh no larger than that is its own copy). Changing it
+  // re-runs the camera's passes, so the first Full frame after Interaction ones is exactly
+  // what a fresh renderer draws. The light's pass is not affected.
+  enum class MeshDetail { Full, Interaction };
+  void setMeshDetail(MeshDetail detail);
+  MeshDetail meshDetail() const { return detail_; }
+  size_t interactionTriangleCount();  // makes the copy if needed
 
   // The environment map used when a scene says "environment": "map" (uploaded here, once; the
   // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
@@ -87,6 +117,7 @@ public:
   GLuint displayImageTexture() const { return displayImage_ ? displayImage_->texture() : 0; }
   void invalidate() {
     lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
+    invalidateStage();
   }
 
   // Off: the pattern's turbulence is evaluated per pixel even where a baked grid would give the
@@ -105,6 +136,18 @@ private:
   ShaderLibrary shaders_;
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
+  Mesh cpuMesh_;                          // the reordered mesh, for the simplified copies
+  std::optional<GpuMesh> lightMesh_;      // the light's proxy; empty: the light draws mesh_
+  Mesh lightProxyMesh_;                   // its CPU copy (empty without), for the interaction copy
+  float lightProxyErrorUnits_ = 0.0f;
+  bool lightProxyEnabled_ = true;
+  bool drawOrderOptimized_ = true;
+  std::optional<GpuMesh> interactionMesh_;  // made at the first Interaction request
+  bool interactionIsFull_ = false;          // the mesh is small enough to be its own copy
+  MeshDetail detail_ = MeshDetail::Full;
+  void makeLightProxy();
+  const GpuMesh& cameraMesh();
+  const GpuMesh& lightMesh() const { return lightMesh_ ? *lightMesh_ : *mesh_; }
   OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)
   // FXAA's spans (the whole frame for views that are not of the mesh), made once per view
   // (model-view-projection and size).
@@ -146,6 +189,7 @@ private:
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  void invalidateStage();
   // `target`, (re)made at this size and format, with the G-buffer's depth attached.
   OffscreenTarget& surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height, GLenum format);
   const EnvironmentMap* environment() const { return environment_ ? &*environment_ : nullptr; }

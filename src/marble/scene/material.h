@@ -15,6 +15,9 @@ enum class NoiseBasis { Value, Perlin };          // key "basis": "value" (the p
 enum class PatternMapping { Planar, Triplanar, Solid };  // key "mapping": "planar" | "triplanar" | "solid"
 enum class ShadingOrder { SubsurfaceFirst, ReflectanceFirst };  // key "order": "sss-first" | "schlick-first"
 enum class SchlickCosine { HdotV, HdotN };        // key "schlick_cos": "hv" | "hn"
+// key "vein_model": "paper" (the paper's |sin(ramp + turbulence)|) | "network" (crack networks,
+// issue 16) | "breccia" (angular fragments in a matrix of crack veins).
+enum class VeinModel { Paper, Network, Breccia };
 
 struct Material {
   std::string name = "paper";
@@ -38,6 +41,24 @@ struct Material {
   glm::vec3 vein2_color{0.75f, 0.62f, 0.42f};  // "vein2_color": secondary veins (ramp middle)
   float vein_sharpness = 1.0f;   // "vein_sharpness": exponent on the sine (1 = the paper)
   float vein2_amount = 0.0f;     // "vein2_amount": 0 = two-colour ramp (the paper)
+
+  // --- vein model (issue 16; docs/materials.md "Vein model"). Read when vein_model != paper,
+  // which always uses the solid mapping; the turbulence above warps the veins. Per-family
+  // triples are (dominant, secondary, hairline); colours are vein_color, vein2_color, vein3_color.
+  VeinModel vein_model = VeinModel::Paper;          // "vein_model"
+  glm::vec3 vein_spacing{0.9f, 0.35f, 0.12f};      // "vein_spacing": mean distance between cracks, object units
+  glm::vec3 vein_width{0.03f, 0.012f, 0.004f};     // "vein_width": full width of a vein, object units
+  glm::vec3 vein_density{0.7f, 0.5f, 0.4f};        // "vein_density": fraction of cracks filled, [0,1]
+  glm::vec3 vein_normal{-0.5f, 1.0f, 0.2f};     // "vein_normal": normal of the planes the dominant veins lie in (normalized on use)
+  float vein_stretch = 2.5f;     // "vein_stretch": dominant cells this many times thinner across those planes
+  float vein_warp = 0.25f;       // "vein_warp": how far the turbulence bends the cracks, object units
+  float vein_pinch = 0.7f;       // "vein_pinch": width swell/pinch along a vein; 1 lets veins fade out
+  float vein_softness = 0.4f;    // "vein_softness": edge blur relative to the width
+  glm::vec3 vein3_color{0.6f, 0.6f, 0.62f};   // "vein3_color": hairline veins
+  glm::vec3 cloud_color{0.7f, 0.71f, 0.73f};  // "cloud_color": the ground's clouds (nuvolato) and fragment tints
+  float cloud_amount = 0.5f;     // "cloud_amount": [0,1]
+  float grain_amount = 0.06f;    // "grain_amount": [0,1] contrast of the calcite grain
+  float fragment_tint = 0.0f;    // "fragment_tint": breccia, [0,1] how much fragments differ in colour
 
   // --- subsurface (paper §3.2, GPU Gems 1 ch. 16) ---
   glm::vec3 sigma_t{0.6f, 0.9f, 1.3f};  // "sigma_t": extinction per scene unit, per channel

@@ -51,6 +51,9 @@ const EnumName kMapping[] = {{static_cast<int>(PatternMapping::Planar), "planar"
                              {static_cast<int>(PatternMapping::Solid), "solid"}};
 const EnumName kOrder[] = {{static_cast<int>(ShadingOrder::SubsurfaceFirst), "sss-first"},
                            {static_cast<int>(ShadingOrder::ReflectanceFirst), "schlick-first"}};
+const EnumName kVeinModel[] = {{static_cast<int>(VeinModel::Paper), "paper"},
+                               {static_cast<int>(VeinModel::Network), "network"},
+                               {static_cast<int>(VeinModel::Breccia), "breccia"}};
 const EnumName kCos[] = {{static_cast<int>(SchlickCosine::HdotV), "hv"}, {static_cast<int>(SchlickCosine::HdotN), "hn"}};
 
 template <size_t N>
@@ -136,7 +139,10 @@ const std::vector<std::string>& keyList() {
       "x_period",       "y_period",     "z_period",      "turb_power", "turb_size",   "pattern_scale",
       "base_color",     "vein_color",   "vein2_color",   "vein_sharpness", "vein2_amount", "sigma_t",
       "k_sss",          "k_schlick",    "metalness",     "order",      "schlick_cos", "shininess",
-      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency"};
+      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency",
+      // vein model (issue 16)
+      "vein_model", "vein_spacing", "vein_width", "vein_density", "vein_normal", "vein_stretch", "vein_warp",
+      "vein_pinch", "vein_softness", "vein3_color", "cloud_color", "cloud_amount", "grain_amount", "fragment_tint"};
   return keys;
 }
 
@@ -172,6 +178,21 @@ bool applyKey(Material& m, const std::string& key, const json& v, const std::str
   else if (key == "ior") m.ior = s.number(1.0, 3.0);
   else if (key == "roughness") m.roughness = s.number(0.0, 1.0);
   else if (key == "translucency") m.translucency = s.number(0.0, 10.0);
+  // vein model (issue 16)
+  else if (key == "vein_model") m.vein_model = static_cast<VeinModel>(s.choice(kVeinModel));
+  else if (key == "vein_spacing") m.vein_spacing = s.color(0.005, 100);
+  else if (key == "vein_width") m.vein_width = s.color(0, 10);
+  else if (key == "vein_density") m.vein_density = s.color(0, 1);
+  else if (key == "vein_normal") m.vein_normal = s.color(-1, 1);
+  else if (key == "vein_stretch") m.vein_stretch = s.number(1, 20);
+  else if (key == "vein_warp") m.vein_warp = s.number(0, 10);
+  else if (key == "vein_pinch") m.vein_pinch = s.number(0, 1);
+  else if (key == "vein_softness") m.vein_softness = s.number(0, 1);
+  else if (key == "vein3_color") m.vein3_color = s.color(0, 1);
+  else if (key == "cloud_color") m.cloud_color = s.color(0, 1);
+  else if (key == "cloud_amount") m.cloud_amount = s.number(0, 1);
+  else if (key == "grain_amount") m.grain_amount = s.number(0, 1);
+  else if (key == "fragment_tint") m.fragment_tint = s.number(0, 1);
   else return false;
   return true;
 }
@@ -272,6 +293,8 @@ void validateMaterial(const Material& m, const std::string& file, const std::str
   if (m.turb_size > static_cast<float>(m.resolution))
     throw InputError(file, placePrefix + "turb_size",
                      "expected a number in [1, resolution = " + std::to_string(m.resolution) + "], got " + fmt(m.turb_size));
+  if (m.vein_normal == glm::vec3(0.0f))
+    throw InputError(file, placePrefix + "vein_normal", "expected a nonzero direction, got [0, 0, 0]");
 }
 
 void applyMaterialJson(Material& m, const json& j, const std::string& file, const std::string& placePrefix,
@@ -385,6 +408,21 @@ json materialToJson(const Material& m) {
   j["ior"] = floatJson(m.ior);
   j["roughness"] = floatJson(m.roughness);
   j["translucency"] = floatJson(m.translucency);
+  // vein model (issue 16)
+  j["vein_model"] = enumName(kVeinModel, static_cast<int>(m.vein_model));
+  j["vein_spacing"] = col(m.vein_spacing);
+  j["vein_width"] = col(m.vein_width);
+  j["vein_density"] = col(m.vein_density);
+  j["vein_normal"] = col(m.vein_normal);
+  j["vein_stretch"] = floatJson(m.vein_stretch);
+  j["vein_warp"] = floatJson(m.vein_warp);
+  j["vein_pinch"] = floatJson(m.vein_pinch);
+  j["vein_softness"] = floatJson(m.vein_softness);
+  j["vein3_color"] = col(m.vein3_color);
+  j["cloud_color"] = col(m.cloud_color);
+  j["cloud_amount"] = floatJson(m.cloud_amount);
+  j["grain_amount"] = floatJson(m.grain_amount);
+  j["fragment_tint"] = floatJson(m.fragment_tint);
   return j;
 }
 

@@ -70,6 +70,11 @@ struct RenderSettings {
   Antialias antialias = Antialias::Fxaa;      // not for `floor` (a benchmark baseline)
   std::string environment_map;                // the .hdr (resolved against the scene's folder); used when Map
   float environment_rotation_deg = 0.0f;      // turns the map about +Y (yaw)
+  // The stage (`marble` only; render/stage_pass.h): the environment seen behind the object
+  // instead of `background`, blurred by a GGX roughness; a floor under the object with its shadow.
+  bool backdrop = false;
+  float backdrop_blur = 0.3f;                 // 0 sharp .. 1 very blurred
+  bool ground = false;
   bool operator==(const RenderSettings&) const = default;
 };
 
@@ -107,9 +112,12 @@ constexpr int kMaxRenderSize = 8192;
 // naming the file and the field ("scene.json: camera.fov_y_deg: expected a number in
 // (1, 179), got 500"); unknown keys are appended to `warnings`.
 Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings);
+// The same for scene JSON already read (`path` names it in messages; relative paths are
+// resolved against its folder).
+Scene loadSceneText(const std::string& text, const std::filesystem::path& path, std::vector<std::string>& warnings);
 
-// Interprets a command-line input: a .json scene, a mesh file (default scene around it),
-// or empty (the built-in default scene).
+// Interprets a command-line input: a .json scene, a PNG written by `marble render` (the scene
+// it carries), a mesh file (default scene around it), or empty (the built-in default scene).
 Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings);
 
 // Resolves Scene::mesh and loads it (builtin:NAME or a file). An error in a mesh the scene file

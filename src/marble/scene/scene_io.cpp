@@ -52,6 +52,9 @@ ojson renderObject(const RenderSettings& r, const std::filesystem::path& scenePa
   // The map is kept while another environment is chosen, so switching back finds it.
   if (!r.environment_map.empty()) j["environment_map"] = fileField(r.environment_map, scenePath);
   j["environment_rotation_deg"] = number(r.environment_rotation_deg);
+  j["backdrop"] = r.backdrop;
+  j["backdrop_blur"] = number(r.backdrop_blur);
+  j["ground"] = r.ground;
   return j;
 }
 
@@ -61,6 +64,7 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
   ojson j;
   j["mesh"] = meshField(scene.mesh, path);
   j["up"] = std::string(upAxisName(scene.up));
+  j["mm_per_unit"] = number(scene.mm_per_unit);
   if (scene.allow_outside) j["allow_outside"] = true;
   j["camera"] = {{"position", vec3(scene.camera.position)},
                  {"target", vec3(scene.camera.target)},

@@ -14,6 +14,10 @@ namespace marble {
 // the mesh path relative). Keys in a fixed, readable order.
 std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& path);
 
+// The keyword of the PNG text chunk in which `marble render` stores the scene of a picture
+// (sceneToJsonText relative to the PNG), so that the PNG can be given as a scene.
+inline constexpr const char* kPngSceneKeyword = "marble.scene";
+
 // Writes the scene atomically (an existing file survives a failed write). Throws InputError.
 void saveScene(const std::filesystem::path& path, const Scene& scene);
 

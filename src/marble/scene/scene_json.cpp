@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "marble/core/error.h"
+#include "marble/core/image.h"
+#include "marble/scene/scene_io.h"
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
 #include "marble/scene/material_io.h"
@@ -68,6 +70,13 @@ public:
       r[i] = static_cast<float>(d);
     }
     out = r;
+  }
+
+  void boolean(const std::string& key, bool& out) {
+    const json* v = find(key);
+    if (!v) return;
+    if (!v->is_boolean()) fail(key, "expected true or false, got " + describe(*v));
+    out = v->get<bool>();
   }
 
   bool string(const std::string& key, std::string& out) {
@@ -176,6 +185,9 @@ void readRender(const json& j, const std::filesystem::path& scenePath, RenderSet
   if (rs.environment == Environment::Map && rs.environment_map.empty())
     r.fail("environment", "\"map\" needs render.environment_map (an equirectangular .hdr file)");
   r.number("environment_rotation_deg", rs.environment_rotation_deg, -360.0f, 360.0f);
+  r.boolean("backdrop", rs.backdrop);
+  r.number("backdrop_blur", rs.backdrop_blur, 0.0f, 1.0f);
+  r.boolean("ground", rs.ground);
   std::string mode;
   if (r.string("mode", mode)) {
     try {
@@ -197,8 +209,11 @@ std::string readText(const std::filesystem::path& path) {
 }  // namespace
 
 Scene loadScene(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+  return loadSceneText(readText(path), path, warnings);
+}
+
+Scene loadSceneText(const std::string& text, const std::filesystem::path& path, std::vector<std::string>& warnings) {
   const std::string file = path.string();
-  const std::string text = readText(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file");
   checkJsonNesting(text, file);
   json root;
@@ -245,6 +260,11 @@ Scene sceneForInput(const std::string& input, std::vector<std::string>& warnings
   std::string ext = p.extension().string();
   for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   if (ext == ".json") return loadScene(p, warnings);
+  if (ext == ".png") {
+    const auto text = readPngText(p, kPngSceneKeyword);
+    if (!text) throw InputError(input, "", "carries no marble scene (only PNGs written by `marble render` do)");
+    return loadSceneText(*text, p, warnings);
+  }
   Scene scene;
   scene.mesh = input;
   return scene;

@@ -1,0 +1,136 @@
+// The vein model (issue 16) on the CPU: the batched rows equal the per-point reference, the
+// parameters round-trip through preset files, and the structure measures of
+// tests/vein_structure.h do what they claim on pictures whose answer is known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "marble/core/error.h"
+#include "marble/noise/marble_pattern.h"
+#include "marble/scene/material_io.h"
+#include "vein_structure.h"
+
+namespace marble {
+namespace {
+
+TEST(VeinPattern, RowsAreBitIdenticalToThePointReference) {
+  for (const char* preset : {"carrara", "rosso-levanto"}) {
+    const Material m = loadPreset(preset);
+    const glm::vec3 origin(-0.9f, 0.37f, -0.21f), step(0.013f, 0.0f, 0.0f);
+    constexpr int n = 150;
+    std::vector<glm::vec3> colours(n);
+    std::vector<float> values(n);
+    veinAlbedoRow(m, origin, step, n, colours.data(), values.data());
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 p = origin + static_cast<float>(i) * step;
+      const glm::vec3 c = veinAlbedo(m, p);
+      ASSERT_EQ(std::memcmp(&c, &colours[static_cast<size_t>(i)], sizeof c), 0) << preset << " point " << i;
+      ASSERT_EQ(values[static_cast<size_t>(i)], veinPatternValue(m, p)) << preset << " point " << i;
+    }
+  }
+}
+
+TEST(VeinPattern, MarbleAlbedoDispatchesOnTheModel) {
+  Material m = loadPreset("carrara");
+  const glm::vec3 p(0.2f, -0.3f, 0.4f), n(0, 0, 1);
+  EXPECT_EQ(marbleAlbedo(m, p, n), veinAlbedo(m, p));
+  m.vein_model = VeinModel::Paper;
+  EXPECT_EQ(marbleAlbedo(m, p, n), patternColor(m, marblePatternValue(m, p, n)));
+}
+
+TEST(VeinPattern, VeinsAreSomewhereAndNotEverywhere) {
+  // A value that is never 0 or always 0 would pass the colour tests and show nothing.
+  for (const char* preset : {"carrara", "nero-marquina", "emperador", "breccia-pernice"}) {
+    const Material m = loadPreset(preset);
+    int veins = 0, total = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x, ++total)
+        veins += veinPatternValue(m, {-1.0f + x / 32.0f, -1.0f + y / 32.0f, 0.1f}) < 0.5f ? 1 : 0;
+    EXPECT_GT(veins, total / 100) << preset;
+    EXPECT_LT(veins, total / 2) << preset;
+  }
+}
+
+TEST(VeinPattern, ParametersRoundTripThroughPresetFiles) {
+  Material m = loadPreset("verde-alpi");
+  setMaterialKey(m, "vein_spacing", "0.5,0.25,0.125");
+  setMaterialKey(m, "vein_normal", "0,1,0");
+  setMaterialKey(m, "vein_model", "network");
+  setMaterialKey(m, "fragment_tint", "0.25");
+  const auto path = std::filesystem::temp_directory_path() / ("marble-vein-roundtrip-" + std::to_string(::getpid()) + ".json");
+  saveMaterial(path, m);
+  EXPECT_EQ(loadPreset(path.string()), m);
+  std::filesystem::remove(path);
+  EXPECT_THROW(setMaterialKey(m, "vein_model", "swirl"), InputError);
+  EXPECT_THROW(setMaterialKey(m, "vein_normal", "0,0,0"), InputError);
+  EXPECT_THROW(setMaterialKey(m, "vein_density", "0.5,0.5,2"), InputError);
+}
+
+// ---- the structure measures on known pictures ----
+
+std::vector<float> blank(int n) { return std::vector<float>(static_cast<size_t>(n) * n, 1.0f); }
+void disc(std::vector<float>& v, int n, float cx, float cy, float r, float value = 0.0f) {
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) v[static_cast<size_t>(y) * n + x] = value;
+}
+// A band of half-width r along the segment a-b.
+void band(std::vector<float>& v, int n, glm::vec2 a, glm::vec2 b, float r) {
+  const int steps = static_cast<int>(glm::length(b - a) * 2.0f) + 1;
+  for (int i = 0; i <= steps; ++i) {
+    const glm::vec2 p = a + (b - a) * (static_cast<float>(i) / steps);
+    disc(v, n, p.x, p.y, r);
+  }
+}
+
+TEST(VeinStructureMeasure, ConstantWidthLinesAcrossThePictureHaveNoForksNoEndsNoWidthChange) {
+  constexpr int n = 200;
+  std::vector<float> v = blank(n);
+  for (int k = 0; k < 4; ++k) band(v, n, {-5.0f, 20.0f + 45.0f * k}, {n + 5.0f, 40.0f + 45.0f * k}, 3.0f);
+  const test::VeinStructure s = test::measureVeins(v, n, n);
+  SCOPED_TRACE(::testing::Message() << "junctions " << s.junctions << ", inner endings " << s.innerEndings << ", width CV "
+                                    << s.widthCv << " over " << s.veinsMeasured << " veins");
+  EXPECT_EQ(s.junctions, 0);
+  EXPECT_EQ(s.innerEndings, 0);
+  EXPECT_LT(s.widthCv, 0.1);
+  EXPECT_GE(s.veinsMeasured, 4);
+}
+
+TEST(VeinStructureMeasure, RingsWithBumpsAndPinholesDoNotCountAsBranching) {
+  // What contour bands look like: closed, with a bump (a spur) and a pinhole (a loop).
+  constexpr int n = 200;
+  std::vector<float> v = blank(n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const float r = std::hypot(x - 100.0f, y - 100.0f);
+      if (std::abs(r - 60.0f) < 4.0f) v[static_cast<size_t>(y) * n + x] = 0.0f;
+    }
+  disc(v, n, 100.0f, 36.0f, 5.0f);            // a bump on the outside
+  disc(v, n, 160.0f, 100.0f, 1.5f, 1.0f);     // a pinhole in the band
+  const test::VeinStructure s = test::measureVeins(v, n, n);
+  SCOPED_TRACE(::testing::Message() << "junctions " << s.junctions << ", inner endings " << s.innerEndings << ", width CV "
+                                    << s.widthCv << " over " << s.veinsMeasured << " veins");
+  EXPECT_EQ(s.junctions, 0);
+  EXPECT_EQ(s.innerEndings, 0);
+}
+
+TEST(VeinStructureMeasure, AForkAnEndAndASwellAreSeen) {
+  constexpr int n = 200;
+  std::vector<float> v = blank(n);
+  band(v, n, {-5.0f, 100.0f}, {100.0f, 100.0f}, 2.0f);  // from the border to the fork
+  band(v, n, {100.0f, 100.0f}, {205.0f, 40.0f}, 2.0f);  // one arm back to the border
+  band(v, n, {100.0f, 100.0f}, {160.0f, 160.0f}, 2.0f);  // the other ends inside
+  disc(v, n, 50.0f, 100.0f, 7.0f);                      // a swell on each
+  disc(v, n, 150.0f, 72.0f, 7.0f);
+  disc(v, n, 135.0f, 135.0f, 7.0f);
+  const test::VeinStructure s = test::measureVeins(v, n, n);
+  SCOPED_TRACE(::testing::Message() << "junctions " << s.junctions << ", inner endings " << s.innerEndings << ", width CV "
+                                    << s.widthCv << " over " << s.veinsMeasured << " veins");
+  EXPECT_EQ(s.junctions, 1);
+  EXPECT_EQ(s.innerEndings, 1);
+  EXPECT_GT(s.widthCv, 0.2);
+}
+
+}  // namespace
+}  // namespace marble

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Writes a denser copy of a triangle OBJ for benchmarks: each subdivision level splits every
+triangle into four at its edge midpoints (shared edges share their midpoint, so the result is
+as closed as the input). Two levels turn the 100,000-triangle dragon into 1.6 M triangles, the
+size of a scanned statue (issue 20). Positions only ('v' and 'f' lines; normals are computed at
+load). The output is benchmark data: write it to /tmp or out/, never into the repository.
+
+    tools/make-dense-mesh.py /work/shared/models/dragon.obj /tmp/dragon-1.6m.obj --levels 2
+
+(A midpoint split adds triangles but no shape: the new triangles lie in the old ones' planes,
+which a simplifier can undo almost without error -- a scan's noise would make that harder.)
+"""
+import argparse
+import sys
+
+
+def read_obj(path):
+    verts, faces = [], []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("v "):
+                x, y, z = line.split()[1:4]
+                verts.append((float(x), float(y), float(z)))
+            elif line.startswith("f "):
+                idx = [int(tok.split("/")[0]) for tok in line.split()[1:]]
+                idx = [i - 1 if i > 0 else len(verts) + i for i in idx]
+                for k in range(1, len(idx) - 1):  # fan-triangulate polygons
+                    faces.append((idx[0], idx[k], idx[k + 1]))
+    return verts, faces
+
+
+def subdivide(verts, faces):
+    midpoint = {}
+
+    def mid(a, b):
+        key = (a, b) if a < b else (b, a)
+        m = midpoint.get(key)
+        if m is None:
+            pa, pb = verts[a], verts[b]
+            m = len(verts)
+            verts.append(((pa[0] + pb[0]) * 0.5, (pa[1] + pb[1]) * 0.5, (pa[2] + pb[2]) * 0.5))
+            midpoint[key] = m
+        return m
+
+    out = []
+    for a, b, c in faces:
+        ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    return out
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("input")
+    p.add_argument("output")
+    p.add_argument("--levels", type=int, default=2)
+    a = p.parse_args()
+    if a.levels < 0 or a.levels > 4:
+        sys.exit("--levels: expected 0 to 4")
+    verts, faces = read_obj(a.input)
+    for _ in range(a.levels):
+        faces = subdivide(verts, faces)
+    with open(a.output, "w") as f:
+        f.write("".join("v %.7g %.7g %.7g\n" % v for v in verts))
+        f.write("".join("f %d %d %d\n" % (x + 1, y + 1, z + 1) for x, y, z in faces))
+    print("%s: %d vertices, %d triangles" % (a.output, len(verts), len(faces)))
+
+
+if __name__ == "__main__":
+    main()

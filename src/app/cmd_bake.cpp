@@ -17,6 +17,7 @@ void addBakeOptions(CLI::App& cmd, BakeCommandOptions& o) {
   cmd.add_option("--preset", o.scene.preset, "Material preset by name (see `marble presets`) or a preset .json file");
   cmd.add_option("--set", o.scene.sets, "Override one material parameter, key=value (repeatable; keys as in preset files)");
   cmd.add_option("--up", o.scene.up, "Which axis of the mesh file is up: y (default), z, x, -y, -z, -x");
+  addAllowOutsideFlag(cmd, o.scene);
   cmd.add_option("--size", o.size, "Texture size in texels, square (" + std::to_string(kMinBakeSize) + "-" +
                                        std::to_string(kMaxBakeSize) + ", default 2048; thickness is a quarter of it)");
   cmd.add_option("--supersample", o.supersample, "N x N colour samples per texel (1-4, default 2)");

@@ -57,6 +57,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
   cmd.add_option("--backdrop", o.backdrop, "on: show the environment (studio or map) behind the object instead of the background colour (marble mode)");
   cmd.add_option("--backdrop-blur", o.backdropBlur, "Blur of the backdrop, 0 (sharp) to 1 (default 0.3); implies --backdrop on");
   cmd.add_option("--ground", o.ground, "on: a floor under the object receiving its shadow and a soft contact shadow (marble mode)");
+  addAllowOutsideFlag(cmd, o);
+}
+
+void addAllowOutsideFlag(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--allow-outside", o.allowOutside,
                "Let a glTF read buffer files outside its own folder (refused by default; see docs/reliability.md)");
 }

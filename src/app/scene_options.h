@@ -44,6 +44,8 @@ struct SceneOptions {
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize);
+// --allow-outside alone (part of addSceneOptions), for commands that take fewer scene options.
+void addAllowOutsideFlag(CLI::App& cmd, SceneOptions& o);
 
 // Loads the scene and applies the overrides; warnings go to stderr. Throws InputError.
 Scene buildScene(const SceneOptions& o);

@@ -75,7 +75,11 @@ void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, co
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw InputError(dir.string(), "", "cannot create folder" + (ec ? ": " + ec.message() : std::string()));
-  for (const auto& [name, bytes] : files) writeFileAtomically(dir / name, bytes);
+  // The set appears whole or not at all: every file is staged first, then all are renamed
+  // (AtomicFileSet, core/atomic_file.h; docs/reliability.md, "Files written together").
+  AtomicFileSet staged;
+  for (const auto& [name, bytes] : files) staged.add(dir / name, bytes);
+  staged.commit();
 }
 
 }  // namespace marble

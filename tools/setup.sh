@@ -9,6 +9,9 @@ missing=()
 for p in "${wanted[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm comes inside some nodejs packages (NodeSource's) and as a package of its own in Debian's
+# (tools/deps.txt): ask for Debian's only where no npm is installed.
+command -v npm > /dev/null || missing+=(npm)
 if ((${#missing[@]})); then
   if [[ $(id -u) -ne 0 ]]; then
     echo "marble needs these Debian packages; install them as root, then run this again:" >&2

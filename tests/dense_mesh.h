@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "marble/mesh/mesh.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble::test {
 
@@ -44,7 +45,7 @@ inline Mesh subdividedSmoothed(Mesh m, int levels) {
   m.normals.clear();
   m.texcoords.clear();
   normalizeMesh(m);
-  computeSmoothNormals(m);
+  computeVertexNormals(m, kNoCreaseDeg);  // smooth everywhere, as a scan is
   return m;
 }
 

@@ -85,6 +85,9 @@ Scene backLit(const Case& c) {
   s.light.type = c.light;
   s.light.position = c.lightPosition;
   s.material = loadPreset("measured-marble");
+  // A flat stone: the paper's model with every vein colour the base colour (measured-marble now
+  // draws crack networks with grain, issue 16, which would show in the glow as texture).
+  s.material.vein_model = VeinModel::Paper;
   s.material.base_color = s.material.vein_color = s.material.vein2_color = glm::vec3(0.83f, 0.79f, 0.75f);
   s.mm_per_unit = c.mmPerUnit;
   // No specular glints: the glow is measured as a difference of two renders (below), and next to

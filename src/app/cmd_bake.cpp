@@ -50,9 +50,9 @@ int runBakeCommand(const BakeCommandOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const BakeJobResult r = runBakeFromCommandLine(o, BakeOutput::TextureSet, o.outDir);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("wrote %s: %s, %s, %s (%dx%d), %s (%dx%d, 1.0 = %.3g mm); %s texture coordinates", o.outDir.string().c_str(),
+    std::printf("wrote %s: %s, %s, %s (%dx%d), %s (%dx%d, 1.0 = %.3g mm), %s; %s texture coordinates", o.outDir.string().c_str(),
                 kMaterialFile, kBaseColorFile, kMetallicRoughnessFile, r.size, r.size, kThicknessFile, r.thicknessSize,
-                r.thicknessSize, static_cast<double>(r.thicknessScaleMm), r.unwrapped ? "unwrapped" : "the file's");
+                r.thicknessSize, static_cast<double>(r.thicknessScaleMm), kThicknessExrFile, r.unwrapped ? "unwrapped" : "the file's");
     if (r.unwrapped) std::printf(" (%d charts, %.0f%% of the texture)", r.stats.charts, 100.0 * r.stats.packingEfficiency);
     std::printf("; %.2f s\n", seconds);
     return 0;

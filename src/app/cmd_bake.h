@@ -1,7 +1,7 @@
 #pragma once
 // `marble bake INPUT -o DIR [--size N] [--preset P] [--set k=v ...]`: the marble baked onto the
 // mesh's texture coordinates (or a fresh unwrap): base_color.png, metallic_roughness.png,
-// thickness.png and material.json (bake/texture_set_files.h; docs/export.md).
+// thickness.png, thickness.exr and material.json (bake/texture_set_files.h; docs/export.md).
 #include <filesystem>
 #include <string>
 

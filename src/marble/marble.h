@@ -113,7 +113,7 @@ struct BakeSummary {
   std::string note;             // why "auto" did not keep the file's texture coordinates (empty otherwise)
 };
 
-// base_color.png, metallic_roughness.png, thickness.png and material.json in `folder` (made
+// base_color.png, metallic_roughness.png, thickness.png, thickness.exr and material.json in `folder` (made
 // when missing), written together or not at all. Throws InputError before any work for bad
 // settings or a folder that cannot be written.
 BakeSummary bakeTextureSet(const Stone& stone, const std::filesystem::path& folder, const BakeSettings& settings = {});

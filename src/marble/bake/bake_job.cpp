@@ -45,7 +45,7 @@ BakeJobResult runBakeJob(const Scene& scene, const Mesh& loaded, const BakeJob& 
   // The last chance to cancel: after this, the files are written.
   if (progress && !progress(1.0, "writing")) throw BakeCancelled();
   if (job.kind == BakeOutput::TextureSet)
-    writeTextureSet(job.output, set, describeTextureSet(set, scene.material, scene.mm_per_unit, mesh));
+    writeTextureSet(job.output, set, scene.mm_per_unit, describeTextureSet(set, scene.material, scene.mm_per_unit, mesh));
   else
     writeGltf(job.output, {mesh.mesh, set, scene.material, scene.mm_per_unit});
   BakeJobResult r;

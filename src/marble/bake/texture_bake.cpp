@@ -241,8 +241,11 @@ TextureSet bakeTextureSet(const Mesh& mesh, const Material& material, const Bake
     if (thick[i] >= 0) thickImg[i] = glm::vec4(thick[i] / out.thicknessScale, 0, 0, 1);
   fillEmpty(thickImg, ts, options.dilationTexels);
   out.thickness = blankImage(ts);
-  for (size_t i = 0; i < thickImg.size(); ++i)
+  out.thicknessValues.resize(thickImg.size());
+  for (size_t i = 0; i < thickImg.size(); ++i) {
+    out.thicknessValues[i] = thickImg[i].x;
     out.thickness.pixels[i * 4] = out.thickness.pixels[i * 4 + 1] = out.thickness.pixels[i * 4 + 2] = toByte(thickImg[i].x);
+  }
   if (options.progress) options.progress(1.0, "done");
   return out;
 }

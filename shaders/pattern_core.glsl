@@ -327,7 +327,7 @@ vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {
 //     plane: the exact distance, not F2 - F1, which widens where two points nearly coincide). Voronoi faces meet
 //     three at an edge, so in any slice veins meet at Y junctions -- the forks of real marble;
 //   * the space is domain-warped first (Quilez, "Domain warping", 2002/2012): p + a * (T - 0.5)
-//     with T three samples of the paper's turbulence, so the faces meander like veins instead
+//     with T three samples of the paper's turbulence (its octaves down to 2 texels), so the faces meander like veins instead
 //     of being flat; the space is also stretched along the veins' normal, so cells are
 //     flattened and the dominant veins lie roughly in one family of planes;
 //   * each face (a pair of cells) is filled or not by a hash of the pair (density: the fraction
@@ -427,16 +427,38 @@ float pat_face_random(PatCells c) { return pat_unit(pat_hash((c.h1 ^ c.h2) + 0x6
 // roughly parallel lines; a cut along n (a "fleuri" cut, in the trade) shows broad clouds.
 vec3 pat_stretch(vec3 p, vec3 n, float stretch) { return p + n * (dot(p, n) * (stretch - 1.0f)); }
 
-// The texel-space points of the four turbulence samples the vein model reads at object point
-// p: 0-2 the warp, 3 the width field. Offsets are fractions of the period W so the samples are
-// independent (the turbulence wraps with period W).
+// The vein model's turbulence: the paper's octaves (turbSize, turbSize/2, ...) down to 2
+// texels instead of 1, normalized by their weights to [0,1] (mean 0.5). The finest octave adds
+// only 1/(2 turbSize) of the amplitude to a warp or a width, invisible there; without it the
+// turbulence is multilinear on 2-texel cells, so the four samples below fit one grid of
+// (W/2)^3 four-channel texels, read with one filtered fetch (noise/turbulence_grid.h).
+float pat_vein_min_octave(PatParams P) { return min(2.0f, P.turbSize); }
+float pat_vein_turbulence3(PatParams P, vec3 q) {
+  uint sh = pat_hash(P.seed);
+  float sum = 0.0f;
+  float weight = 0.0f;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= pat_vein_min_octave(P); size *= 0.5f, inv *= 2.0f) {
+    sum += pat_smooth3(q * inv, pat_octave_period(P.resolution, inv), sh, P.basis) * size;
+    weight += size;
+  }
+  return sum / weight;
+}
+
+// The texel offset of the vein model's turbulence sample k (0-2 the warp, 3 the width field):
+// fractions of the period W so the samples are independent (the turbulence wraps with period
+// W), rounded to even texels so that the grid's texel i holds all four at the texel points
+// 2i + offset (one fetch for the four).
+vec3 pat_vein_sample_offset(PatParams P, int k) {
+  float h = 0.5f * P.resolution;
+  if (k == 1) return 2.0f * floor(vec3(0.31f * h, 0.57f * h, 0.13f * h));
+  if (k == 2) return 2.0f * floor(vec3(0.71f * h, 0.19f * h, 0.43f * h));
+  if (k == 3) return 2.0f * floor(vec3(0.47f * h, 0.83f * h, 0.67f * h));
+  return vec3(0.0f);
+}
+
+// The texel-space point of the vein model's turbulence sample k at object point p.
 vec3 pat_vein_sample_point(PatParams P, vec3 objectPos, int k) {
-  vec3 q = pat_texel_pos(P, objectPos);
-  float W = P.resolution;
-  if (k == 1) return q + vec3(0.31f * W, 0.57f * W, 0.13f * W);
-  if (k == 2) return q + vec3(0.71f * W, 0.19f * W, 0.43f * W);
-  if (k == 3) return q + vec3(0.47f * W, 0.83f * W, 0.67f * W);
-  return q;
+  return pat_texel_pos(P, objectPos) + pat_vein_sample_offset(P, k);
 }
 
 // One family's coverage at warped point p: `spacing` apart, `stretch` along d, width w,
@@ -503,7 +525,7 @@ float pat_vein_value(PatParams P, vec3 objectPos, float t0, float t1, float t2, 
 
 // The turbulence samples evaluated (the reference; the GPU may read them from the grid).
 float pat_vein_turbulence(PatParams P, vec3 objectPos, int k) {
-  return pat_turbulence3(P, pat_vein_sample_point(P, objectPos, k));
+  return pat_vein_turbulence3(P, pat_vein_sample_point(P, objectPos, k));
 }
 vec3 pat_vein_albedo_at(PatParams P, vec3 objectPos) {
   return pat_vein_albedo(P, objectPos, pat_vein_turbulence(P, objectPos, 0), pat_vein_turbulence(P, objectPos, 1),

@@ -98,7 +98,7 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
       for (int i = 0; i < count; ++i) xs[static_cast<size_t>(i)] = patglsl::pat_vein_sample_point(P, point(i), k).x;
       const glm::vec3 q = patglsl::pat_vein_sample_point(P, point(0), k);
       t[k].resize(static_cast<size_t>(count));
-      patternRow3(m, xs.data(), q.y, q.z, count, t[k].data(), nullptr);
+      veinTurbulenceRow(m, xs.data(), q.y, q.z, count, t[k].data());
     }
   }
   for (int i = 0; i < count; ++i) {
@@ -225,6 +225,44 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
   finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
 }
 
+namespace {
+
+// The octaves of size >= minSize of the turbulence's sum at (xs[i], y, z) added to sum[i] (value
+// basis); returns the sum of their weights (pat_turbulence3 / pat_vein_turbulence3's loops).
+float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float z, int count, float minSize, float* sum) {
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  float weight = 0.0f;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    const float py = y * inv, pz = z * inv;
+    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+    const float fy = py - iy, fz = pz - iz;
+    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
+    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
+    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
+    accumulateOctave(xs, count, size, inv, period, sum,
+                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
+    weight += size;
+  }
+  return weight;
+}
+
+}  // namespace
+
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
+  const PatParams P = toParams(m);
+  if (P.basis != patglsl::PAT_BASIS_VALUE) {
+    for (int i = 0; i < count; ++i) out[i] = patglsl::pat_vein_turbulence3(P, glm::vec3(xs[i], y, z));
+    return;
+  }
+  std::vector<float> sum(static_cast<size_t>(count), 0.0f);
+  const float weight = accumulateTurbulence3(P, xs, y, z, count, patglsl::pat_vein_min_octave(P), sum.data());
+  for (int i = 0; i < count; ++i) out[i] = sum[static_cast<size_t>(i)] / weight;
+}
+
+glm::vec3 veinSampleOffset(const Material& m, int k) { return patglsl::pat_vein_sample_offset(toParams(m), k); }
+
 void patternRow3(const Material& m, const float* xs, float y, float z, int count, float* turbOut, float* valueOut) {
   const PatParams P = toParams(m);
   if (P.basis != patglsl::PAT_BASIS_VALUE) {
@@ -238,20 +276,8 @@ void patternRow3(const Material& m, const float* xs, float y, float z, int count
     }
     return;
   }
-  const uint32_t sh = patglsl::pat_hash(P.seed);
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
-  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f) {
-    const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    accumulateOctave(xs, count, size, inv, period, sum.data(),
-                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
-  }
+  accumulateTurbulence3(P, xs, y, z, count, 1.0f, sum.data());
   // pat_pattern3's ramp is ((x*px + y*py) + z*pz) / W: pass the (x*px + y*py) part per point.
   for (int i = 0; i < count; ++i) {
     const float t = sum[i] / (2.0f * P.turbSize);

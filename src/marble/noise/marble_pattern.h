@@ -61,6 +61,13 @@ glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
 // same points, tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
 
+// The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
+// pat_vein_turbulence3) at the texel points (xs[i], y, z), by rows as patternRow3; bit-identical
+// to the per-point function.
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out);
+// The texel offset of the vein model's turbulence sample k in 0..3 (pat_vein_sample_offset).
+glm::vec3 veinSampleOffset(const Material& m, int k);
+
 // ---- batched rows (the fast path: bit-identical to the functions above) ----
 // A row of points (xs[i], y) or (xs[i], y, z) in texels. Lattice columns and the row's y/z
 // hashes are computed once per cell instead of once per point (value basis; the Perlin basis

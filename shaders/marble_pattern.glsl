@@ -137,6 +137,16 @@ float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
   return pat_vein_value(P, objectPos, t.x, t.y, t.z, t.w);
 }
 
+// The albedo seen through the polish along the refracted view ray (object space, unit) with
+// attenuation k per object unit (pattern_core.glsl "veins seen through the polish"); the
+// paper's model is a surface pattern and ignores them.
+vec3 marble_albedo_seen(vec3 objectPos, vec3 objectNormal, vec3 ray, float k) {
+  PatParams P = marble_params();
+  if (u_pat_vein_model == PAT_VEINS_PAPER) return pat_color(P, marble_paper_value(objectPos, objectNormal));
+  vec4 t = marble_vein_turbulence(P, objectPos);
+  return pat_vein_shade_seen(P, objectPos, t.x, t.y, t.z, t.w, ray, k).xyz;
+}
+
 vec3 marble_albedo(vec3 objectPos, vec3 objectNormal) {
   PatParams P = marble_params();
   if (u_pat_vein_model == PAT_VEINS_PAPER) return pat_color(P, marble_paper_value(objectPos, objectNormal));

@@ -23,6 +23,7 @@ inline float floor(float x) {
 inline float sin(float x) { return std::sin(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float sqrt(float x) { return std::sqrt(x); }
+inline float exp(float x) { return std::exp(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
@@ -85,6 +86,12 @@ VeinUniformValues veinUniformValues(const Material& m) {
 
 float veinPatternValue(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_value_at(toParams(m), objectPos); }
 glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_albedo_at(toParams(m), objectPos); }
+glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k) {
+  const PatParams P = toParams(m);
+  return patglsl::pat_vein_shade_seen(P, objectPos, patglsl::pat_vein_turbulence(P, objectPos, 0),
+                                      patglsl::pat_vein_turbulence(P, objectPos, 1), patglsl::pat_vein_turbulence(P, objectPos, 2),
+                                      patglsl::pat_vein_turbulence(P, objectPos, 3), ray, k);
+}
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);

@@ -55,6 +55,10 @@ VeinUniformValues veinUniformValues(const Material& m);
 // m.vein_model != VeinModel::Paper.
 float veinPatternValue(const Material& m, glm::vec3 objectPos);
 glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
+// The vein model seen through the polish (pattern_core.glsl "veins seen through the polish"):
+// colour (xyz) and value (w) at objectPos along the refracted view ray `ray` (object space,
+// unit, into the stone) with attenuation k per object unit (0: the surface, = veinAlbedo).
+glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
 // A row of object-space points (x0 + i * dx, y, z), i < count, the colour of each (the fast
 // path of `marble texture`: the four turbulence samples by rows, then the cells per point;
 // equal to veinAlbedo up to float rounding of the point positions -- bit-identical for the

@@ -7,6 +7,7 @@
 #include "marble/scene/material_scattering.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/render/subsurface_blur_pass.h"
 
 namespace marble {
@@ -113,12 +114,11 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   p.set("u_background", settings.background);
   if (marble) {
     setFrameUniforms(p, view.camera, view.light, scene.light, view.lightTexelWorld);
-    p.set("u_ior", scene.material.ior);
-    p.set("u_roughness", scene.material.roughness);
+    uploadMaterialUniforms(p, scene.material);  // the gloss, and the pattern when it evaluates it
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
     if (source == DiffuseSource::Pattern) {
-      setPatternUniforms(p, view.model, view.camera, scene.material, view.turbulenceGrid);
+      setPatternUniforms(p, view.model, view.camera, view.turbulenceGrid);
       // The vein models seen through the polish (pattern_core.glsl), per object unit.
       p.set("u_pat_seen_sigma_tr", seenVeinAttenuation(scene));
       p.set("u_pat_seen_eta", 1.0f / std::max(scene.material.ior, 1.0f));

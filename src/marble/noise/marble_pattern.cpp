@@ -158,27 +158,31 @@ glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectN
   return patglsl::pat_albedo(toParams(m), objectPos, objectNormal);
 }
 
-AlbedoSampler::AlbedoSampler(const Material& m, double expectedPoints) : material_(m), resolution_(m.resolution) {
+AlbedoSampler::AlbedoSampler(const Material& m, double expectedPoints)
+    : material_(m), resolution_(turbulenceGridSize(m)), channels_(turbulenceGridChannels(m)) {
   if (turbulenceGridDimensions(m) != 3) return;
+  const double gridTexels = std::pow(static_cast<double>(resolution_), 3.0) * channels_;
   const double perPoint = m.vein_model != VeinModel::Paper ? 4.0 : 1.0;  // turbulences at one point
-  const double gridTexels = std::pow(static_cast<double>(m.resolution), 3.0);
   if (expectedPoints * perPoint < 0.25 * gridTexels) return;
   grid_ = bakeTurbulenceGrid(m);
 }
 
-float AlbedoSampler::gridTurbulence(glm::vec3 q) const {
-  // The texture unit's GL_LINEAR with GL_REPEAT on a grid whose texel i holds the turbulence at
-  // q = i (marble_pattern.glsl samples at (q + 0.5) / W).
+float AlbedoSampler::gridTurbulence(glm::vec3 g, int channel) const {
+  // The texture unit's GL_LINEAR with GL_REPEAT at grid coordinate g (texel i at g = i;
+  // marble_pattern.glsl samples at (g + 0.5) / size). The vein models' grid: g = q / 2.
   const int w = resolution_;
-  const glm::vec3 f0 = glm::vec3(patglsl::floor(q.x), patglsl::floor(q.y), patglsl::floor(q.z));
-  const glm::vec3 f = q - f0;
+  const glm::vec3 f0 = glm::vec3(patglsl::floor(g.x), patglsl::floor(g.y), patglsl::floor(g.z));
+  const glm::vec3 f = g - f0;
   auto wrap = [w](float i) {
     const int k = static_cast<int>(i) % w;
     return k < 0 ? k + w : k;
   };
   const int x0 = wrap(f0.x), y0 = wrap(f0.y), z0 = wrap(f0.z);
   const int x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == w ? 0 : y0 + 1, z1 = z0 + 1 == w ? 0 : z0 + 1;
-  auto at = [&](int x, int y, int z) { return static_cast<float>(grid_[(static_cast<size_t>(z) * w + y) * w + x]); };
+  const auto c = static_cast<size_t>(channels_);
+  auto at = [&](int x, int y, int z) {
+    return static_cast<float>(grid_[((static_cast<size_t>(z) * w + y) * w + x) * c + static_cast<size_t>(channel)]);
+  };
   auto lerp = [](float a, float b, float t) { return a + (b - a) * t; };
   const float c00 = lerp(at(x0, y0, z0), at(x1, y0, z0), f.x), c10 = lerp(at(x0, y1, z0), at(x1, y1, z0), f.x);
   const float c01 = lerp(at(x0, y0, z1), at(x1, y0, z1), f.x), c11 = lerp(at(x0, y1, z1), at(x1, y1, z1), f.x);
@@ -189,13 +193,15 @@ glm::vec3 AlbedoSampler::operator()(glm::vec3 objectPos, glm::vec3 objectNormal)
   if (grid_.empty()) return marbleAlbedo(material_, objectPos, objectNormal);
   const PatParams P = toParams(material_);
   if (material_.vein_model != VeinModel::Paper) {
+    // The four samples at one texel of the vein grid (turbulence_grid.h).
+    const glm::vec3 g = patglsl::pat_texel_pos(P, objectPos) * 0.5f;
     float t[4];
-    for (int k = 0; k < 4; ++k) t[k] = gridTurbulence(patglsl::pat_vein_sample_point(P, objectPos, k));
+    for (int k = 0; k < 4; ++k) t[k] = gridTurbulence(g, k);
     return patglsl::pat_vein_albedo(P, objectPos, t[0], t[1], t[2], t[3]);
   }
   // The solid mapping (the only paper-model mapping with a 3D grid): pat_value_at's first case.
   const glm::vec3 q = patglsl::pat_texel_pos(P, objectPos);
-  return patglsl::pat_color(P, patglsl::pat_sine(patglsl::pat_ramp3(P, q), gridTurbulence(q), P.turbPower));
+  return patglsl::pat_color(P, patglsl::pat_sine(patglsl::pat_ramp3(P, q), gridTurbulence(q, 0), P.turbPower));
 }
 
 // ---- batched rows ----

@@ -100,10 +100,11 @@ class AlbedoSampler {
   bool usesGrid() const { return !grid_.empty(); }
 
  private:
-  float gridTurbulence(glm::vec3 q) const;  // q in texels
+  float gridTurbulence(glm::vec3 g, int channel) const;  // g in grid texels (vein models: q / 2)
   Material material_;
   std::vector<uint16_t> grid_;  // W^3, x fastest; empty: evaluated per point
-  int resolution_ = 0;
+  int resolution_ = 0;  // the grid's texels per axis
+  int channels_ = 1;
 };
 
 }  // namespace marble

@@ -120,26 +120,39 @@ float marble_paper_value(vec3 objectPos, vec3 objectNormal) {
 }
 #endif
 
-// The vein model's turbulence sample k (pattern_core.glsl: pat_vein_sample_point): from the
-// grid where the passes bound one (always 3D for the vein models), else evaluated.
-float marble_vein_turbulence(PatParams P, vec3 objectPos, int k) {
+// The vein model's four turbulence samples at objectPos (pattern_core.glsl:
+// pat_vein_sample_point): from the vein grid where the passes bound one (one fetch: texel i
+// holds the four samples at texel point 2i, noise/turbulence_grid.h), else evaluated.
+vec4 marble_vein_turbulence(PatParams P, vec3 objectPos) {
 #if defined(PAT_TURBULENCE_GRID) && PAT_TURBULENCE_GRID == 3
-  return pat_grid_turbulence3(pat_vein_sample_point(P, objectPos, k));
+  // Texel i of the (W/2)^3 grid holds texel point q = 2i; its centre is at (i + 0.5) / (W/2).
+  return texture(u_pat_turbulence_grid, (pat_texel_pos(P, objectPos) + 1.0) / u_pat_resolution);
 #else
-  return pat_vein_turbulence(P, objectPos, k);
+  return vec4(pat_vein_turbulence(P, objectPos, 0), pat_vein_turbulence(P, objectPos, 1),
+              pat_vein_turbulence(P, objectPos, 2), pat_vein_turbulence(P, objectPos, 3));
 #endif
 }
 
 float marble_pattern_value(vec3 objectPos, vec3 objectNormal) {
   if (u_pat_vein_model == PAT_VEINS_PAPER) return marble_paper_value(objectPos, objectNormal);
   PatParams P = marble_params();
-  return pat_vein_value(P, objectPos, marble_vein_turbulence(P, objectPos, 0), marble_vein_turbulence(P, objectPos, 1),
-                        marble_vein_turbulence(P, objectPos, 2), marble_vein_turbulence(P, objectPos, 3));
+  vec4 t = marble_vein_turbulence(P, objectPos);
+  return pat_vein_value(P, objectPos, t.x, t.y, t.z, t.w);
+}
+
+// The albedo seen through the polish along the refracted view ray (object space, unit) with
+// attenuation k per object unit (pattern_core.glsl "veins seen through the polish"); the
+// paper's model is a surface pattern and ignores them.
+vec3 marble_albedo_seen(vec3 objectPos, vec3 objectNormal, vec3 ray, float k) {
+  PatParams P = marble_params();
+  if (u_pat_vein_model == PAT_VEINS_PAPER) return pat_color(P, marble_paper_value(objectPos, objectNormal));
+  vec4 t = marble_vein_turbulence(P, objectPos);
+  return pat_vein_shade_seen(P, objectPos, t.x, t.y, t.z, t.w, ray, k).xyz;
 }
 
 vec3 marble_albedo(vec3 objectPos, vec3 objectNormal) {
   PatParams P = marble_params();
   if (u_pat_vein_model == PAT_VEINS_PAPER) return pat_color(P, marble_paper_value(objectPos, objectNormal));
-  return pat_vein_albedo(P, objectPos, marble_vein_turbulence(P, objectPos, 0), marble_vein_turbulence(P, objectPos, 1),
-                         marble_vein_turbulence(P, objectPos, 2), marble_vein_turbulence(P, objectPos, 3));
+  vec4 t = marble_vein_turbulence(P, objectPos);
+  return pat_vein_albedo(P, objectPos, t.x, t.y, t.z, t.w);
 }

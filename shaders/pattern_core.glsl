@@ -327,7 +327,7 @@ vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {
 //     plane: the exact distance, not F2 - F1, which widens where two points nearly coincide). Voronoi faces meet
 //     three at an edge, so in any slice veins meet at Y junctions -- the forks of real marble;
 //   * the space is domain-warped first (Quilez, "Domain warping", 2002/2012): p + a * (T - 0.5)
-//     with T three samples of the paper's turbulence, so the faces meander like veins instead
+//     with T three samples of the paper's turbulence (its octaves down to 2 texels), so the faces meander like veins instead
 //     of being flat; the space is also stretched along the veins' normal, so cells are
 //     flattened and the dominant veins lie roughly in one family of planes;
 //   * each face (a pair of cells) is filled or not by a hash of the pair (density: the fraction
@@ -427,28 +427,93 @@ float pat_face_random(PatCells c) { return pat_unit(pat_hash((c.h1 ^ c.h2) + 0x6
 // roughly parallel lines; a cut along n (a "fleuri" cut, in the trade) shows broad clouds.
 vec3 pat_stretch(vec3 p, vec3 n, float stretch) { return p + n * (dot(p, n) * (stretch - 1.0f)); }
 
-// The texel-space points of the four turbulence samples the vein model reads at object point
-// p: 0-2 the warp, 3 the width field. Offsets are fractions of the period W so the samples are
-// independent (the turbulence wraps with period W).
+// The vein model's turbulence: the paper's octaves (turbSize, turbSize/2, ...) down to 2
+// texels instead of 1, normalized by their weights to [0,1] (mean 0.5). The finest octave adds
+// only 1/(2 turbSize) of the amplitude to a warp or a width, invisible there; without it the
+// turbulence is multilinear on 2-texel cells, so the four samples below fit one grid of
+// (W/2)^3 four-channel texels, read with one filtered fetch (noise/turbulence_grid.h).
+float pat_vein_min_octave(PatParams P) { return min(2.0f, P.turbSize); }
+float pat_vein_turbulence3(PatParams P, vec3 q) {
+  uint sh = pat_hash(P.seed);
+  float sum = 0.0f;
+  float weight = 0.0f;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= pat_vein_min_octave(P); size *= 0.5f, inv *= 2.0f) {
+    sum += pat_smooth3(q * inv, pat_octave_period(P.resolution, inv), sh, P.basis) * size;
+    weight += size;
+  }
+  return sum / weight;
+}
+
+// The texel offset of the vein model's turbulence sample k (0-2 the warp, 3 the width field):
+// fractions of the period W so the samples are independent (the turbulence wraps with period
+// W), rounded to even texels so that the grid's texel i holds all four at the texel points
+// 2i + offset (one fetch for the four).
+vec3 pat_vein_sample_offset(PatParams P, int k) {
+  float h = 0.5f * P.resolution;
+  if (k == 1) return 2.0f * floor(vec3(0.31f * h, 0.57f * h, 0.13f * h));
+  if (k == 2) return 2.0f * floor(vec3(0.71f * h, 0.19f * h, 0.43f * h));
+  if (k == 3) return 2.0f * floor(vec3(0.47f * h, 0.83f * h, 0.67f * h));
+  return vec3(0.0f);
+}
+
+// The texel-space point of the vein model's turbulence sample k at object point p.
 vec3 pat_vein_sample_point(PatParams P, vec3 objectPos, int k) {
-  vec3 q = pat_texel_pos(P, objectPos);
-  float W = P.resolution;
-  if (k == 1) return q + vec3(0.31f * W, 0.57f * W, 0.13f * W);
-  if (k == 2) return q + vec3(0.71f * W, 0.19f * W, 0.43f * W);
-  if (k == 3) return q + vec3(0.47f * W, 0.83f * W, 0.67f * W);
-  return q;
+  return pat_texel_pos(P, objectPos) + pat_vein_sample_offset(P, k);
+}
+
+// ---- veins seen through the polish (issue 16: the vein colour is absorption inside the stone) ----
+// The colour seen at a surface point is the stone's along the refracted view ray, weighted by
+// how much of the light that leaves there has been at each depth d: in the diffusion regime
+// the fluence falls as exp(-sigma_tr d), sigma_tr = sqrt(3 sigma_a sigma_t') (Jensen et al.
+// 2001, "A Practical Model for Subsurface Light Transport", sec. 2.4), so at distance t along a
+// ray at cos(theta_t) to the normal the weight is k exp(-k t), k = sigma_tr cos(theta_t) (per
+// object unit: the caller converts with mm_per_unit). Each family's nearest crack is taken as
+// the plane it is at the surface point (the warp's curvature over the depth 1/k neglected):
+// along the ray twice the distance to it is e0 + b t, with b = -2 S(ray).n (n the unit normal
+// of the face between the two nearest cells, S the family's stretch), so the part of the ray
+// inside a vein of full width w is the interval where |e0 + b t| < w, and its weight is
+// exp(-k t_lo) - exp(-k t_hi), exactly. The vein at the surface keeps its own (crisp) cover;
+// the seen cover is the larger of the two, so veins just under the polish show as soft
+// shadows on the side they dip to, fading with depth. Valid while 1/k is small against the
+// family's spacing (the nearest face is the only one the ray meets; beyond a quarter spacing
+// from the crack the buried part is faded out, see pat_cells_cover); k = 0: the surface only.
+float pat_vein_depth_cover(float e0, float b, float w, float k) {
+  if (abs(b) < 1e-6f) return e0 < w ? 1.0f : 0.0f;  // along the crack: inside it all the way, or never
+  float ta = (-w - e0) / b;
+  float tb = (w - e0) / b;
+  float lo = max(min(ta, tb), 0.0f);
+  float hi = max(ta, tb);
+  if (hi <= lo) return 0.0f;
+  return exp(-k * lo) - exp(-k * hi);
+}
+
+// The cover of the vein of full width `width` on the face of cells c (spacing, stretch as the
+// family's), at the surface, or seen along `ray` with attenuation k (k > 0).
+float pat_cells_cover(PatParams P, PatCells c, float spacing, float stretch, float width, vec3 ray, float k) {
+  float e0 = c.edge * spacing;
+  float cover = pat_vein_cover(e0, width, P.veinSoftness);
+  if (k <= 0.0f || width <= 0.0f) return cover;
+  vec3 dv = c.v2 - c.v1;
+  float b = -2.0f * dot(pat_stretch(ray, P.veinNormal, stretch), dv) / max(sqrt(dot(dv, dv)), 1e-6f);
+  // Beyond a quarter of the spacing from the crack the face between the two nearest cells
+  // stops being the one a ray meets first (the nearest pair changes there, with a straight
+  // seam): the buried part fades out before that.
+  float reach = min(max(1.0f - e0 / (0.25f * spacing), 0.0f), 1.0f);
+  return max(cover, reach * reach * pat_vein_depth_cover(e0, b, width, k));
 }
 
 // One family's coverage at warped point p: `spacing` apart, `stretch` along d, width w,
-// `density` of faces filled, width modulated by m in [0,1] (the width field).
-float pat_family_cover(PatParams P, vec3 p, float spacing, float stretch, float w, float density, float m, uint salt) {
+// `density` of faces filled, width modulated by m in [0,1] (the width field); seen along ray
+// with attenuation k (0: at the surface).
+float pat_family_cover(PatParams P, vec3 p, float spacing, float stretch, float w, float density, float m, uint salt,
+                       vec3 ray, float k) {
   if (w <= 0.0f || density <= 0.0f) return 0.0f;
   PatCells c = pat_voronoi(pat_stretch(p, P.veinNormal, stretch) * (1.0f / spacing), salt);
   if (pat_face_random(c) >= density) return 0.0f;
   // Swell and pinch: width from (1 - pinch) to (1 + pinch) times w as m goes 0 -> 1; at pinch
   // 1 the vein fades out where m is low.
   float width = w * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f);
-  return pat_vein_cover(c.edge * spacing, width, P.veinSoftness);
+  return pat_cells_cover(P, c, spacing, stretch, width, ray, k);
 }
 
 // Maps a turbulence sample (mean 0.5, mostly within 0.3-0.7) to [0,1].
@@ -462,26 +527,31 @@ vec3 pat_vein_warped(PatParams P, vec3 objectPos, float t0, float t1, float t2) 
 // The three families' coverages at warped point p with width field m: (dominant -- for breccia
 // the matrix between fragments --, secondary, hairline), and in w the dominant cell's random
 // in [0,1) (breccia: which tint its fragment takes).
-vec4 pat_vein_covers(PatParams P, vec3 p, float m) {
-  float hair = pat_family_cover(P, p, P.veinSpacing.z, 1.0f, P.veinWidth.z, P.veinDensity.z, 1.0f - m, 0x27d4eb2fu);
-  float secondary = pat_family_cover(P, p, P.veinSpacing.y, sqrt(P.veinStretch), P.veinWidth.y, P.veinDensity.y, m, 0x165667b1u);
+vec4 pat_vein_covers(PatParams P, vec3 p, float m, vec3 ray, float k) {
+  // Seen through the polish: the dominant family only (the finer veins' buried parts are as
+  // thin as they are, well under a pixel at the sizes they are drawn at, and cost as much).
+  float hair = pat_family_cover(P, p, P.veinSpacing.z, 1.0f, P.veinWidth.z, P.veinDensity.z, 1.0f - m, 0x27d4eb2fu, ray, 0.0f);
+  float secondary =
+      pat_family_cover(P, p, P.veinSpacing.y, sqrt(P.veinStretch), P.veinWidth.y, P.veinDensity.y, m, 0x165667b1u, ray, 0.0f);
   if (P.veinModel == PAT_VEINS_BRECCIA) {
     // Every face of the dominant family is matrix: the fragments are its cells.
     PatCells f = pat_voronoi(pat_stretch(p, P.veinNormal, P.veinStretch) * (1.0f / P.veinSpacing.x), 0x9e3779b9u);
     float width = P.veinWidth.x * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f);
-    float matrix = pat_vein_cover(f.edge * P.veinSpacing.x, width, P.veinSoftness);
+    float matrix = pat_cells_cover(P, f, P.veinSpacing.x, P.veinStretch, width, ray, k);
     return vec4(matrix, secondary, hair, pat_unit(pat_hash(f.h1 + 0x85ebca6bu)));
   }
-  float dominant = pat_family_cover(P, p, P.veinSpacing.x, P.veinStretch, P.veinWidth.x, P.veinDensity.x, m, 0x9e3779b9u);
+  float dominant =
+      pat_family_cover(P, p, P.veinSpacing.x, P.veinStretch, P.veinWidth.x, P.veinDensity.x, m, 0x9e3779b9u, ray, k);
   return vec4(dominant, secondary, hair, 0.0f);
 }
 
 // The vein model at object point p, given the four turbulence samples at
 // pat_vein_sample_point(P, p, 0..3) (the caller evaluates them, or reads them from the grid):
 // the colour in xyz, and in w the value before colour, as the paper's: 0 at the heart of a
-// vein, 1 in the ground.
-vec4 pat_vein_shade(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
-  vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3));
+// vein, 1 in the ground. Seen along the refracted view ray `ray` (object space, unit) with
+// attenuation k per object unit (see "veins seen through the polish"); k = 0: at the surface.
+vec4 pat_vein_shade_seen(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3, vec3 ray, float k) {
+  vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3), ray, k);
   // Ground: clouds (the third warp sample, a broad turbulence); breccia fragments' tints.
   vec3 c = pat_mix3(P.baseColor, P.cloudColor, P.cloudAmount * pat_spread(t2));
   if (P.veinModel == PAT_VEINS_BRECCIA) c = pat_mix3(c, P.cloudColor, P.fragmentTint * cov.w);
@@ -493,6 +563,9 @@ vec4 pat_vein_shade(PatParams P, vec3 objectPos, float t0, float t1, float t2, f
   c = c * (1.0f + P.grainAmount * (g - 0.5f));
   return vec4(c.x, c.y, c.z, 1.0f - max(cov.x, max(cov.y, cov.z)));
 }
+vec4 pat_vein_shade(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
+  return pat_vein_shade_seen(P, objectPos, t0, t1, t2, t3, vec3(0.0f), 0.0f);
+}
 vec3 pat_vein_albedo(PatParams P, vec3 objectPos, float t0, float t1, float t2, float t3) {
   vec4 s = pat_vein_shade(P, objectPos, t0, t1, t2, t3);
   return vec3(s.x, s.y, s.z);
@@ -503,7 +576,7 @@ float pat_vein_value(PatParams P, vec3 objectPos, float t0, float t1, float t2, 
 
 // The turbulence samples evaluated (the reference; the GPU may read them from the grid).
 float pat_vein_turbulence(PatParams P, vec3 objectPos, int k) {
-  return pat_turbulence3(P, pat_vein_sample_point(P, objectPos, k));
+  return pat_vein_turbulence3(P, pat_vein_sample_point(P, objectPos, k));
 }
 vec3 pat_vein_albedo_at(PatParams P, vec3 objectPos) {
   return pat_vein_albedo(P, objectPos, pat_vein_turbulence(P, objectPos, 0), pat_vein_turbulence(P, objectPos, 1),

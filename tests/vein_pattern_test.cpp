@@ -39,6 +39,40 @@ TEST(VeinPattern, MarbleAlbedoDispatchesOnTheModel) {
   EXPECT_EQ(marbleAlbedo(m, p, n), patternColor(m, marblePatternValue(m, p, n)));
 }
 
+// Veins seen through the polish (pattern_core.glsl pat_cells_cover): k = 0 is the surface
+// pattern exactly; a vein just beside a point shows there when the view ray runs towards it
+// under the surface, not in an opaque stone (k very large: the surface only), and not when the
+// ray runs away from it (negative control: a depth term that ignored the ray would show it
+// both ways).
+TEST(VeinPattern, BuriedVeinsShowAlongTheRayOnly) {
+  const Material m = loadPreset("calacatta");
+  for (int i = 0; i < 50; ++i) {
+    const glm::vec3 p(-0.8f + 0.03f * i, 0.1f, 0.2f);
+    const glm::vec4 surface = veinShadeSeen(m, p, glm::vec3(0, 0, -1), 0.0f);
+    const glm::vec3 c = veinAlbedo(m, p);
+    ASSERT_EQ(std::memcmp(&surface, &c, sizeof c), 0) << i;
+    ASSERT_EQ(surface.w, veinPatternValue(m, p)) << i;
+  }
+  // A ground point 0.01 beside the dominant vein at q (found along a line across the veins).
+  int found = 0;
+  for (int i = 0; i < 2000 && found < 3; ++i) {
+    const glm::vec3 q(-0.9f + 0.0009f * i, -0.2f, 0.3f);
+    if (veinPatternValue(m, q) > 0.05f) continue;  // the heart of a vein
+    const glm::vec3 p = q - glm::vec3(0.0f, 0.012f, 0.0f);
+    if (veinPatternValue(m, p) < 1.0f) continue;   // the ground, no vein of any family
+    const glm::vec3 towards = glm::normalize(q - p + glm::vec3(0.003f, 0.0f, 0.0f));
+    const float clear = veinShadeSeen(m, p, towards, 10.0f).w;
+    const float opaque = veinShadeSeen(m, p, towards, 1e6f).w;
+    const float away = veinShadeSeen(m, p, -towards, 10.0f).w;
+    if (clear >= 1.0f) continue;  // this vein is of a finer family (not seen through) or ends here
+    ++found;
+    EXPECT_GT(opaque, 0.999f) << i;  // light that never goes deep sees the ground only
+    EXPECT_GT(clear, 0.0f) << i;   // soft: not the vein's full cover
+    EXPECT_EQ(away, 1.0f) << i;
+  }
+  EXPECT_EQ(found, 3);
+}
+
 TEST(VeinPattern, VeinsAreSomewhereAndNotEverywhere) {
   // A value that is never 0 or always 0 would pass the colour tests and show nothing.
   for (const char* preset : {"carrara", "nero-marquina", "emperador", "breccia-pernice"}) {

@@ -25,6 +25,7 @@ inline float floor(float x) {
 inline float sin(float x) { return std::sin(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float sqrt(float x) { return std::sqrt(x); }
+inline float exp(float x) { return std::exp(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
@@ -86,6 +87,12 @@ VeinUniformValues veinUniformValues(const Material& m) {
 
 float veinPatternValue(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_value_at(toParams(m), objectPos); }
 glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_albedo_at(toParams(m), objectPos); }
+glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k) {
+  const PatParams P = toParams(m);
+  return patglsl::pat_vein_shade_seen(P, objectPos, patglsl::pat_vein_turbulence(P, objectPos, 0),
+                                      patglsl::pat_vein_turbulence(P, objectPos, 1), patglsl::pat_vein_turbulence(P, objectPos, 2),
+                                      patglsl::pat_vein_turbulence(P, objectPos, 3), ray, k);
+}
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);
@@ -99,7 +106,7 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
       for (int i = 0; i < count; ++i) xs[static_cast<size_t>(i)] = patglsl::pat_vein_sample_point(P, point(i), k).x;
       const glm::vec3 q = patglsl::pat_vein_sample_point(P, point(0), k);
       t[k].resize(static_cast<size_t>(count));
-      patternRow3(m, xs.data(), q.y, q.z, count, t[k].data(), nullptr);
+      veinTurbulenceRow(m, xs.data(), q.y, q.z, count, t[k].data());
     }
   }
   for (int i = 0; i < count; ++i) {
@@ -151,27 +158,31 @@ glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectN
   return patglsl::pat_albedo(toParams(m), objectPos, objectNormal);
 }
 
-AlbedoSampler::AlbedoSampler(const Material& m, double expectedPoints) : material_(m), resolution_(m.resolution) {
+AlbedoSampler::AlbedoSampler(const Material& m, double expectedPoints)
+    : material_(m), resolution_(turbulenceGridSize(m)), channels_(turbulenceGridChannels(m)) {
   if (turbulenceGridDimensions(m) != 3) return;
+  const double gridTexels = std::pow(static_cast<double>(resolution_), 3.0) * channels_;
   const double perPoint = m.vein_model != VeinModel::Paper ? 4.0 : 1.0;  // turbulences at one point
-  const double gridTexels = std::pow(static_cast<double>(m.resolution), 3.0);
   if (expectedPoints * perPoint < 0.25 * gridTexels) return;
   grid_ = bakeTurbulenceGrid(m);
 }
 
-float AlbedoSampler::gridTurbulence(glm::vec3 q) const {
-  // The texture unit's GL_LINEAR with GL_REPEAT on a grid whose texel i holds the turbulence at
-  // q = i (marble_pattern.glsl samples at (q + 0.5) / W).
+float AlbedoSampler::gridTurbulence(glm::vec3 g, int channel) const {
+  // The texture unit's GL_LINEAR with GL_REPEAT at grid coordinate g (texel i at g = i;
+  // marble_pattern.glsl samples at (g + 0.5) / size). The vein models' grid: g = q / 2.
   const int w = resolution_;
-  const glm::vec3 f0 = glm::vec3(patglsl::floor(q.x), patglsl::floor(q.y), patglsl::floor(q.z));
-  const glm::vec3 f = q - f0;
+  const glm::vec3 f0 = glm::vec3(patglsl::floor(g.x), patglsl::floor(g.y), patglsl::floor(g.z));
+  const glm::vec3 f = g - f0;
   auto wrap = [w](float i) {
     const int k = static_cast<int>(i) % w;
     return k < 0 ? k + w : k;
   };
   const int x0 = wrap(f0.x), y0 = wrap(f0.y), z0 = wrap(f0.z);
   const int x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == w ? 0 : y0 + 1, z1 = z0 + 1 == w ? 0 : z0 + 1;
-  auto at = [&](int x, int y, int z) { return static_cast<float>(grid_[(static_cast<size_t>(z) * w + y) * w + x]); };
+  const auto c = static_cast<size_t>(channels_);
+  auto at = [&](int x, int y, int z) {
+    return static_cast<float>(grid_[((static_cast<size_t>(z) * w + y) * w + x) * c + static_cast<size_t>(channel)]);
+  };
   auto lerp = [](float a, float b, float t) { return a + (b - a) * t; };
   const float c00 = lerp(at(x0, y0, z0), at(x1, y0, z0), f.x), c10 = lerp(at(x0, y1, z0), at(x1, y1, z0), f.x);
   const float c01 = lerp(at(x0, y0, z1), at(x1, y0, z1), f.x), c11 = lerp(at(x0, y1, z1), at(x1, y1, z1), f.x);
@@ -182,13 +193,15 @@ glm::vec3 AlbedoSampler::operator()(glm::vec3 objectPos, glm::vec3 objectNormal)
   if (grid_.empty()) return marbleAlbedo(material_, objectPos, objectNormal);
   const PatParams P = toParams(material_);
   if (material_.vein_model != VeinModel::Paper) {
+    // The four samples at one texel of the vein grid (turbulence_grid.h).
+    const glm::vec3 g = patglsl::pat_texel_pos(P, objectPos) * 0.5f;
     float t[4];
-    for (int k = 0; k < 4; ++k) t[k] = gridTurbulence(patglsl::pat_vein_sample_point(P, objectPos, k));
+    for (int k = 0; k < 4; ++k) t[k] = gridTurbulence(g, k);
     return patglsl::pat_vein_albedo(P, objectPos, t[0], t[1], t[2], t[3]);
   }
   // The solid mapping (the only paper-model mapping with a 3D grid): pat_value_at's first case.
   const glm::vec3 q = patglsl::pat_texel_pos(P, objectPos);
-  return patglsl::pat_color(P, patglsl::pat_sine(patglsl::pat_ramp3(P, q), gridTurbulence(q), P.turbPower));
+  return patglsl::pat_color(P, patglsl::pat_sine(patglsl::pat_ramp3(P, q), gridTurbulence(q, 0), P.turbPower));
 }
 
 // ---- batched rows ----
@@ -266,6 +279,44 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
   finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
 }
 
+namespace {
+
+// The octaves of size >= minSize of the turbulence's sum at (xs[i], y, z) added to sum[i] (value
+// basis); returns the sum of their weights (pat_turbulence3 / pat_vein_turbulence3's loops).
+float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float z, int count, float minSize, float* sum) {
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  float weight = 0.0f;
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    const float py = y * inv, pz = z * inv;
+    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+    const float fy = py - iy, fz = pz - iz;
+    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
+    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
+    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
+    accumulateOctave(xs, count, size, inv, period, sum,
+                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
+    weight += size;
+  }
+  return weight;
+}
+
+}  // namespace
+
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
+  const PatParams P = toParams(m);
+  if (P.basis != patglsl::PAT_BASIS_VALUE) {
+    for (int i = 0; i < count; ++i) out[i] = patglsl::pat_vein_turbulence3(P, glm::vec3(xs[i], y, z));
+    return;
+  }
+  std::vector<float> sum(static_cast<size_t>(count), 0.0f);
+  const float weight = accumulateTurbulence3(P, xs, y, z, count, patglsl::pat_vein_min_octave(P), sum.data());
+  for (int i = 0; i < count; ++i) out[i] = sum[static_cast<size_t>(i)] / weight;
+}
+
+glm::vec3 veinSampleOffset(const Material& m, int k) { return patglsl::pat_vein_sample_offset(toParams(m), k); }
+
 void patternRow3(const Material& m, const float* xs, float y, float z, int count, float* turbOut, float* valueOut) {
   const PatParams P = toParams(m);
   if (P.basis != patglsl::PAT_BASIS_VALUE) {
@@ -279,20 +330,8 @@ void patternRow3(const Material& m, const float* xs, float y, float z, int count
     }
     return;
   }
-  const uint32_t sh = patglsl::pat_hash(P.seed);
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
-  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= 1.0f; size *= 0.5f, inv *= 2.0f) {
-    const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    accumulateOctave(xs, count, size, inv, period, sum.data(),
-                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
-  }
+  accumulateTurbulence3(P, xs, y, z, count, 1.0f, sum.data());
   // pat_pattern3's ramp is ((x*px + y*py) + z*pz) / W: pass the (x*px + y*py) part per point.
   for (int i = 0; i < count; ++i) {
     const float t = sum[i] / (2.0f * P.turbSize);

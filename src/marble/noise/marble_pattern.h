@@ -58,11 +58,22 @@ VeinUniformValues veinUniformValues(const Material& m);
 // m.vein_model != VeinModel::Paper.
 float veinPatternValue(const Material& m, glm::vec3 objectPos);
 glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
+// The vein model seen through the polish (pattern_core.glsl "veins seen through the polish"):
+// colour (xyz) and value (w) at objectPos along the refracted view ray `ray` (object space,
+// unit, into the stone) with attenuation k per object unit (0: the surface, = veinAlbedo).
+glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
 // A row of object-space points (x0 + i * dx, y, z), i < count, the colour of each (the fast
 // path of `marble texture`: the four turbulence samples by rows, then the cells per point;
 // equal to veinAlbedo up to float rounding of the point positions -- bit-identical for the
 // same points, tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
+
+// The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
+// pat_vein_turbulence3) at the texel points (xs[i], y, z), by rows as patternRow3; bit-identical
+// to the per-point function.
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out);
+// The texel offset of the vein model's turbulence sample k in 0..3 (pat_vein_sample_offset).
+glm::vec3 veinSampleOffset(const Material& m, int k);
 
 // ---- batched rows (the fast path: bit-identical to the functions above) ----
 // A row of points (xs[i], y) or (xs[i], y, z) in texels. Lattice columns and the row's y/z
@@ -89,10 +100,11 @@ class AlbedoSampler {
   bool usesGrid() const { return !grid_.empty(); }
 
  private:
-  float gridTurbulence(glm::vec3 q) const;  // q in texels
+  float gridTurbulence(glm::vec3 g, int channel) const;  // g in grid texels (vein models: q / 2)
   Material material_;
   std::vector<uint16_t> grid_;  // W^3, x fastest; empty: evaluated per point
-  int resolution_ = 0;
+  int resolution_ = 0;  // the grid's texels per axis
+  int channels_ = 1;
 };
 
 }  // namespace marble

@@ -4,12 +4,18 @@
 
 #include "marble/render/albedo_pass.h"
 #include "marble/noise/turbulence_grid.h"
+#include "marble/scene/material_scattering.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/subsurface_blur_pass.h"
 
 namespace marble {
+
+float seenVeinAttenuation(const Scene& scene) {
+  if (scene.material.vein_model == VeinModel::Paper) return 0.0f;
+  return diffusionAttenuationMm(scene.material) * scene.mm_per_unit;
+}
 
 float fxaaLuma(const glm::vec3& displayColor) { return glm::dot(displayColor, glm::vec3(0.299f, 0.587f, 0.114f)); }
 
@@ -111,7 +117,12 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     uploadMaterialUniforms(p, scene.material);  // the gloss, and the pattern when it evaluates it
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
-    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, view.turbulenceGrid);
+    if (source == DiffuseSource::Pattern) {
+      setPatternUniforms(p, view.model, view.camera, view.turbulenceGrid);
+      // The vein models seen through the polish (pattern_core.glsl), per object unit.
+      p.set("u_pat_seen_sigma_tr", seenVeinAttenuation(scene));
+      p.set("u_pat_seen_eta", 1.0f / std::max(scene.material.ior, 1.0f));
+    }
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

@@ -46,6 +46,10 @@ enum class DiffuseSource {
 // FXAA's luma of a display colour (fxaa_luma in post.frag.glsl).
 float fxaaLuma(const glm::vec3& displayColor);
 
+// `marble` mode: the attenuation per object unit with which the vein models are seen through the
+// polish (diffusionAttenuationMm x mm_per_unit; 0 for the paper's model, a surface pattern).
+float seenVeinAttenuation(const Scene& scene);
+
 class PostPass {
 public:
   explicit PostPass(const ShaderLibrary& shaders);

@@ -211,7 +211,12 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const ScreenRect rect =
       projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
   const bool marble = scene.render.mode == RenderMode::Marble;
-  if (viewMoved || !sameGroups(scene.material, lastMaterial_, kAlbedoGroups)) albedoValid_ = false;
+  // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
+  const float seen = marble ? seenVeinAttenuation(scene) : 0.0f;
+  if (viewMoved || !sameGroups(scene.material, lastMaterial_, kAlbedoGroups) || seen != lastSeenAttenuation_ ||
+      (seen > 0.0f && scene.material.ior != lastMaterial_.ior))
+    albedoValid_ = false;
+  lastSeenAttenuation_ = seen;
   passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
   // `marble` evaluates the pattern in its post pass (DiffuseSource::Pattern); the other modes
   // read the albedo in the lighting pass.

@@ -181,6 +181,7 @@ private:
   CameraMatrices lastCamera_{};
   glm::mat4 lastModel_{1.0f};
   Material lastMaterial_{};
+  float lastSeenAttenuation_ = 0.0f;  // seenVeinAttenuation of the last frame
   // The lighting (and blur) result is reused when none of its inputs changed.
   bool lightingValid_ = false;
   bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's

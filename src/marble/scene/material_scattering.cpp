@@ -80,4 +80,10 @@ void resolveScattering(Material& m) {
   m.sigma_s_mm = c.sigma_s_mm;
 }
 
+float diffusionAttenuationMm(const Material& m) {
+  const glm::vec3 a = m.sigma_a_mm, t = m.sigma_a_mm + m.sigma_s_mm;
+  const glm::vec3 tr = glm::sqrt(3.0f * glm::max(a, glm::vec3(0.0f)) * glm::max(t, glm::vec3(0.0f)));
+  return (tr.x + tr.y + tr.z) / 3.0f;
+}
+
 }  // namespace marble

@@ -52,4 +52,10 @@ DipoleDepths dipoleDepthsMm(const Material& m);
 // sigma_s_mm always hold what the renderer uses.
 void resolveScattering(Material& m);
 
+// The diffusion's effective attenuation sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s)) per mm
+// (Jensen et al. 2001, sec. 2.4; sigma_s' = sigma_s, isotropic), averaged over the channels:
+// how fast the light that leaves the surface thins out with depth. The vein models' "seen
+// through the polish" depth weight (pattern_core.glsl) in the `marble` mode.
+float diffusionAttenuationMm(const Material& m);
+
 }  // namespace marble

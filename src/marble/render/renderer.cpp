@@ -52,7 +52,7 @@ bool sameView(const Scene& a, const Scene& b) {
 }
 // What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer
 // and the light's map. For `marble` that is the light entering the stone: the scattering
-// coefficients, the index of refraction (the energy split), the translucency and the scale --
+// coefficients, the index of refraction (the dipole's boundary term), the translucency and the scale --
 // not the albedo or the gloss, which the post pass applies. The other modes read the whole
 // material.
 bool sameLightingInputs(const Scene& a, const Scene& b) {

@@ -79,8 +79,7 @@ VeinUniformValues veinUniformValues(const Material& m) {
   const int model = m.vein_model == VeinModel::Network   ? patglsl::PAT_VEINS_NETWORK
                     : m.vein_model == VeinModel::Breccia ? patglsl::PAT_VEINS_BRECCIA
                                                          : patglsl::PAT_VEINS_PAPER;
-  const float len = glm::length(m.vein_normal);
-  return {model, len > 0.0f ? m.vein_normal / len : glm::vec3(1.0f, 0.0f, 0.0f)};
+  return {model, veinDirection(m)};
 }
 
 float veinPatternValue(const Material& m, glm::vec3 objectPos) { return patglsl::pat_vein_value_at(toParams(m), objectPos); }

@@ -39,6 +39,7 @@ TEST(CompareCli, ScaledCopyGivesItsScale) {
   EXPECT_NE(r.output.find("exposure scale   2.0000"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("relative RMSE    0.0000"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("SSIM             1.0000"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("energy ratio     0.5000"), std::string::npos) << r.output;
 
   const auto j = runMarble("compare --json " + (dir / "ref.exr").string() + " " + (dir / "ref.exr").string());
   EXPECT_EQ(j.exitCode, 0) << j.output;
@@ -108,5 +109,66 @@ TEST(CompareCli, BadFilesAreOneLineAndExitTwo) {
 
   const auto usage = runMarble("compare " + (dir / "ref.exr").string());
   EXPECT_EQ(usage.exitCode, 2);
+  std::filesystem::remove_all(dir);
+}
+
+// --downsample N box-filters both images first: per-pixel noise that averages to the reference
+// within each block disappears (the point of comparing a path tracer's render at a downsample).
+TEST(CompareCli, DownsampleAveragesPixelNoiseAway) {
+  const auto dir = tempDir("compare-downsample");
+  ImageRGBF flat{32, 32, std::vector<float>(32 * 32 * 3, 0.0f)}, noisy = flat;
+  for (int y = 8; y < 24; ++y)
+    for (int x = 8; x < 24; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const size_t i = (static_cast<size_t>(y) * 32 + x) * 3 + c;
+        flat.pixels[i] = 0.25f;
+        noisy.pixels[i] = 0.25f + (((x + y) % 2) ? 0.1f : -0.1f);  // a checkerboard: 0 in every 2x2 block
+      }
+  writeExr(dir / "ref.exr", flat);
+  writeExr(dir / "noisy.exr", noisy);
+  const std::string files = (dir / "ref.exr").string() + " " + (dir / "noisy.exr").string();
+  const auto full = runMarble("compare --json " + files);
+  ASSERT_EQ(full.exitCode, 0) << full.output;
+  EXPECT_EQ(full.output.find("\"relative_rmse\": 0.000000"), std::string::npos) << full.output;
+  const auto half = runMarble("compare --downsample 2 " + files);
+  ASSERT_EQ(half.exitCode, 0) << half.output;
+  EXPECT_NE(half.output.find("relative RMSE    0.0000"), std::string::npos) << half.output;
+  EXPECT_NE(half.output.find("SSIM             1.0000"), std::string::npos) << half.output;
+  EXPECT_NE(half.output.find("compared at      downsample 2 (16x16)"), std::string::npos) << half.output;
+  EXPECT_NE(half.output.find("(reference 64 px, test 64 px, both 64 px)"), std::string::npos) << half.output;
+
+  const auto bad = runMarble("compare --downsample 3 " + files);
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_EQ(lineCount(bad.output), 1) << bad.output;
+  EXPECT_NE(bad.output.find("ref.exr"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("--downsample"), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}
+
+// --side-by-side writes reference | test, the test at the best-fit exposure: for a scaled copy
+// the two halves are the same picture; the background is black.
+TEST(CompareCli, SideBySideShowsTheTestAtItsExposureScale) {
+  const auto dir = tempDir("compare-sbs");
+  writeExr(dir / "ref.exr", square(32, 0.25f));
+  writeExr(dir / "test.exr", square(32, 0.125f));
+  const auto png = dir / "sbs.png";
+  const auto r = runMarble("compare " + (dir / "ref.exr").string() + " " + (dir / "test.exr").string() +
+                           " --side-by-side " + png.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const ImageRGBA8 img = readPng(png);
+  ASSERT_EQ(img.width, 64);
+  ASSERT_EQ(img.height, 32);
+  int differing = 0, lit = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const uint8_t left = img.pixels[(static_cast<size_t>(y) * 64 + x) * 4 + c];
+        const uint8_t right = img.pixels[(static_cast<size_t>(y) * 64 + 32 + x) * 4 + c];
+        differing += left != right;
+        lit += left > 0;
+      }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(lit, 0);
+  EXPECT_EQ(img.pixels[0], 0) << "background black";
   std::filesystem::remove_all(dir);
 }

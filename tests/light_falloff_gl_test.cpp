@@ -3,9 +3,10 @@
 // and --hdr's alpha is coverage. Measured on the linear HDR image (Renderer::readHdr).
 //
 // The set-up makes the radiance of the cube's front face (z = +1) a closed form: a flat albedo ρ,
-// ior 1 (F0 = 0: no specular, and the Fresnel energy split leaves 1 − (1 − cosθ)^5 of the light),
-// roughness 1, no environment, no translucency, a camera far along +z. Then
-//   L = ρ · E · cosθ · (1 − (1 − cosθ)^5) / π,  E = π I (d0 / d)²  for a point light.
+// ior 1 (F0 = 0: no specular), the Principled entry weight 1 − (1 − cosθ)^5 / 2 (issue 15;
+// shaders/marble_light.glsl), roughness 1, no environment, no translucency, a camera far along +z.
+// Then
+//   L = ρ · E · cosθ · (1 − (1 − cosθ)^5 / 2) / π,  E = π I (d0 / d)²  for a point light.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,7 +54,7 @@ float radianceAt(const ImageRGBF& img, const Scene& s, glm::vec3 p) {
 
 // The closed form above, per unit intensity, for a point on the face seen head-on.
 float expectedRadiance(float irradianceOverPi, float cosTheta) {
-  return kAlbedo * irradianceOverPi * cosTheta * (1.0f - std::pow(1.0f - cosTheta, 5.0f));
+  return kAlbedo * irradianceOverPi * cosTheta * (1.0f - 0.5f * std::pow(1.0f - cosTheta, 5.0f));
 }
 
 ImageRGBF renderHdr(Renderer& r, const Scene& s) {
@@ -83,9 +84,9 @@ TEST_F(LightFalloff, PointLightFallsOffAsInverseSquare) {
   const float a = radianceAt(img, s, kA), b = radianceAt(img, s, kB);
   // Absolute, at A: (d0/dA)² = 4.36 times what intensity 1 gives at d0.
   EXPECT_NEAR(a, expectedRadiance((d0 / dA) * (d0 / dA), 1.0f), 0.03f * a);
-  // The near/far ratio: (dA/dB)² · cosθ_B (1 − (1 − cosθ_B)^5) = 0.261. Without the falloff it
-  // would be the cosine alone, 0.637.
-  const float expected = (dA / dB) * (dA / dB) * cosB * (1.0f - std::pow(1.0f - cosB, 5.0f));
+  // The near/far ratio: (dA/dB)² · cosθ_B (1 − (1 − cosθ_B)^5 / 2) = 0.262. Without the falloff
+  // it would be the cosine alone, 0.637.
+  const float expected = (dA / dB) * (dA / dB) * cosB * (1.0f - 0.5f * std::pow(1.0f - cosB, 5.0f));
   EXPECT_NEAR(b / a, expected, 0.03f * expected) << "A " << a << " B " << b;
   std::cout << "[          ] point: A " << a << " (expected " << expectedRadiance((d0 / dA) * (d0 / dA), 1.0f)
             << "), B/A " << b / a << " (expected " << expected << ")\n";

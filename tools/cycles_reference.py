@@ -1,7 +1,11 @@
 """Render a marble scene JSON with Blender Cycles, as a reference for `marble compare` (issue 5, item 9).
 
     blender -b --factory-startup -P tools/cycles_reference.py -- SCENE.json OUT.exr \
-        [--samples N] [--width W --height H] [--threads T] [--seed S] [--marble PATH] [--bake-size N] [--flat]
+        [--samples N] [--width W --height H] [--threads T] [--seed S] [--marble PATH] [--bake-size N] [--flat] [--box]
+
+--box: a box pixel filter one pixel wide (default: Blender's Blackman-Harris, 1.5 pixels), so a
+reference rendered at 200x200 equals one at 800x800 averaged in 4x4 blocks (marble compare
+--downsample 4).
 
 What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/render/view_setup.cpp):
 - Mesh: a file path relative to the scene (OBJ only, positions and faces; `builtin:` meshes exist
@@ -70,12 +74,15 @@ def fail(msg):
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     opts = {"samples": 64, "width": None, "height": None, "threads": 2, "seed": 0, "bake_size": 1024,
-            "marble": os.path.join(REPO, "build", "marble"), "flat": False}
+            "marble": os.path.join(REPO, "build", "marble"), "flat": False, "box": False}
     pos = []
     i = 0
     while i < len(argv):
         a = argv[i]
-        if a in ("--samples", "--width", "--height", "--threads", "--seed", "--bake-size", "--marble"):
+        if a == "--box":
+            opts["box"] = True
+            i += 1
+        elif a in ("--samples", "--width", "--height", "--threads", "--seed", "--bake-size", "--marble"):
             if i + 1 >= len(argv):
                 fail(a + " needs a value")
             key = a[2:].replace("-", "_")
@@ -89,7 +96,7 @@ def parse_args():
             i += 1
     if len(pos) != 2:
         fail("usage: blender -b --factory-startup -P tools/cycles_reference.py -- SCENE.json OUT.exr "
-             "[--samples N] [--width W --height H] [--threads T] [--seed S]")
+             "[--samples N] [--width W --height H] [--threads T] [--seed S] [--marble PATH] [--bake-size N] [--flat] [--box]")
     return pos[0], pos[1], opts
 
 
@@ -364,6 +371,13 @@ def main():
     bs.cycles.samples = opts["samples"]
     bs.cycles.seed = opts["seed"]  # a second seed measures the reference's own noise
     bs.cycles.use_denoising = False  # Debian's build has no OpenImageDenoise
+    if opts["box"]:
+        # Each pixel the plain mean over its own square: what rendering 4x larger and averaging
+        # 4x4 blocks (marble compare --downsample 4, marble render --supersample 4) does, so a
+        # small reference rendered directly is compared fairly (the default Blackman-Harris
+        # 1.5-pixel filter would blur it by more than a downsampled one).
+        bs.cycles.pixel_filter_type = "BOX"
+        bs.cycles.filter_width = 1.0
     bs.render.threads_mode = "FIXED"
     bs.render.threads = opts["threads"]
     bs.render.film_transparent = True

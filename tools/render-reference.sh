@@ -1,22 +1,38 @@
 #!/usr/bin/env bash
 # Renders tools/reference-scenes/*.json with Blender Cycles (the reference) and with marble in
-# its `marble` and `paper` modes, then prints `marble compare` for each (docs/quality.md).
+# its `marble` and `paper` modes, then prints `marble compare` for each and writes the
+# side-by-side pictures (Cycles | marble) beside them (docs/quality.md).
 #
-#   tools/render-reference.sh [OUT_DIR] [--samples N] [--skip-cycles]
+#   tools/render-reference.sh [OUT_DIR] [--size N] [--samples N] [--skip-cycles] [--floor]
+#                             [--models DIR] [--only NAME]
 #
+# The method (docs/quality.md, "Method"): Cycles renders N x N directly (default 200) with a box
+# pixel filter one pixel wide (cycles_reference.py --box), which is what an 800x800 render
+# averaged in 4x4 blocks is; marble renders the same N x N with --supersample 4 (800x800 inside,
+# averaged in 4x4 blocks). --floor also renders every scene a second time with another seed and
+# compares the two Cycles renders: the reference's own noise, the best any renderer can score.
 # Needs Blender (installed here with apt when missing and run as root: only this script needs
-# it, so it is not in tools/deps.txt and CI never installs it) and the paper's meshes in
-# ../shared/models beside the repository (the scenes reference ../../../shared/models/*.obj).
-# Each Cycles render is 256x256, 64 samples, CPU, 2 threads: about a minute on two cores.
+# it, so it is not in tools/deps.txt and CI never installs it) and the paper's meshes: the scenes
+# name ../../../shared/models/*.obj (the `shared` folder beside the repository); --models DIR
+# points them elsewhere (copies of the scenes are written into OUT_DIR/scenes).
+# Cycles is CPU-heavy: it runs under `nice -n 19`, 2 threads.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 OUT="$ROOT/out/reference"
-SAMPLES=64
+SIZE=200
+SAMPLES=512
 SKIP_CYCLES=0
+FLOOR=0
+MODELS=""
+ONLY=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
+    --size) SIZE="$2"; shift 2 ;;
     --samples) SAMPLES="$2"; shift 2 ;;
     --skip-cycles) SKIP_CYCLES=1; shift ;;
+    --floor) FLOOR=1; shift ;;
+    --models) MODELS="$(cd "$2" && pwd)"; shift 2 ;;
+    --only) ONLY="$2"; shift 2 ;;
     *) OUT="$1"; shift ;;
   esac
 done
@@ -31,26 +47,45 @@ if [[ $SKIP_CYCLES == 0 ]] && ! command -v blender >/dev/null; then
   fi
 fi
 [[ -x "$MARBLE" ]] || { echo "render-reference: no marble binary at $MARBLE (build first, or set MARBLE=)" >&2; exit 1; }
-mkdir -p "$OUT"
+mkdir -p "$OUT/scenes"
 
-printf '%-14s %-11s %7s %7s %7s %7s\n' scene mode IoU k relRMSE SSIM
-for scene in "$ROOT"/tools/reference-scenes/*.json; do
-  name="$(basename "$scene" .json)"
-  ref="$OUT/$name.cycles.exr"
-  if [[ $SKIP_CYCLES == 0 || ! -f "$ref" ]]; then
-    blender -b --factory-startup -P "$ROOT/tools/cycles_reference.py" -- "$scene" "$ref" --samples "$SAMPLES" \
-      > "$OUT/$name.cycles.log" 2>&1 || { echo "render-reference: Cycles failed on $name, see $OUT/$name.cycles.log" >&2; exit 1; }
-  fi
-  # marble-full: the marble mode with its subsurface blur at full resolution (the default is half).
-  for mode in marble marble-full paper; do
-    args=(--mode "${mode%-full}")
-    [[ $mode == *-full ]] && args+=(--subsurface-resolution full)
-    "$MARBLE" render "$scene" "${args[@]}" -o "$OUT/$name.$mode.png" --hdr "$OUT/$name.$mode.exr" > /dev/null
-    "$MARBLE" compare "$ref" "$OUT/$name.$mode.exr" --json > "$OUT/$name.$mode.json"
-    python3 - "$OUT/$name.$mode.json" "$name" "$mode" <<'PY'
+cycles() {  # scene out.exr seed
+  [[ $SKIP_CYCLES == 1 && -f "$2" ]] && return 0
+  nice -n 19 blender -b --factory-startup -P "$ROOT/tools/cycles_reference.py" -- "$1" "$2" --samples "$SAMPLES" \
+    --width "$SIZE" --height "$SIZE" --box --seed "$3" > "${2%.exr}.log" 2>&1
+  grep -q "cycles_reference: wrote" "${2%.exr}.log" ||
+    { echo "render-reference: Cycles failed on $1, see ${2%.exr}.log" >&2; exit 1; }
+}
+
+row() {  # name what ref.exr test.exr
+  "$MARBLE" compare "$3" "$4" --json --side-by-side "$OUT/$1.$2.sbs.png" > "$OUT/$1.$2.json"
+  python3 - "$OUT/$1.$2.json" "$1" "$2" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
-print("%-14s %-11s %7.4f %7.3f %7.4f %7.4f" % (sys.argv[2], sys.argv[3], j["iou"], j["scale"], j["relative_rmse"], j["ssim"]))
+print("%-14s %-7s %7.4f %7.3f %7.3f %7.4f %7.4f" % (sys.argv[2], sys.argv[3], j["iou"], j["scale"], j["energy_ratio"],
+                                                   j["relative_rmse"], j["ssim"]))
 PY
+}
+
+printf '%-14s %-7s %7s %7s %7s %7s %7s\n' scene vs IoU k energy relRMSE SSIM
+for src in "$ROOT"/tools/reference-scenes/*.json; do
+  name="$(basename "$src" .json)"
+  [[ -n $ONLY && $name != "$ONLY" ]] && continue
+  scene="$OUT/scenes/$name.json"
+  if [[ -n $MODELS ]]; then
+    sed "s#\"\\.\\./\\.\\./\\.\\./shared/models/#\"$MODELS/#" "$src" > "$scene"
+  else
+    sed "s#\"\\.\\./\\.\\./\\.\\./shared/models/#\"$ROOT/../shared/models/#" "$src" > "$scene"
+  fi
+  ref="$OUT/$name.cycles.exr"
+  cycles "$scene" "$ref" 0
+  for mode in marble paper; do
+    "$MARBLE" render "$scene" --mode "$mode" --width "$SIZE" --height "$SIZE" --supersample 4 \
+      -o "$OUT/$name.$mode.png" --hdr "$OUT/$name.$mode.exr" > /dev/null
+    row "$name" "$mode" "$ref" "$OUT/$name.$mode.exr"
   done
+  if [[ $FLOOR == 1 ]]; then
+    cycles "$scene" "$OUT/$name.cycles-seed1.exr" 1
+    row "$name" floor "$ref" "$OUT/$name.cycles-seed1.exr"
+  fi
 done

@@ -97,6 +97,11 @@ int run(int argc, char** argv) {
   compareCmd->add_option("reference", compare.reference, "Reference EXR (e.g. from tools/cycles_reference.py)")->required();
   compareCmd->add_option("test", compare.test, "EXR to judge (e.g. marble render --hdr)")->required();
   compareCmd->add_flag("--json", compare.json, "Print one JSON object");
+  compareCmd->add_option("--downsample", compare.downsample,
+                         "Box-filter both images by this whole factor before comparing (docs/quality.md compares at 4)")
+      ->check(CLI::Range(1, 64));
+  compareCmd->add_option("--side-by-side", compare.sideBySide,
+                         "Write a PNG: reference | test at the best-fit exposure, both through the display transform");
 
   try {
     app.parse(argc, argv);

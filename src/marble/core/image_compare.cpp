@@ -7,6 +7,7 @@
 #include <string>
 
 #include "marble/core/error.h"
+#include "marble/core/image_downsample.h"
 
 namespace marble {
 
@@ -139,7 +140,7 @@ ImageComparison compareImages(const CoveredImage& ref, const CoveredImage& test)
   const size_t n = static_cast<size_t>(w) * h;
   ImageComparison r;
   long long unionCount = 0;
-  double tr = 0.0, tt = 0.0, rr = 0.0;
+  double tr = 0.0, tt = 0.0, rr = 0.0, tSum = 0.0, rSum = 0.0;
   for (size_t i = 0; i < n; ++i) {
     const bool a = ref.coverage[i] != 0, b = test.coverage[i] != 0;
     r.ref_pixels += a;
@@ -152,11 +153,14 @@ ImageComparison compareImages(const CoveredImage& ref, const CoveredImage& test)
       tr += tv * rv;
       tt += tv * tv;
       rr += rv * rv;
+      tSum += tv;
+      rSum += rv;
     }
   }
   r.iou = unionCount > 0 ? static_cast<double>(r.joint_pixels) / static_cast<double>(unionCount) : 1.0;
   // Least squares: d/dk Σ (k t − r)² = 0 gives k = Σ t r / Σ t².
   r.scale = tt > 0.0 ? tr / tt : 1.0;
+  r.energy_ratio = rSum > 0.0 ? tSum / rSum : 1.0;
   // Σ (k t − r)² = k² Σt² − 2k Σtr + Σr², expanded so one pass suffices.
   const double residual = std::max(0.0, r.scale * r.scale * tt - 2.0 * r.scale * tr + rr);
   r.relative_rmse = rr > 0.0 ? std::sqrt(residual / rr) : (residual > 0.0 ? 1.0 : 0.0);
@@ -178,6 +182,40 @@ ImageComparison compareImages(const CoveredImage& ref, const CoveredImage& test)
   }
   r.ssim = unionCount > 0 ? meanSsim(ya, yb, w, h, where) : 1.0;
   return r;
+}
+
+CoveredImage downsampleCovered(const CoveredImage& image, int factor) {
+  if (factor == 1) return image;
+  CoveredImage out;
+  out.image = downsampleLinear(image.image, factor);
+  out.source = image.source;
+  ImageRGBF mask{image.image.width, image.image.height, {}};
+  mask.pixels.reserve(image.coverage.size() * 3);
+  for (uint8_t c : image.coverage) mask.pixels.insert(mask.pixels.end(), 3, c ? 1.0f : 0.0f);
+  const ImageRGBF blocks = downsampleLinear(mask, factor);
+  out.coverage.resize(static_cast<size_t>(blocks.width) * blocks.height);
+  for (size_t i = 0; i < out.coverage.size(); ++i) out.coverage[i] = blocks.pixels[i * 3] > 0.5f ? 1 : 0;
+  return out;
+}
+
+ImageRGBA8 sideBySide(const CoveredImage& ref, const CoveredImage& test, double k) {
+  const int w = ref.image.width, h = ref.image.height;
+  ImageRGBA8 out{2 * w, h, std::vector<uint8_t>(static_cast<size_t>(2 * w) * h * 4, 0)};
+  auto paint = [&](const CoveredImage& img, int x0, float scale) {
+    for (int y = 0; y < std::min(h, img.image.height); ++y)
+      for (int x = 0; x < std::min(w, img.image.width); ++x) {
+        const size_t i = static_cast<size_t>(y) * img.image.width + x;
+        uint8_t* p = &out.pixels[(static_cast<size_t>(y) * 2 * w + x0 + x) * 4];
+        p[3] = 255;
+        if (!img.coverage[i]) continue;
+        const float* c = &img.image.pixels[i * 3];
+        const glm::vec3 e = toneMapForDisplay(scale * glm::vec3(c[0], c[1], c[2]));
+        for (int ch = 0; ch < 3; ++ch) p[ch] = static_cast<uint8_t>(std::lround(e[ch] * 255.0f));
+      }
+  };
+  paint(ref, 0, 1.0f);
+  paint(test, w, static_cast<float>(k));
+  return out;
 }
 
 }  // namespace marble

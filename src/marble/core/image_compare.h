@@ -30,6 +30,9 @@ struct ImageComparison {
   double scale = 1.0;          // k minimising Σ (k·test − ref)² over A ∩ B, all three channels
   double relative_rmse = 0.0;  // sqrt(Σ (k·test − ref)² / Σ ref²) over A ∩ B
   double ssim = 1.0;           // mean SSIM of tone-mapped luma over A ∪ B
+  // Σ test / Σ ref over A ∩ B, all channels: how much more light the test carries overall. Unlike
+  // 1/k it is not ruled by the few brightest pixels (a glint, a firefly).
+  double energy_ratio = 1.0;
   long long ref_pixels = 0, test_pixels = 0, joint_pixels = 0;
 };
 
@@ -49,6 +52,16 @@ CoveredImage readExrWithCoverage(const std::filesystem::path& path);
 
 // The four figures. Sizes must match (throws std::invalid_argument otherwise).
 ImageComparison compareImages(const CoveredImage& ref, const CoveredImage& test);
+
+// The image box-filtered by a whole factor (core/image_downsample.h), its coverage the blocks
+// more than half covered. Comparing at a downsample scores what survives at a smaller size: a
+// path tracer's per-pixel noise averages out, so its own noise floor rises toward 1.
+// Throws std::invalid_argument when the size is not a multiple of the factor.
+CoveredImage downsampleCovered(const CoveredImage& image, int factor);
+
+// Reference | test side by side, each through the display transform (the test at exposure k),
+// background black: the picture docs/quality.md shows for each scene.
+ImageRGBA8 sideBySide(const CoveredImage& ref, const CoveredImage& test, double k);
 
 // The display transform of the `marble` mode (shaders/post.frag.glsl), on one linear colour:
 // Khronos PBR Neutral, then the sRGB transfer function; components in [0, 1].

@@ -40,7 +40,7 @@ ScatteringCoefficients coefficientsFromRadius(glm::vec3 albedo, glm::vec3 radius
 // The dipole's source depths per mm for the material's coefficients (Jensen et al. 2001, eq. 4
 // and below): the real source at z_r = 1 / sigma_t' under the surface, the virtual one at
 // z_v = z_r (1 + 4A/3) above it, A from the same F_dr fit as dipoleReflectance. Used by the
-// `marble` mode's transmission (dipole_transport in shaders/lighting.frag.glsl).
+// `marble` mode's transmission (dipole_profile in shaders/lighting.frag.glsl).
 struct DipoleDepths {
   glm::vec3 zr_mm, zv_mm;
 };

@@ -43,7 +43,6 @@ uniform vec3 u_sigma_tr_mm;      // effective transport coefficient per mm, sqrt
 uniform vec3 u_dipole_zr_mm;     // the dipole's real source depth 1 / sigma_t', per mm (Jensen et al. 2001)
 uniform vec3 u_dipole_zv_mm;     // and its virtual source height z_r (1 + 4A/3)
 uniform float u_ior;
-uniform float u_roughness;
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 // Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):

@@ -1,5 +1,6 @@
 // The marble pattern for the geometry pass (paper §3.1). Include this (no #version here);
-// it declares its uniforms (set by marble::applyPatternUniforms, src/marble/noise/pattern_uniforms.h)
+// it declares its uniforms (set from the
+// material parameters' descriptions by marble::uploadMaterialUniforms, src/marble/render/material_uniforms.h)
 // and provides:
 //   vec3  marble_albedo(vec3 objectPos, vec3 objectNormal)         linear RGB albedo
 //   float marble_pattern_value(vec3 objectPos, vec3 objectNormal)  sine pattern in [0,1], before colour
@@ -22,7 +23,9 @@ const int u_pat_mapping = PAT_MAPPING;
 #else
 uniform int u_pat_mapping;
 #endif
-uniform vec3 u_pat_period;
+uniform float u_pat_x_period;
+uniform float u_pat_y_period;
+uniform float u_pat_z_period;
 uniform float u_pat_turb_power;
 uniform float u_pat_turb_size;
 uniform float u_pat_scale;
@@ -57,7 +60,7 @@ PatParams marble_params() {
   P.resolution = u_pat_resolution;
   P.basis = u_pat_basis;
   P.mapping = u_pat_mapping;
-  P.period = u_pat_period;
+  P.period = vec3(u_pat_x_period, u_pat_y_period, u_pat_z_period);
   P.turbPower = u_pat_turb_power;
   P.turbSize = u_pat_turb_size;
   P.scale = u_pat_scale;

@@ -14,7 +14,7 @@
 #include "marble/gl/headless_context.h"
 #include "marble/gl/shader_library.h"
 #include "marble/noise/marble_pattern.h"
-#include "marble/noise/pattern_uniforms.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/turbulence_texture.h"
 #include "marble/scene/material_io.h"
@@ -126,7 +126,7 @@ protected:
   }
 
   std::vector<glm::vec4> run(const Material& m, GLuint program) {
-    applyPatternUniforms(program, m);
+    uploadMaterialUniforms(program, gl::lookUpUniforms(program, materialUniformNames()), m);
     glUseProgram(program);
     for (GLuint i = 0; i < 3; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, buffers_[i]);
     glDispatchCompute(kPoints / 64, 1, 1);

@@ -1,4 +1,4 @@
-// The panel's slider ranges (src/app/viewer/param_ranges.h) against the preset format: both ends
+// The panel's slider ranges (the parameters' descriptions, src/marble/scene/material_params.cpp) against the preset format: both ends
 // of every slider are values a preset file accepts (so whatever the panel makes can be saved and
 // loaded), and every built-in preset sits inside its sliders. Section resets touch only their own
 // section (src/app/viewer/material_sections.h).
@@ -11,13 +11,19 @@
 #include <sstream>
 
 #include "../src/app/viewer/material_sections.h"
-#include "../src/app/viewer/param_ranges.h"
 #include "marble/scene/material_io.h"
+#include "marble/scene/material_params.h"
 
 namespace marble {
 namespace {
 
-using viewer::kParamRanges;
+// The parameters the panel shows with a slider.
+std::vector<const ParamDesc*> sliders() {
+  std::vector<const ParamDesc*> out;
+  for (const auto& p : materialParams())
+    if (p.slider.hi > p.slider.lo) out.push_back(&p);
+  return out;
+}
 
 std::string num(float v) {
   std::ostringstream s;
@@ -26,10 +32,6 @@ std::string num(float v) {
   return s.str();
 }
 
-bool isColourKey(const std::string& k) {  // per-channel keys, and the vein model's per-family triples
-  return (k.rfind("sigma_", 0) == 0 && k != "oren_nayar_sigma") || k == "subsurface_radius_mm" || k == "vein_spacing" ||
-         k == "vein_width" || k == "vein_density" || k == "vein_normal";
-}
 
 namespace {
 // A preset value as numbers: one for a scalar, three for an RGB triple.
@@ -44,19 +46,21 @@ std::vector<double> numbersOf(const nlohmann::json& v) {
 }  // namespace
 
 TEST(ViewerRanges, BothEndsOfEverySliderAreAcceptedByPresetFiles) {
-  for (const auto& r : kParamRanges) {
-    ASSERT_LT(r.lo, r.hi) << r.key;
+  EXPECT_GE(sliders().size(), 20u);
+  for (const ParamDesc* p : sliders()) {
+    const SliderSpec& r = p->slider;
     if (r.logarithmic) {
-      EXPECT_GT(r.lo, 0.0f) << r.key;
+      EXPECT_GT(r.lo, 0.0f) << p->key;
     }
     for (float v : {r.lo, r.hi}) {
       Material m;
-      const std::string value = isColourKey(r.key) ? num(v) + "," + num(v) + "," + num(v) : num(v);
+      const bool perChannel = p->type == ParamType::Vec3 || p->type == ParamType::Colour;
+      const std::string value = perChannel ? num(v) + "," + num(v) + "," + num(v) : num(v);
       // turb_size may not exceed resolution; the panel clamps it the same way.
-      if (std::string(r.key) == "turb_size") m.resolution = 4096;
-      if (std::string(r.key) == "resolution") m.turb_size = 1;
-      EXPECT_NO_THROW(setMaterialKey(m, r.key, value)) << r.key << " = " << value;
-      EXPECT_NO_THROW(validateMaterial(m, "panel", "")) << r.key << " = " << value;
+      if (std::string(p->key) == "turb_size") m.resolution = 4096;
+      if (std::string(p->key) == "resolution") m.turb_size = 1;
+      EXPECT_NO_THROW(setMaterialKey(m, p->key, value)) << p->key << " = " << value;
+      EXPECT_NO_THROW(validateMaterial(m, "panel", "")) << p->key << " = " << value;
     }
   }
 }
@@ -67,7 +71,7 @@ TEST(ViewerRanges, EveryNumericMaterialKeyHasASlider) {
     const auto& v = j[key];
     const bool numeric = v.is_number() || (v.is_array() && key.find("_color") == std::string::npos);
     if (numeric) {
-      EXPECT_NE(viewer::rangeOf(key).key, nullptr) << key << " has no slider range";
+      EXPECT_GT(findParam(key)->slider.hi, findParam(key)->slider.lo) << key << " has no slider range";
     }
   }
 }
@@ -75,10 +79,10 @@ TEST(ViewerRanges, EveryNumericMaterialKeyHasASlider) {
 TEST(ViewerRanges, BuiltinPresetsSitInsideTheSliders) {
   for (const auto& info : builtinPresets()) {
     const nlohmann::json j = materialToJson(loadPreset(info.name));
-    for (const auto& r : kParamRanges) {
-      for (double d : numbersOf(j[r.key])) {
-        EXPECT_GE(d, r.lo) << info.name << ": " << r.key;
-        EXPECT_LE(d, r.hi) << info.name << ": " << r.key;
+    for (const ParamDesc* p : sliders()) {
+      for (double d : numbersOf(j[p->key])) {
+        EXPECT_GE(d, p->slider.lo) << info.name << ": " << p->key;
+        EXPECT_LE(d, p->slider.hi) << info.name << ": " << p->key;
       }
     }
   }
@@ -94,16 +98,17 @@ int formatPrecision(const char* format) {
 TEST(ViewerRanges, ScatteringCoefficientSlidersAreLogarithmic) {
   // Issue: sigma_a of measured marble is 0.0021 /mm, a dark stone's 0.6; a linear slider over
   // [0, 2] gives the whole of marble's range a few pixels.
-  EXPECT_TRUE(viewer::rangeOf("sigma_a_mm").logarithmic);
-  EXPECT_TRUE(viewer::rangeOf("sigma_s_mm").logarithmic);
+  EXPECT_TRUE(findParam("sigma_a_mm")->slider.logarithmic);
+  EXPECT_TRUE(findParam("sigma_s_mm")->slider.logarithmic);
 }
 
 TEST(ViewerRanges, LogarithmicSlidersReachTheirLowerEnd) {
   // ImGui's logarithmic slider treats |v| < 10^-precision as zero: below that the slider's left
   // end would be stuck at the fudged epsilon, not at lo.
-  for (const auto& r : kParamRanges) {
-    if (!r.logarithmic) continue;
-    EXPECT_GE(r.lo, std::pow(10.0f, -static_cast<float>(formatPrecision(r.format))) * 0.999f) << r.key << " " << r.format;
+  for (const ParamDesc* p : sliders()) {
+    const SliderSpec& r = p->slider;
+    if (!r.logarithmic || p->type == ParamType::Int) continue;  // integer sliders print "%d"
+    EXPECT_GE(r.lo, std::pow(10.0f, -static_cast<float>(formatPrecision(r.format))) * 0.999f) << p->key << " " << r.format;
   }
 }
 
@@ -111,12 +116,13 @@ TEST(ViewerRanges, SlidersShowEveryPresetValueToOnePercent) {
   // What the slider prints must read back as the value: "%.2f" showed sigma_a 0.0021 as "0.00".
   for (const auto& info : builtinPresets()) {
     const nlohmann::json j = materialToJson(loadPreset(info.name));
-    for (const auto& r : kParamRanges) {
-      for (double d : numbersOf(j[r.key])) {
+    for (const ParamDesc* p : sliders()) {
+      if (p->type != ParamType::Float && p->type != ParamType::Vec3) continue;  // whole numbers print "%d"
+      for (double d : numbersOf(j[p->key])) {
         char shown[64];
-        std::snprintf(shown, sizeof shown, r.format, static_cast<float>(d));
+        std::snprintf(shown, sizeof shown, p->slider.format, static_cast<float>(d));
         const double back = std::strtod(shown, nullptr);
-        EXPECT_NEAR(back, d, 0.01 * std::abs(d)) << info.name << ": " << r.key << " = " << d << " shows as " << shown;
+        EXPECT_NEAR(back, d, 0.01 * std::abs(d)) << info.name << ": " << p->key << " = " << d << " shows as " << shown;
       }
     }
   }
@@ -131,19 +137,32 @@ TEST(ViewerSections, ResetTouchesOnlyItsSection) {
   }();
   // Resetting every section gives back the preset's look (name and description are not sections).
   Material all = edited;
-  for (auto s : {viewer::MaterialSection::Pattern, viewer::MaterialSection::Colour, viewer::MaterialSection::Subsurface,
-                 viewer::MaterialSection::Reflectance})
-    viewer::resetSection(all, preset, s);
+  for (const auto& g : paramGroups())
+    if (g.id != ParamGroup::Identity) viewer::resetSection(all, preset, g.id);
   all.name = preset.name;
   all.description = preset.description;
   EXPECT_EQ(materialToJson(all), materialToJson(preset));
-  // One section: its fields change, the others' do not.
-  Material colourOnly = edited;
-  viewer::resetSection(colourOnly, preset, viewer::MaterialSection::Colour);
-  EXPECT_EQ(colourOnly.base_color, preset.base_color);
-  EXPECT_EQ(colourOnly.turb_power, 13.0f);
-  EXPECT_EQ(colourOnly.sigma_t, edited.sigma_t);
-  EXPECT_EQ(colourOnly.k_schlick, edited.k_schlick);
+  // Each section: its own keys take the preset's values, every other key keeps the edited one.
+  const nlohmann::json presetJson = materialToJson(preset), editedJson = materialToJson(edited);
+  for (const auto& g : paramGroups()) {
+    Material one = edited;
+    viewer::resetSection(one, preset, g.id);
+    const nlohmann::json j = materialToJson(one);
+    for (const auto& p : materialParams())
+      EXPECT_EQ(j[p.key], p.group == g.id ? presetJson[p.key] : editedJson[p.key]) << g.title << ": " << p.key;
+  }
+  // Negative control: the two presets differ in every group but the comparison models'.
+  for (const auto& g : paramGroups())
+    if (g.id != ParamGroup::Comparison) {
+      EXPECT_FALSE(g.equal(edited, preset)) << g.title;
+    }
+}
+
+TEST(ViewerSections, UnusedControlsNameTheModesThatUseThem) {
+  const std::string tip = viewer::unusedTooltip(*findParam("k_schlick"), Material{}, RenderMode::Marble);
+  EXPECT_NE(tip.find("'marble' mode does not read this; used by: paper."), std::string::npos) << tip;
+  EXPECT_NE(viewer::unusedTooltip(*findParam("roughness"), Material{}, RenderMode::Paper).find("used by: marble."),
+            std::string::npos);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "cmd_bench.h"
 #include "cmd_export.h"
 #include "cmd_compare.h"
+#include "cmd_params.h"
 #include "cmd_presets.h"
 #include "cmd_render.h"
 #include "cmd_texture.h"
@@ -71,7 +72,7 @@ int run(int argc, char** argv) {
 
   BakeCommandOptions bake;
   auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "
-                                              "base colour, metallic-roughness and thickness PNGs and material.json");
+                                              "base colour, metallic-roughness and thickness PNGs, thickness.exr (mm) and material.json");
   addBakeOptions(*bakeCmd, bake);
   bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
 
@@ -82,6 +83,10 @@ int run(int argc, char** argv) {
   exportCmd->add_option("-o,--output", exportOpts.output, "Output file, model.glb (binary) or model.gltf (one JSON file)")->required();
 
   app.add_subcommand("presets", "List the built-in material presets");
+
+  std::string paramsDoc;
+  auto* paramsCmd = app.add_subcommand("params", "List every material parameter: range, unit, default, the modes that read it");
+  paramsCmd->add_option("--update-doc", paramsDoc, "Rewrite the parameter tables of this Markdown file (docs/materials.md)");
 
   BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "Measure frame and pass times and memory while the camera, light or material changes");
@@ -111,6 +116,7 @@ int run(int argc, char** argv) {
   if (bakeCmd->parsed()) return runBakeCommand(bake);
   if (exportCmd->parsed()) return runExportCommand(exportOpts);
   if (app.got_subcommand("presets")) return runPresetsCommand();
+  if (paramsCmd->parsed()) return runParamsCommand(paramsDoc);
   if (benchCmd->parsed()) return runBenchCommand(bench);
   if (compareCmd->parsed()) return runCompareCommand(compare);
   return 2;

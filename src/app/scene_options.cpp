@@ -8,6 +8,7 @@
 #include "marble/core/error.h"
 #include "marble/gl/program.h"
 #include "marble/scene/material_io.h"
+#include "marble/scene/material_params.h"
 #include "marble/scene/orbit.h"
 #include "marble/scene/showcase.h"
 
@@ -63,6 +64,16 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool withSize) {
 void addAllowOutsideFlag(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--allow-outside", o.allowOutside,
                "Let a glTF read buffer files outside its own folder (refused by default; see docs/reliability.md)");
+}
+
+std::string ignoredKeyWarning(const std::string& key, const Material& m, RenderMode mode) {
+  const ParamDesc* p = findParam(key);
+  if (!p || p->modes == 0) return "";
+  if (!modeReads(*p, mode))
+    return "--set " + key + ": the '" + renderModeName(mode) + "' mode does not read " + key + " (used by: " +
+           modeNames(p->modes) + ")";
+  if (!paramActive(*p, m)) return "--set " + key + ": not used by this material: " + p->inactive;
+  return "";
 }
 
 namespace {
@@ -259,6 +270,15 @@ Scene buildScene(const SceneOptions& o) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--set", kv, "expected key=value");
     setMaterialKey(scene.material, kv.substr(0, eq), kv.substr(eq + 1));
+  }
+  // After every --set: `--set vein_spacing=... --set vein_model=network` uses the spacing.
+  std::vector<std::string> warned;
+  for (const auto& kv : o.sets) {
+    const std::string key = kv.substr(0, kv.find('='));
+    if (std::find(warned.begin(), warned.end(), key) != warned.end()) continue;
+    warned.push_back(key);
+    const std::string warning = ignoredKeyWarning(key, scene.material, scene.render.mode);
+    if (!warning.empty()) std::cerr << "warning: " << printable(warning, kMessageLineLimit) << "\n";
   }
   return scene;
 }

@@ -49,6 +49,10 @@ void addAllowOutsideFlag(CLI::App& cmd, SceneOptions& o);
 
 // Loads the scene and applies the overrides; warnings go to stderr. Throws InputError.
 Scene buildScene(const SceneOptions& o);
+// The warning for `--set key=...` when `mode` does not read `key` (naming the key, the mode and
+// the modes that do) or `m`'s other values leave it unused (a vein-model key with vein_model
+// "paper"); empty when it is used, or for keys no mode reads (name, description).
+std::string ignoredKeyWarning(const std::string& key, const Material& m, RenderMode mode);
 
 // Runs `body`, turning errors into one line on stderr and an exit code:
 // InputError -> 2, EnvironmentError -> 1, anything else -> 1.

@@ -36,10 +36,7 @@ void drawPanel(ViewerState& s) {
              ImGui::GetStyle().ItemSpacing.y * 3;
   ImGui::BeginChild("sections", ImVec2(0, -footer));
   ImGui::PushItemWidth(-ImGui::CalcTextSize("Oren-Nayar sigma ").x);
-  drawPatternSection(s);
-  drawColourSection(s);
-  drawSubsurfaceSection(s);
-  drawReflectanceSection(s);
+  drawMaterialSections(s);
   drawLightSection(s);
   drawEnvironmentSection(s);
   drawViewSection(s);

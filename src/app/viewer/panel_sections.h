@@ -7,10 +7,9 @@ namespace marble::viewer {
 void drawTopBar(ViewerState& s);          // preset, render mode, undo/redo (always visible)
 void drawFilesSection(ViewerState& s);    // save/load material and scene
 void drawMeshSection(ViewerState& s);
-void drawPatternSection(ViewerState& s);
-void drawColourSection(ViewerState& s);
-void drawSubsurfaceSection(ViewerState& s);
-void drawReflectanceSection(ViewerState& s);
+// One section per material parameter group (pattern, colour, the paper's model, comparison
+// models, scattering, gloss), from the parameters' descriptions.
+void drawMaterialSections(ViewerState& s);
 void drawLightSection(ViewerState& s);
 void drawEnvironmentSection(ViewerState& s);  // studio / none / .hdr map, strength, turn
 void drawViewSection(ViewerState& s);     // camera, turntable, background, antialiasing, vsync, screenshot

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "param_ranges.h"
 
 namespace marble::viewer {
 
@@ -14,22 +13,6 @@ bool inputText(const char* label, std::string& value, const char* hint) {
                           : ImGui::InputText(label, buf, sizeof buf, flags);
   value = buf;
   return enter;
-}
-
-bool slider(const char* label, const char* key, float& value, const char* tip) {
-  const ParamRange r = rangeOf(key);
-  const bool changed = ImGui::SliderFloat(label, &value, r.lo, r.hi, r.format,
-                                          r.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-  tooltip(tip);
-  return changed;
-}
-
-bool slider3(const char* label, const char* key, glm::vec3& value, const char* tip) {
-  const ParamRange r = rangeOf(key);
-  const bool changed = ImGui::SliderFloat3(label, &value.x, r.lo, r.hi, r.format,
-                                           r.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-  tooltip(tip);
-  return changed;
 }
 
 bool colour(const char* label, glm::vec3& value, const char* tip) {

@@ -1,6 +1,6 @@
 #pragma once
-// Small ImGui helpers shared by the panel's sections: every parameter gets a tooltip, every
-// slider its range from param_ranges.h, every section a header with a reset button.
+// Small ImGui helpers shared by the panel's sections: every parameter gets a tooltip, the material's
+// widgets come from its parameters' descriptions (panel_material.cpp), every section a header with a reset button.
 #include <imgui.h>
 
 #include <initializer_list>
@@ -17,9 +17,7 @@ inline void tooltip(const char* text) {
 // A text box bound to a std::string; returns true when Enter was pressed in it.
 bool inputText(const char* label, std::string& value, const char* hint = nullptr);
 
-// A slider over the range of material key `key` (param_ranges.h), with a tooltip.
-bool slider(const char* label, const char* key, float& value, const char* tip);
-bool slider3(const char* label, const char* key, glm::vec3& value, const char* tip);
+
 bool colour(const char* label, glm::vec3& value, const char* tip);
 
 template <typename Enum>

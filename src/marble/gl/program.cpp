@@ -104,4 +104,26 @@ GLint Program::location(const char* name) const {
   return loc;
 }
 
+std::vector<UniformSlot> lookUpUniforms(GLuint program, std::span<const char* const> names) {
+  std::vector<UniformSlot> slots(names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (!names[i]) continue;
+    const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, names[i]);
+    if (index == GL_INVALID_INDEX) continue;
+    const GLenum props[] = {GL_LOCATION, GL_TYPE};
+    GLint values[2] = {-1, 0};
+    glGetProgramResourceiv(program, GL_UNIFORM, index, 2, props, 2, nullptr, values);
+    slots[i] = {values[0], static_cast<GLenum>(values[1])};
+  }
+  return slots;
+}
+
+const std::vector<UniformSlot>& Program::uniformTable(std::span<const char* const> names) const {
+  if (tableNames_ != names.data() || table_.size() != names.size()) {
+    table_ = lookUpUniforms(program_.id(), names);
+    tableNames_ = names.data();
+  }
+  return table_;
+}
+
 }  // namespace marble::gl

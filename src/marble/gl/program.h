@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -19,6 +20,14 @@ struct ShaderStageSource {
   GLenum stage;      // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
   std::string file;  // name in shaders/
 };
+
+// A uniform's location (-1 where the program has none) and GL type (GL_FLOAT, GL_FLOAT_VEC3, ...).
+struct UniformSlot {
+  GLint location = -1;
+  GLenum type = 0;
+};
+// Looks each name up in `program` (a null name gets an empty slot).
+std::vector<UniformSlot> lookUpUniforms(GLuint program, std::span<const char* const> names);
 
 class Program {
 public:
@@ -41,8 +50,14 @@ public:
     glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, &m[0][0]);
   }
 
+  // A fixed list of uniforms (the material parameters', render/material_uniforms.h) looked up
+  // once for this program. `names` must be the same array on every call.
+  const std::vector<UniformSlot>& uniformTable(std::span<const char* const> names) const;
+
 private:
   ProgramId program_;
+  mutable const char* const* tableNames_ = nullptr;
+  mutable std::vector<UniformSlot> table_;
   // Looked up by string_view (transparent hash): a name longer than the small-string buffer
   // would otherwise allocate a std::string on every set() of every frame.
   struct NameHash {

@@ -1,8 +1,8 @@
 #include "marble/render/albedo_pass.h"
 
 #include "marble/noise/marble_pattern.h"
-#include "marble/noise/pattern_uniforms.h"
 #include "marble/noise/turbulence_grid.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/render/turbulence_texture.h"
 
 namespace marble {
@@ -28,10 +28,9 @@ uint32_t patternVariantKey(const Material& m, GLuint turbulenceGrid) {
 }
 
 void setPatternUniforms(const gl::Program& p, const glm::mat4& model, const CameraMatrices& camera,
-                        const Material& material, GLuint turbulenceGrid) {
+                        GLuint turbulenceGrid) {
   p.set("u_inv_model_view_proj", glm::inverse(camera.viewProj * model));
   p.set("u_world_to_object_normal", glm::transpose(glm::mat3(model)));
-  applyPatternUniforms(p.id(), material);
   if (turbulenceGrid != 0) glBindTextureUnit(kTurbulenceGridUnit, turbulenceGrid);
 }
 
@@ -76,7 +75,8 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   glBindTextures(0, 2, textures);
   const gl::Program& p = programs_.get(patternVariantKey(material, turbulenceGrid),
                                        [&] { return patternDefines(material, turbulenceGrid); });
-  setPatternUniforms(p, model, camera, material, turbulenceGrid);
+  setPatternUniforms(p, model, camera, turbulenceGrid);
+  uploadMaterialUniforms(p, material);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();
   timer_.end();

@@ -16,10 +16,10 @@ namespace marble {
 // the pattern. `turbulenceGrid`: the grid's texture (render/turbulence_texture.h), 0 for none.
 std::vector<std::string> patternDefines(const Material& m, GLuint turbulenceGrid);
 uint32_t patternVariantKey(const Material& m, GLuint turbulenceGrid);
-// The uniforms of shaders/pattern_at_pixel.glsl (the view) and of marble_pattern.glsl (the
-// material), and the grid bound to its unit.
+// The uniforms of shaders/pattern_at_pixel.glsl (the view), and the grid bound to its unit; the
+// material's (marble_pattern.glsl) come from uploadMaterialUniforms (material_uniforms.h).
 void setPatternUniforms(const gl::Program& program, const glm::mat4& model, const CameraMatrices& camera,
-                        const Material& material, GLuint turbulenceGrid);
+                        GLuint turbulenceGrid);
 
 class AlbedoPass {
 public:

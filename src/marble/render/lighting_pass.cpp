@@ -1,6 +1,7 @@
 #include "marble/render/lighting_pass.h"
 
 #include "marble/render/frame_uniforms.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/scene/material_scattering.h"
 
 namespace marble {
@@ -77,22 +78,13 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
-  p.set("u_sigma_t", m.sigma_t);
-  p.set("u_k_sss", m.k_sss);
-  p.set("u_k_schlick", m.k_schlick);
-  p.set("u_metalness", m.metalness);
-  p.set("u_reflectance_first", m.order == ShadingOrder::ReflectanceFirst ? 1 : 0);
-  p.set("u_schlick_hn", m.schlick_cos == SchlickCosine::HdotN ? 1 : 0);
-  p.set("u_shininess", m.shininess);
-  p.set("u_oren_nayar_sigma", m.oren_nayar_sigma);
+  uploadMaterialUniforms(p, m);
   p.set("u_mm_per_unit", scene.mm_per_unit);
+  // Derived from sigma_a_mm, sigma_s_mm (and ior): not parameters of their own.
   p.set("u_sigma_tr_mm", transportCoefficientMm(m));
   const DipoleDepths dipole = dipoleDepthsMm(m);
   p.set("u_dipole_zr_mm", dipole.zr_mm);
   p.set("u_dipole_zv_mm", dipole.zv_mm);
-  p.set("u_ior", m.ior);
-  p.set("u_roughness", m.roughness);
-  p.set("u_translucency", m.translucency);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

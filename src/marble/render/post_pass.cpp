@@ -6,6 +6,7 @@
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/render/subsurface_blur_pass.h"
 
 namespace marble {
@@ -107,11 +108,10 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   p.set("u_background", settings.background);
   if (marble) {
     setFrameUniforms(p, view.camera, view.light, scene.light, view.lightTexelWorld);
-    p.set("u_ior", scene.material.ior);
-    p.set("u_roughness", scene.material.roughness);
+    uploadMaterialUniforms(p, scene.material);  // the gloss, and the pattern when it evaluates it
     setEnvironmentUniforms(p, settings, view.environment);
     setStudioBlurUniform(p, scene.material.roughness);
-    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, scene.material, view.turbulenceGrid);
+    if (source == DiffuseSource::Pattern) setPatternUniforms(p, view.model, view.camera, view.turbulenceGrid);
     setSubsurfaceUniforms(p, view.camera, scene, height);
   }
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

@@ -5,6 +5,7 @@
 
 #include "marble/mesh/mesh_optimize.h"
 #include "marble/render/mesh_detail.h"
+#include "marble/scene/material_params.h"
 
 namespace marble {
 
@@ -25,21 +26,11 @@ struct Renderer::Passes {
 
 void Renderer::invalidateStage() { passes_->stage.invalidateBottomMap(); }
 
-bool samePattern(const Material& a, const Material& b) {
-  return a.seed == b.seed && a.resolution == b.resolution && a.basis == b.basis && a.mapping == b.mapping &&
-         a.x_period == b.x_period && a.y_period == b.y_period && a.z_period == b.z_period &&
-         a.turb_power == b.turb_power && a.turb_size == b.turb_size && a.pattern_scale == b.pattern_scale &&
-         a.base_color == b.base_color && a.vein_color == b.vein_color && a.vein2_color == b.vein2_color &&
-         a.vein_sharpness == b.vein_sharpness && a.vein2_amount == b.vein2_amount &&
-         // vein model (issue 16)
-         a.vein_model == b.vein_model && a.vein_spacing == b.vein_spacing && a.vein_width == b.vein_width &&
-         a.vein_density == b.vein_density && a.vein_normal == b.vein_normal && a.vein_stretch == b.vein_stretch &&
-         a.vein_warp == b.vein_warp && a.vein_pinch == b.vein_pinch && a.vein_softness == b.vein_softness &&
-         a.vein3_color == b.vein3_color && a.cloud_color == b.cloud_color && a.cloud_amount == b.cloud_amount &&
-         a.grain_amount == b.grain_amount && a.fragment_tint == b.fragment_tint;
-}
-
 namespace {
+// What the pattern's evaluation reads (the albedo pass, or `marble`'s post pass evaluating it):
+// the pattern, colour and vein-model groups.
+const GroupSet kAlbedoGroups = groupsRead(kAlbedoPassBit, RenderMode::Albedo);
+
 bool sameView(const Scene& a, const Scene& b) {
   return a.light.type == b.light.type && a.light.position == b.light.position && a.light.color == b.light.color &&
          a.light.intensity == b.light.intensity && a.camera.position == b.camera.position &&
@@ -50,18 +41,14 @@ bool sameView(const Scene& a, const Scene& b) {
          a.render.subsurface_resolution == b.render.subsurface_resolution &&
          a.render.environment_rotation_deg == b.render.environment_rotation_deg;
 }
-// What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer
-// and the light's map. For `marble` that is the light entering the stone: the scattering
-// coefficients, the index of refraction (the energy split), the translucency and the scale --
-// not the albedo or the gloss, which the post pass applies. The other modes read the whole
-// material.
+// What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer,
+// the light's map and, outside `marble`, the albedo texture: the groups of the parameters they
+// read in this mode (material_params.cpp says which). For `marble` that is the light entering
+// the stone (the scattering group) -- not the albedo or the gloss, which the post pass applies.
 bool sameLightingInputs(const Scene& a, const Scene& b) {
   if (!sameView(a, b)) return false;
-  if (a.render.mode != RenderMode::Marble) return a.material == b.material;
-  const Material& m = a.material;
-  const Material& n = b.material;
-  return a.mm_per_unit == b.mm_per_unit && m.sigma_a_mm == n.sigma_a_mm && m.sigma_s_mm == n.sigma_s_mm &&
-         m.ior == n.ior && m.translucency == n.translucency;
+  return a.mm_per_unit == b.mm_per_unit &&
+         sameGroups(a.material, b.material, groupsRead(kLightingPassBit | kBlurPassBit, a.render.mode));
 }
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
@@ -224,7 +211,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   const ScreenRect rect =
       projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
   const bool marble = scene.render.mode == RenderMode::Marble;
-  if (viewMoved || !samePattern(scene.material, lastMaterial_)) albedoValid_ = false;
+  if (viewMoved || !sameGroups(scene.material, lastMaterial_, kAlbedoGroups)) albedoValid_ = false;
   passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
   // `marble` evaluates the pattern in its post pass (DiffuseSource::Pattern); the other modes
   // read the albedo in the lighting pass.

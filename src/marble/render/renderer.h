@@ -214,7 +214,4 @@ private:
   std::optional<OffscreenTarget> displayImage_;
 };
 
-// Whether two materials give the same G-buffer albedo (pattern and colour fields).
-bool samePattern(const Material& a, const Material& b);
-
 }  // namespace marble

@@ -1,16 +1,20 @@
 #pragma once
 // The marble material: the vein pattern (paper §3.1), its colours, and how light meets it
-// (paper §3.2 subsurface, §3.3 Fresnel-Schlick). Every field has a flat key in preset
-// files and on the command line (`--set key=value`); the keys are listed in
-// docs/materials.md and by materialKeys().
+// (paper §3.2 subsurface, §3.3 Fresnel-Schlick; the physically based `marble` mode's
+// scattering and gloss). The fields are grouped by what consumes them, one struct per group,
+// so a pass's cache compares exactly the groups it reads (Material::pattern() == ...).
+// Every field is described once, in src/marble/scene/material_params.cpp (key, range, unit,
+// tooltip, the modes and passes that read it, its shader uniform); JSON, `--set`, the panel,
+// the uniforms and docs/materials.md's tables all come from that description.
 #include <cstdint>
 #include <string>
-#include <vector>
 
 #include <glm/glm.hpp>
 
 namespace marble {
 
+// Enum values are also the GLSL's (PAT_BASIS_*, PAT_MAP_*, the lighting shader's order and
+// cosine switches): the uniforms carry the enum's integer. Names: material_params.cpp.
 enum class NoiseBasis { Value, Perlin };          // key "basis": "value" (the paper's) | "perlin"
 enum class PatternMapping { Planar, Triplanar, Solid };  // key "mapping": "planar" | "triplanar" | "solid"
 enum class ShadingOrder { SubsurfaceFirst, ReflectanceFirst };  // key "order": "sss-first" | "schlick-first"
@@ -22,81 +26,111 @@ enum class VeinModel { Paper, Network, Breccia };
 // sigma_s_mm) or "radius" (Blender's Principled BSDF: base_color, subsurface_radius_mm, ior).
 enum class ScatteringForm { Coefficients, Radius };
 
-struct Material {
+// The vein pattern (paper §3.1): read wherever the marble's colour is evaluated.
+struct PatternParams {
+  uint32_t seed = 1;
+  int resolution = 256;
+  NoiseBasis basis = NoiseBasis::Value;
+  PatternMapping mapping = PatternMapping::Solid;
+  float x_period = 5.0f;
+  float y_period = 10.0f;
+  float z_period = 0.0f;
+  float turb_power = 5.0f;
+  float turb_size = 32.0f;
+  float pattern_scale = 1.0f;
+  bool operator==(const PatternParams&) const = default;
+};
+
+// The colour ramp over the pattern: read with it.
+struct ColourParams {
+  glm::vec3 base_color{0.93f, 0.89f, 0.80f};
+  glm::vec3 vein_color{0.55f, 0.38f, 0.16f};
+  glm::vec3 vein2_color{0.75f, 0.62f, 0.42f};
+  float vein_sharpness = 1.0f;
+  float vein2_amount = 0.0f;
+  bool operator==(const ColourParams&) const = default;
+};
+
+// The vein model (issue 16; docs/materials.md "Vein model"): read with the pattern when
+// vein_model != paper, which always uses the solid mapping; the turbulence above warps the
+// veins. Per-family triples are (dominant, secondary, hairline); colours are vein_color,
+// vein2_color, vein3_color.
+struct VeinModelParams {
+  VeinModel vein_model = VeinModel::Paper;
+  glm::vec3 vein_spacing{0.9f, 0.35f, 0.12f};
+  glm::vec3 vein_width{0.03f, 0.012f, 0.004f};
+  glm::vec3 vein_density{0.7f, 0.5f, 0.4f};
+  glm::vec3 vein_normal{-0.5f, 1.0f, 0.2f};  // normalized on use
+  float vein_stretch = 2.5f;
+  float vein_warp = 0.25f;
+  float vein_pinch = 0.7f;
+  float vein_softness = 0.4f;
+  glm::vec3 vein3_color{0.6f, 0.6f, 0.62f};
+  glm::vec3 cloud_color{0.7f, 0.71f, 0.73f};
+  float cloud_amount = 0.5f;
+  float grain_amount = 0.06f;
+  float fragment_tint = 0.0f;
+  bool operator==(const VeinModelParams&) const = default;
+};
+
+// The paper's models (§3.2 subsurface, §3.3 Schlick, §4 their order): the `paper`,
+// `subsurface` and `reflectance` modes' lighting pass.
+struct PaperModelParams {
+  glm::vec3 sigma_t{0.6f, 0.9f, 1.3f};
+  float k_sss = 1.0f;
+  float k_schlick = 0.5f;
+  float metalness = 0.0f;
+  ShadingOrder order = ShadingOrder::SubsurfaceFirst;
+  SchlickCosine schlick_cos = SchlickCosine::HdotV;
+  bool operator==(const PaperModelParams&) const = default;
+};
+
+// The comparison models' lighting pass (`phong`, `oren-nayar`).
+struct ComparisonParams {
+  float shininess = 32.0f;
+  float oren_nayar_sigma = 0.3f;
+  bool operator==(const ComparisonParams&) const = default;
+};
+
+// Light entering and crossing the stone (`marble` mode: its lighting pass and blur).
+// Jensen et al. 2001, "A Practical Model for Subsurface Light Transport", Table 1 (marble), per mm.
+// The same stone in Blender's terms (issue 15; src/marble/scene/material_scattering.h): in the
+// radius form base_color is the subsurface albedo and subsurface_radius_mm the mean free path per
+// channel in mm, exactly Cycles' RANDOM_WALK Subsurface Radius (mm_per_unit turns it into scene
+// units); sigma_a_mm and sigma_s_mm are then derived by Cycles' own conversion
+// (resolveScattering). Giving subsurface_radius_mm selects the radius form, giving sigma_a_mm or
+// sigma_s_mm the coefficient form. Default radius: Jensen's marble above, as Cycles would need it
+// for albedo 0.83, 0.79, 0.75 at ior 1.55 (the same extinction sigma_a + sigma_s).
+struct ScatteringParams {
+  glm::vec3 sigma_a_mm{0.0021f, 0.0041f, 0.0071f};
+  glm::vec3 sigma_s_mm{2.19f, 2.62f, 3.00f};
+  float ior = 1.55f;  // also the reflection's F0 in the post pass
+  float translucency = 1.0f;
+  ScatteringForm scattering = ScatteringForm::Coefficients;
+  glm::vec3 subsurface_radius_mm{9.73f, 6.3f, 4.1f};
+  bool operator==(const ScatteringParams&) const = default;
+};
+
+// What the surface reflects (`marble` mode: the post pass alone).
+struct GlossParams {
+  float roughness = 0.12f;
+  bool operator==(const GlossParams&) const = default;
+};
+
+struct Material : PatternParams, ColourParams, VeinModelParams, PaperModelParams, ComparisonParams, ScatteringParams,
+                  GlossParams {
   std::string name = "paper";
   std::string description = "The paper's default: cream stone with ochre veins";
 
-  // --- pattern (paper §3.1) ---
-  uint32_t seed = 1;             // "seed": lattice of white noise
-  int resolution = 256;          // "resolution": W = H, texels of the paper's texture / lattice cells per 2 units
-  NoiseBasis basis = NoiseBasis::Value;  // "basis"
-  PatternMapping mapping = PatternMapping::Solid;  // "mapping"
-  float x_period = 5.0f;         // "x_period": vein repetitions along x over the texture
-  float y_period = 10.0f;        // "y_period": along y (the texture's t)
-  float z_period = 0.0f;         // "z_period": along z (solid mapping only)
-  float turb_power = 5.0f;       // "turb_power": 0 gives a plain sine
-  float turb_size = 32.0f;       // "turb_size": first octave size in texels, halves each octave
-  float pattern_scale = 1.0f;    // "pattern_scale": object units per texture width / 2
-
-  // --- colour ---
-  glm::vec3 base_color{0.93f, 0.89f, 0.80f};   // "base_color": linear RGB of the stone
-  glm::vec3 vein_color{0.55f, 0.38f, 0.16f};   // "vein_color": main veins
-  glm::vec3 vein2_color{0.75f, 0.62f, 0.42f};  // "vein2_color": secondary veins (ramp middle)
-  float vein_sharpness = 1.0f;   // "vein_sharpness": exponent on the sine (1 = the paper)
-  float vein2_amount = 0.0f;     // "vein2_amount": 0 = two-colour ramp (the paper)
-
-  // --- vein model (issue 16; docs/materials.md "Vein model"). Read when vein_model != paper,
-  // which always uses the solid mapping; the turbulence above warps the veins. Per-family
-  // triples are (dominant, secondary, hairline); colours are vein_color, vein2_color, vein3_color.
-  VeinModel vein_model = VeinModel::Paper;          // "vein_model"
-  glm::vec3 vein_spacing{0.9f, 0.35f, 0.12f};      // "vein_spacing": mean distance between cracks, object units
-  glm::vec3 vein_width{0.03f, 0.012f, 0.004f};     // "vein_width": full width of a vein, object units
-  glm::vec3 vein_density{0.7f, 0.5f, 0.4f};        // "vein_density": fraction of cracks filled, [0,1]
-  glm::vec3 vein_normal{-0.5f, 1.0f, 0.2f};     // "vein_normal": normal of the planes the dominant veins lie in (normalized on use)
-  float vein_stretch = 2.5f;     // "vein_stretch": dominant cells this many times thinner across those planes
-  float vein_warp = 0.25f;       // "vein_warp": how far the turbulence bends the cracks, object units
-  float vein_pinch = 0.7f;       // "vein_pinch": width swell/pinch along a vein; 1 lets veins fade out
-  float vein_softness = 0.4f;    // "vein_softness": edge blur relative to the width
-  glm::vec3 vein3_color{0.6f, 0.6f, 0.62f};   // "vein3_color": hairline veins
-  glm::vec3 cloud_color{0.7f, 0.71f, 0.73f};  // "cloud_color": the ground's clouds (nuvolato) and fragment tints
-  float cloud_amount = 0.5f;     // "cloud_amount": [0,1]
-  float grain_amount = 0.06f;    // "grain_amount": [0,1] contrast of the calcite grain
-  float fragment_tint = 0.0f;    // "fragment_tint": breccia, [0,1] how much fragments differ in colour
-
-  // --- subsurface (paper §3.2, GPU Gems 1 ch. 16) ---
-  glm::vec3 sigma_t{0.6f, 0.9f, 1.3f};  // "sigma_t": extinction per scene unit, per channel
-  float k_sss = 1.0f;            // "k_sss": strength of the subsurface term
-
-  // --- reflectance (paper §3.3) ---
-  float k_schlick = 0.5f;        // "k_schlick": opacity of the Schlick reflectance
-  float metalness = 0.0f;        // "metalness": F0 = mix(0.04, diffuse, metalness)
-  ShadingOrder order = ShadingOrder::SubsurfaceFirst;  // "order"
-  SchlickCosine schlick_cos = SchlickCosine::HdotV;    // "schlick_cos"
-
-  // --- comparison models ---
-  float shininess = 32.0f;       // "shininess": Phong exponent
-  float oren_nayar_sigma = 0.3f; // "oren_nayar_sigma": roughness (radians) of Oren-Nayar
-
-  // --- physically based marble (render mode `marble`, issue 5) ---
-  // Jensen et al. 2001, "A Practical Model for Subsurface Light Transport", Table 1 (marble), per mm.
-  glm::vec3 sigma_a_mm{0.0021f, 0.0041f, 0.0071f};  // "sigma_a_mm": absorption coefficient, 1/mm
-  glm::vec3 sigma_s_mm{2.19f, 2.62f, 3.00f};        // "sigma_s_mm": reduced scattering coefficient, 1/mm
-  float ior = 1.55f;             // "ior": calcite is 1.486-1.658 (F0 about 0.04-0.06)
-  float roughness = 0.12f;       // "roughness": perceptual; GGX alpha = roughness^2. Polished 0.05-0.15, honed 0.4-0.6
-  float translucency = 1.0f;     // "translucency": scales light transmitted through thin parts (1 = physical)
-
-  // --- the same stone in Blender's terms (issue 15; src/marble/scene/material_scattering.h) ---
-  // In the radius form base_color is the subsurface albedo and subsurface_radius_mm the mean free
-  // path per channel in mm, exactly Cycles' RANDOM_WALK Subsurface Radius (mm_per_unit turns it
-  // into scene units); sigma_a_mm and sigma_s_mm are then derived by Cycles' own conversion
-  // (resolveScattering). Giving subsurface_radius_mm selects the radius form, giving sigma_a_mm or
-  // sigma_s_mm the coefficient form. Default radius: Jensen's marble above, as Cycles would need
-  // it for albedo 0.83, 0.79, 0.75 at ior 1.55 (the same extinction sigma_a + sigma_s).
-  ScatteringForm scattering = ScatteringForm::Coefficients;  // "scattering"
-  glm::vec3 subsurface_radius_mm{9.73f, 6.3f, 4.1f};        // "subsurface_radius_mm", mm
-
   bool operator==(const Material&) const = default;
 };
+
+// The direction the dominant veins' planes face (vein_normal normalized; +x for a zero vector,
+// which files and `--set` refuse): what the pattern's evaluation reads on the CPU and the GPU.
+inline glm::vec3 veinDirection(const Material& m) {
+  const float len = glm::length(m.vein_normal);
+  return len > 0.0f ? m.vein_normal / len : glm::vec3(1.0f, 0.0f, 0.0f);
+}
 
 // The effective transport coefficient sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s')) per channel,
 // per mm (Jensen et al. 2001, eq. 5): light diffusing through the stone falls off as exp(-sigma_tr s).

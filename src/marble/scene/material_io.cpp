@@ -13,6 +13,7 @@
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
 #include "marble/scene/embedded_presets.h"
+#include "marble/scene/material_params.h"
 #include "marble/scene/material_scattering.h"
 
 namespace marble {
@@ -40,30 +41,6 @@ json floatJson(float f) {
     if (static_cast<float>(d) == f) return d;
   }
   return static_cast<double>(f);
-}
-
-struct EnumName {
-  int value;
-  const char* name;
-};
-const EnumName kBasis[] = {{static_cast<int>(NoiseBasis::Value), "value"}, {static_cast<int>(NoiseBasis::Perlin), "perlin"}};
-const EnumName kMapping[] = {{static_cast<int>(PatternMapping::Planar), "planar"},
-                             {static_cast<int>(PatternMapping::Triplanar), "triplanar"},
-                             {static_cast<int>(PatternMapping::Solid), "solid"}};
-const EnumName kOrder[] = {{static_cast<int>(ShadingOrder::SubsurfaceFirst), "sss-first"},
-                           {static_cast<int>(ShadingOrder::ReflectanceFirst), "schlick-first"}};
-const EnumName kVeinModel[] = {{static_cast<int>(VeinModel::Paper), "paper"},
-                               {static_cast<int>(VeinModel::Network), "network"},
-                               {static_cast<int>(VeinModel::Breccia), "breccia"}};
-const EnumName kCos[] = {{static_cast<int>(SchlickCosine::HdotV), "hv"}, {static_cast<int>(SchlickCosine::HdotN), "hn"}};
-const EnumName kScattering[] = {{static_cast<int>(ScatteringForm::Coefficients), "coefficients"},
-                                {static_cast<int>(ScatteringForm::Radius), "radius"}};
-
-template <size_t N>
-const char* enumName(const EnumName (&table)[N], int value) {
-  for (const auto& e : table)
-    if (e.value == value) return e.name;
-  return table[0].name;
 }
 
 // Applies one key; returns false for an unknown key. Throws InputError(file, place, ...).
@@ -119,8 +96,7 @@ public:
     return v_.get<std::string>();
   }
 
-  template <size_t N>
-  int choice(const EnumName (&table)[N]) const {
+  int choice(std::span<const EnumChoice> table) const {
     std::string names;
     for (const auto& e : table) names += std::string(names.empty() ? "" : ", ") + "\"" + e.name + "\"";
     if (!v_.is_string()) fail("expected one of " + names + ", got " + describe(v_));
@@ -137,70 +113,48 @@ private:
 };
 
 const std::vector<std::string>& keyList() {
-  static const std::vector<std::string> keys = {
-      "name",           "description",  "seed",          "resolution", "basis",       "mapping",
-      "x_period",       "y_period",     "z_period",      "turb_power", "turb_size",   "pattern_scale",
-      "base_color",     "vein_color",   "vein2_color",   "vein_sharpness", "vein2_amount", "sigma_t",
-      "k_sss",          "k_schlick",    "metalness",     "order",      "schlick_cos", "shininess",
-      "oren_nayar_sigma", "sigma_a_mm", "sigma_s_mm", "ior", "roughness", "translucency",
-      // vein model (issue 16)
-      "vein_model", "vein_spacing", "vein_width", "vein_density", "vein_normal", "vein_stretch", "vein_warp",
-      "vein_pinch", "vein_softness", "vein3_color", "cloud_color", "cloud_amount", "grain_amount", "fragment_tint",
-      // Principled form (issue 15)
-      "subsurface_radius_mm", "scattering"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const auto& p : materialParams()) k.emplace_back(p.key);
+    return k;
+  }();
   return keys;
 }
 
+// The value of `v` for parameter `p`, checked against its type and range.
+ParamValue readValue(const ParamDesc& p, const KeySetter& s) {
+  switch (p.type) {
+    case ParamType::Text: return s.string();
+    case ParamType::UInt:
+    case ParamType::Int: return s.integer(static_cast<long long>(p.lo), static_cast<long long>(p.hi));
+    case ParamType::Float: return s.number(p.lo, p.hi);
+    case ParamType::Vec3:
+    case ParamType::Colour: return s.color(p.lo, p.hi);
+    case ParamType::Choice: return static_cast<long long>(s.choice(p.choices));
+  }
+  return {};
+}
+
+json toJson(const ParamDesc& p, const ParamValue& v) {
+  switch (p.type) {
+    case ParamType::Text: return std::get<std::string>(v);
+    case ParamType::UInt:
+    case ParamType::Int: return std::get<long long>(v);
+    case ParamType::Float: return floatJson(std::get<float>(v));
+    case ParamType::Vec3:
+    case ParamType::Colour: {
+      const glm::vec3 c = std::get<glm::vec3>(v);
+      return json::array({floatJson(c.x), floatJson(c.y), floatJson(c.z)});
+    }
+    case ParamType::Choice: return choiceName(p, std::get<long long>(v));
+  }
+  return nullptr;
+}
+
 bool applyKey(Material& m, const std::string& key, const json& v, const std::string& file, const std::string& place) {
-  const KeySetter s(v, file, place);
-  if (key == "name") m.name = s.string();
-  else if (key == "description") m.description = s.string();
-  else if (key == "seed") m.seed = static_cast<uint32_t>(s.integer(0, 4294967295LL));
-  else if (key == "resolution") m.resolution = static_cast<int>(s.integer(8, 4096));
-  else if (key == "basis") m.basis = static_cast<NoiseBasis>(s.choice(kBasis));
-  else if (key == "mapping") m.mapping = static_cast<PatternMapping>(s.choice(kMapping));
-  else if (key == "x_period") m.x_period = s.number(-1000, 1000);
-  else if (key == "y_period") m.y_period = s.number(-1000, 1000);
-  else if (key == "z_period") m.z_period = s.number(-1000, 1000);
-  else if (key == "turb_power") m.turb_power = s.number(0, 1000);
-  else if (key == "turb_size") m.turb_size = s.number(1, 4096);
-  else if (key == "pattern_scale") m.pattern_scale = s.number(0.001, 1000);
-  else if (key == "base_color") m.base_color = s.color(0, 1);
-  else if (key == "vein_color") m.vein_color = s.color(0, 1);
-  else if (key == "vein2_color") m.vein2_color = s.color(0, 1);
-  else if (key == "vein_sharpness") m.vein_sharpness = s.number(0.05, 20);
-  else if (key == "vein2_amount") m.vein2_amount = s.number(0, 1);
-  else if (key == "sigma_t") m.sigma_t = s.color(0, 1000);
-  else if (key == "k_sss") m.k_sss = s.number(0, 1);
-  else if (key == "k_schlick") m.k_schlick = s.number(0, 1);
-  else if (key == "metalness") m.metalness = s.number(0, 1);
-  else if (key == "order") m.order = static_cast<ShadingOrder>(s.choice(kOrder));
-  else if (key == "schlick_cos") m.schlick_cos = static_cast<SchlickCosine>(s.choice(kCos));
-  else if (key == "shininess") m.shininess = s.number(0, 10000);
-  else if (key == "oren_nayar_sigma") m.oren_nayar_sigma = s.number(0, 1.5708);
-  else if (key == "sigma_a_mm") m.sigma_a_mm = s.color(0, 1000);
-  else if (key == "sigma_s_mm") m.sigma_s_mm = s.color(0, 10000);
-  else if (key == "ior") m.ior = s.number(1.0, 3.0);
-  else if (key == "roughness") m.roughness = s.number(0.0, 1.0);
-  else if (key == "translucency") m.translucency = s.number(0.0, 10.0);
-  // vein model (issue 16)
-  else if (key == "vein_model") m.vein_model = static_cast<VeinModel>(s.choice(kVeinModel));
-  else if (key == "vein_spacing") m.vein_spacing = s.color(0.005, 100);
-  else if (key == "vein_width") m.vein_width = s.color(0, 10);
-  else if (key == "vein_density") m.vein_density = s.color(0, 1);
-  else if (key == "vein_normal") m.vein_normal = s.color(-1, 1);
-  else if (key == "vein_stretch") m.vein_stretch = s.number(1, 20);
-  else if (key == "vein_warp") m.vein_warp = s.number(0, 10);
-  else if (key == "vein_pinch") m.vein_pinch = s.number(0, 1);
-  else if (key == "vein_softness") m.vein_softness = s.number(0, 1);
-  else if (key == "vein3_color") m.vein3_color = s.color(0, 1);
-  else if (key == "cloud_color") m.cloud_color = s.color(0, 1);
-  else if (key == "cloud_amount") m.cloud_amount = s.number(0, 1);
-  else if (key == "grain_amount") m.grain_amount = s.number(0, 1);
-  else if (key == "fragment_tint") m.fragment_tint = s.number(0, 1);
-  else if (key == "scattering") m.scattering = static_cast<ScatteringForm>(s.choice(kScattering));
-  else if (key == "subsurface_radius_mm") m.subsurface_radius_mm = s.color(1e-3, 1e4);
-  else return false;
+  const ParamDesc* p = findParam(key);
+  if (!p) return false;
+  p->set(m, readValue(*p, KeySetter(v, file, place)));
   return true;
 }
 
@@ -324,9 +278,18 @@ Material loadPreset(const std::string& nameOrPath, std::vector<std::string>* war
 }
 
 void validateMaterial(const Material& m, const std::string& file, const std::string& placePrefix) {
-  if (m.turb_size > static_cast<float>(m.resolution))
-    throw InputError(file, placePrefix + "turb_size",
-                     "expected a number in [1, resolution = " + std::to_string(m.resolution) + "], got " + fmt(m.turb_size));
+  for (const auto& p : materialParams()) {
+    if (!p.atMost) continue;
+    const ParamDesc& bound = *findParam(p.atMost);
+    const auto toDouble = [](const ParamValue& v) {
+      return std::holds_alternative<float>(v) ? static_cast<double>(std::get<float>(v))
+                                              : static_cast<double>(std::get<long long>(v));
+    };
+    const double value = toDouble(p.get(m)), hi = toDouble(bound.get(m));
+    if (value > hi)
+      throw InputError(file, placePrefix + p.key,
+                       "expected a number in [" + fmt(p.lo) + ", " + p.atMost + " = " + fmt(hi) + "], got " + fmt(value));
+  }
   if (m.vein_normal == glm::vec3(0.0f))
     throw InputError(file, placePrefix + "vein_normal", "expected a nonzero direction, got [0, 0, 0]");
 }
@@ -385,7 +348,7 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
     return false;
   };
   json v;
-  if (key == "name" || key == "description") {
+  if (findParam(key)->type == ParamType::Text) {
     v = value;
   } else if (value.find(',') != std::string::npos) {
     v = json::array();
@@ -415,54 +378,7 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
 
 json materialToJson(const Material& m) {
   json j = json::object();
-  j["name"] = m.name;
-  j["description"] = m.description;
-  j["seed"] = m.seed;
-  j["resolution"] = m.resolution;
-  j["basis"] = enumName(kBasis, static_cast<int>(m.basis));
-  j["mapping"] = enumName(kMapping, static_cast<int>(m.mapping));
-  j["x_period"] = floatJson(m.x_period);
-  j["y_period"] = floatJson(m.y_period);
-  j["z_period"] = floatJson(m.z_period);
-  j["turb_power"] = floatJson(m.turb_power);
-  j["turb_size"] = floatJson(m.turb_size);
-  j["pattern_scale"] = floatJson(m.pattern_scale);
-  auto col = [](glm::vec3 c) { return json::array({floatJson(c.x), floatJson(c.y), floatJson(c.z)}); };
-  j["base_color"] = col(m.base_color);
-  j["vein_color"] = col(m.vein_color);
-  j["vein2_color"] = col(m.vein2_color);
-  j["vein_sharpness"] = floatJson(m.vein_sharpness);
-  j["vein2_amount"] = floatJson(m.vein2_amount);
-  j["sigma_t"] = col(m.sigma_t);
-  j["k_sss"] = floatJson(m.k_sss);
-  j["k_schlick"] = floatJson(m.k_schlick);
-  j["metalness"] = floatJson(m.metalness);
-  j["order"] = enumName(kOrder, static_cast<int>(m.order));
-  j["schlick_cos"] = enumName(kCos, static_cast<int>(m.schlick_cos));
-  j["shininess"] = floatJson(m.shininess);
-  j["oren_nayar_sigma"] = floatJson(m.oren_nayar_sigma);
-  j["sigma_a_mm"] = col(m.sigma_a_mm);
-  j["sigma_s_mm"] = col(m.sigma_s_mm);
-  j["ior"] = floatJson(m.ior);
-  j["roughness"] = floatJson(m.roughness);
-  j["translucency"] = floatJson(m.translucency);
-  // vein model (issue 16)
-  j["vein_model"] = enumName(kVeinModel, static_cast<int>(m.vein_model));
-  j["vein_spacing"] = col(m.vein_spacing);
-  j["vein_width"] = col(m.vein_width);
-  j["vein_density"] = col(m.vein_density);
-  j["vein_normal"] = col(m.vein_normal);
-  j["vein_stretch"] = floatJson(m.vein_stretch);
-  j["vein_warp"] = floatJson(m.vein_warp);
-  j["vein_pinch"] = floatJson(m.vein_pinch);
-  j["vein_softness"] = floatJson(m.vein_softness);
-  j["vein3_color"] = col(m.vein3_color);
-  j["cloud_color"] = col(m.cloud_color);
-  j["cloud_amount"] = floatJson(m.cloud_amount);
-  j["grain_amount"] = floatJson(m.grain_amount);
-  j["fragment_tint"] = floatJson(m.fragment_tint);
-  j["scattering"] = enumName(kScattering, static_cast<int>(m.scattering));
-  j["subsurface_radius_mm"] = col(m.subsurface_radius_mm);
+  for (const auto& p : materialParams()) j[p.key] = toJson(p, p.get(m));
   return j;
 }
 

@@ -71,6 +71,12 @@ TEST(VertexNormalsEquivalence, SoupsAndFansEqualTheSortedReference) {
     for (float crease : {kDefaultCreaseAngleDeg, 10.0f, kNoCreaseDeg})
       expectSameAsReference(latticeSoup(seed, 3000, 20000), crease, "lattice soup");
   for (float crease : {kDefaultCreaseAngleDeg, 80.0f, kNoCreaseDeg}) expectSameAsReference(foldedFan(), crease, "folded fan");
+  // Only degenerate triangles: no edge is used at all (found by fuzz_obj under UBSan: an empty
+  // bucket array's null data() must not be offset).
+  Mesh degenerate;
+  degenerate.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}};
+  degenerate.indices = {0, 1, 0, 2, 2, 1};
+  for (float crease : {kDefaultCreaseAngleDeg, kNoCreaseDeg}) expectSameAsReference(degenerate, crease, "degenerate only");
 }
 
 // Large enough (150,000 triangles) that the triangles are split over threads.

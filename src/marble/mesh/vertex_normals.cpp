@@ -148,6 +148,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
     for (size_t p = 0; p < nv; ++p) {
       EdgeUse* const first = uses.data() + bucketStart[p];
       EdgeUse* const last = uses.data() + bucketStart[p + 1];
+      if (first == last) continue;  // (also: no pointer arithmetic on an empty array's null data())
       // Buckets hold ~3 uses: insertion sort, where std::sort's set-up would cost more; a point
       // with very many edges (a fan of thousands of triangles) gets std::sort.
       if (last - first > 16) {

@@ -79,6 +79,8 @@ void writeInputs(const fs::path& dir) {
   put("zero.obj", tri + "f 0 1 2\n");
   put("two.obj", tri + "f 1 2\n");
   put("nofaces.obj", "v 0 0 0\nv 1 0 0\n");
+  // Two triangles on the same texture coordinates (bake --uv-from file must refuse them).
+  put("overlapuv.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 1\nvt 0 0\nvt 1 0\nvt 1 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/2\n");
   put("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   put("degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 4 4 4\n");
   put("zeroarea.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
@@ -456,6 +458,23 @@ const std::vector<Row>& rows() {
       {"HdrOfFloor", "--hdr with --mode floor", "render --hdr x.exr --mode floor" + kSmall, 2, "marble render: --hdr: the floor mode has no HDR image"},
       {"TextureOutputIsFile", "texture -o naming a file", "texture -o afile --size 16", 2, "afile: cannot create folder: Not a directory"},
       {"TextureTinySize", "texture --size 4", "texture -o tex --size 4", 2, "--size: Value 4 not in range 8 to 8192"},
+      // bake and export (issue 17): all checked before the bake; tests/export_cli.cpp checks nothing is written.
+      {"BakeNoFaces", "bake a mesh with no faces", "bake nofaces.obj -o set", 2, "marble bake: nofaces.obj: no triangles: the file has 2 vertices but no faces"},
+      {"BakeOverlappingUvs", "bake --uv-from file with overlapping texture coordinates", "bake overlapuv.obj --uv-from file -o set", 2,
+       "marble bake: overlapuv.obj: texcoords: the texture coordinates overlap: 100.00% of the covered texels belong to two or more triangles (--uv-from file)"},
+      {"BakeTinySize", "bake --size below 16", "bake overlapuv.obj --size 8 -o set", 2, "marble bake: --size: expected a whole number in [16, 8192], got 8"},
+      {"BakeHugeSize", "bake --size above 8192", "bake overlapuv.obj --size 9000 -o set", 2, "marble bake: --size: expected a whole number in [16, 8192], got 9000"},
+      {"BakeSupersample", "bake --supersample out of range", "bake overlapuv.obj --supersample 9 -o set", 2, "marble bake: --supersample: expected 1 to 4, got 9"},
+      {"BakeChartsDoNotFit", "bake --size too small for the unwrap's charts", "bake overlapuv.obj --uv-from unwrap --size 16 -o set", 2,
+       "marble bake: overlapuv.obj: unwrap: 2 charts do not fit a 16-texel texture with 4 texels of padding (a larger --size fits them)"},
+      {"BakeFolderUnderAFile", "bake -o under a path that is a file", "bake overlapuv.obj -o afile/set", 2, "marble bake: afile/set: cannot create folder: "},
+      {"BakeFolderUnwritable", "bake -o where nothing can be created (/proc)", "bake overlapuv.obj --uv-from unwrap --size 64 -o /proc/marble-set", 2,
+       "marble bake: /proc/marble-set: cannot create folder: No such file or directory"},
+      {"ExportNotGltf", "export -o naming neither .glb nor .gltf", "export overlapuv.obj -o model.fbx", 2, "marble export: model.fbx: expected a .glb or .gltf file name"},
+      {"ExportFolderMissing", "export -o into a missing folder", "export overlapuv.obj -o nowhere/model.glb", 2,
+       "marble export: nowhere/model.glb: the folder nowhere does not exist"},
+      {"ExportUnwritable", "export -o where nothing can be written (/proc)", "export overlapuv.obj --uv-from unwrap --size 64 -o /proc/model.glb", 2,
+       "marble export: /proc/model.glb: cannot write: No such file or directory"},
       // Environment.
       {"NoEglVendor", "no EGL driver (glvnd finds no vendor)", "render" + kSmall, 1,
        "marble render: headless OpenGL: no EGL display available (is libegl-mesa0 installed?)", "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json"},

@@ -25,3 +25,23 @@ TEST(Blender, ImportsTheExportAndBuildsTheMaterial) {
   EXPECT_NE(text.find("blender_marble: imported 1 mesh(es), 12 triangles, material 'carrara'"), std::string::npos) << text;
   EXPECT_TRUE(fs::exists(dir / "m.blend")) << text;
 }
+
+// tools/cycles_reference.py renders a veined stone through the bridge: `marble export` bakes the
+// veins, Blender's importer reads the .glb, the texture becomes the Principled's colours. (The
+// flat path, for marble scenes with one colour, is what docs/quality.md's references use.)
+TEST(Blender, CyclesReferenceKeepsTheVeins) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "Blender is not installed (apt-get install blender python3-numpy)";
+  namespace fs = std::filesystem;
+  const fs::path dir = marble::test::tempDir("cycles-veins");
+  std::ofstream(dir / "scene.json") << R"({"mesh": "builtin:sphere", "material": {"preset": "carrara"}, "render": {"environment": "none"}})";
+  const std::string cmd = "nice -n 19 blender -b --factory-startup -P " +
+                          (fs::path(MARBLE_SOURCE_DIR) / "tools" / "cycles_reference.py").string() + " -- " +
+                          (dir / "scene.json").string() + " " + (dir / "ref.exr").string() +
+                          " --samples 1 --width 24 --height 24 --bake-size 64 --marble " MARBLE_BINARY " > " +
+                          (dir / "log.txt").string() + " 2>&1";
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
+  std::ifstream log(dir / "log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("cycles_reference: veins baked by marble export (64x64) onto 1 mesh(es)"), std::string::npos) << text;
+  EXPECT_TRUE(fs::exists(dir / "ref.exr")) << text;
+}

@@ -3,6 +3,7 @@
 // .glb, and the Khronos glTF-Validator's verdict (tools/web, installed by tools/setup-web-tools.sh).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -74,9 +75,22 @@ TEST(BakeCli, WritesTheTextureSet) {
   const auto r = runMarble("bake builtin:sphere -o " + dir.string() + " --size 64 --preset carrara");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("unwrapped"), std::string::npos) << r.output;
-  for (const char* f : {"base_color.png", "metallic_roughness.png", "thickness.png", "material.json"})
+  for (const char* f : {"base_color.png", "metallic_roughness.png", "thickness.png", "thickness.exr", "material.json"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   const auto j = nlohmann::json::parse(slurp(dir / "material.json"));
+  // thickness.exr: the PNG's map unquantized, in millimetres (the sphere's is 2 units x 100 mm
+  // across, its mean chord 4/3 of the radius: 133 mm), equal to the PNG within its 1/255 steps.
+  const marble::ImageRGBF mm = marble::readExr(dir / "thickness.exr");
+  const marble::ImageRGBA8 png8 = marble::readPng(dir / "thickness.png");
+  ASSERT_EQ(mm.width, png8.width);
+  const double scaleMm = j["textures"]["thickness"]["scale_mm"].get<double>();
+  float largest = 0;
+  for (int i = 0; i < mm.width * mm.height; ++i) {
+    largest = std::max(largest, mm.pixels[static_cast<size_t>(i) * 3]);
+    EXPECT_NEAR(mm.pixels[static_cast<size_t>(i) * 3], png8.pixels[static_cast<size_t>(i) * 4] / 255.0 * scaleMm, 0.51 / 255.0 * scaleMm) << i;
+  }
+  EXPECT_NEAR(largest, scaleMm, 1e-3 * scaleMm);
+  EXPECT_EQ(j["textures"]["thickness_mm"]["file"], "thickness.exr");
   EXPECT_EQ(j["textures"]["base_color"]["size"], 64);
   EXPECT_EQ(j["textures"]["thickness"]["size"], 64);  // a quarter, at least 64
   EXPECT_NEAR(j["textures"]["thickness"]["scale_units"].get<double>(), 4.0 / 3.0, 0.05);  // the sphere's closed form

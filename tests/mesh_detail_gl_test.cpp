@@ -167,6 +167,48 @@ TEST(LightProxy, ShadowEdgesMoveLessThanALightTurnOfOneDegree) {
   EXPECT_LT(byProxy, byTurn / 4.0);
 }
 
+// The light's proxy made on a worker thread (the viewer): frames drawn before it is there use the
+// full mesh for the light's pass; once it is there the renderer is not current, and the next frame
+// equals, bit for bit, a renderer that made the proxy in setMesh.
+TEST(LightProxy, MadeInTheBackgroundGivesTheSameStillFrame) {
+  glContext();
+  Scene s = sceneOf(RenderMode::Marble);
+  OffscreenTarget target(kSize, kSize);
+  Renderer background;
+  background.setLightProxyInBackground(true);
+  background.setMesh(denseSculpture());
+  const bool pendingAtFirstFrame = background.lightProxyPending();
+  background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
+  const ImageRGBA8 first = target.read();
+  const bool firstUsedFullMesh = background.lightTriangleCount() == background.triangleCount();
+  if (background.lightProxyPending()) {
+    background.waitForLightProxy();
+    EXPECT_FALSE(background.isCurrent(s, glm::mat4(1.0f), target.fbo(), kSize, kSize));
+  }
+  EXPECT_FALSE(background.lightProxyPending());
+  EXPECT_LT(background.lightTriangleCount(), background.triangleCount());
+  background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
+  const ImageRGBA8 still = target.read();
+
+  Renderer atOnce, fullLight;
+  atOnce.setMesh(denseSculpture());
+  EXPECT_FALSE(atOnce.lightProxyPending());
+  EXPECT_EQ(atOnce.lightTriangleCount(), background.lightTriangleCount());
+  EXPECT_EQ(atOnce.lightProxyErrorUnits(), background.lightProxyErrorUnits());
+  const ImageRGBA8 reference = renderImage(atOnce, s);
+  EXPECT_TRUE(still.pixels == reference.pixels) << "mean difference " << meanAbsDiff(still, reference);
+  // The first frame, when drawn before the proxy was there, is the full mesh's (and so differs
+  // from the proxy's picture: the negative control of the comparison above).
+  EXPECT_TRUE(pendingAtFirstFrame);
+  if (firstUsedFullMesh) {
+    fullLight.setMesh(denseSculpture());
+    fullLight.setLightProxyEnabled(false);
+    const ImageRGBA8 full = renderImage(fullLight, s);
+    EXPECT_TRUE(first.pixels == full.pixels);
+    EXPECT_FALSE(first.pixels == reference.pixels);
+  }
+}
+
 // Interaction detail: frames while the camera orbits drawn from the copy, then the first still
 // frame from the full mesh -- equal, bit for bit, to a fresh renderer's frame.
 TEST(InteractionDetail, StillFrameEqualsAFreshRender) {

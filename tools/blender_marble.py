@@ -164,23 +164,40 @@ def setup_scene(bs, mm_per_unit, opts):
     bs.render.film_transparent = True  # the world lights the stone; the picture's background is the caller's
 
 
-def main():
-    model, opts = parse_args()
+def import_glb(model):
+    """Imports a `marble export` file with Blender's glTF importer into the current scene.
+    Returns (mesh objects, design, mm_per_unit). Also used by tools/cycles_reference.py."""
     if not os.path.isfile(model):
         fail(model + ": file not found")
     design, mm_per_unit = marble_design(glb_json(model), model)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
     # Debian 12's Blender 3.4 glTF importer still says numpy.bool, which numpy 1.24 removed.
     import warnings
     import numpy
     warnings.filterwarnings("ignore", category=FutureWarning)
     if not hasattr(numpy, "bool") or "bool" in getattr(numpy, "__former_attrs__", {}):
         numpy.bool = bool
-    bs = bpy.context.scene
+    before = set(bpy.context.scene.objects)
     bpy.ops.import_scene.gltf(filepath=os.path.abspath(model))
-    meshes = [o for o in bs.objects if o.type == "MESH"]
+    meshes = [o for o in bpy.context.scene.objects if o.type == "MESH" and o not in before]
     if not meshes:
         fail(model + ": Blender's importer found no mesh")
+    return meshes, design, mm_per_unit
+
+
+def base_color_image(mat):
+    """The image behind an imported material's Base Color (the baked veins), or None."""
+    bsdf = next((n for n in mat.node_tree.nodes if n.type == "BSDF_PRINCIPLED"), None)
+    if bsdf is None:
+        return None
+    link = bsdf.inputs["Base Color"].links
+    return link[0].from_node.image if link and link[0].from_node.type == "TEX_IMAGE" else None
+
+
+def main():
+    model, opts = parse_args()
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bs = bpy.context.scene
+    meshes, design, mm_per_unit = import_glb(model)
     triangles = 0
     for o in meshes:
         o.data.calc_loop_triangles()
@@ -199,4 +216,5 @@ def main():
         print("blender_marble: wrote %s (%dx%d, %d samples)" % (opts["render"], opts["width"], opts["height"], opts["samples"]))
 
 
-main()
+if __name__ == "__main__":  # run by blender -P; imported by tools/cycles_reference.py
+    main()

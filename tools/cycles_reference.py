@@ -1,7 +1,7 @@
 """Render a marble scene JSON with Blender Cycles, as a reference for `marble compare` (issue 5, item 9).
 
     blender -b --factory-startup -P tools/cycles_reference.py -- SCENE.json OUT.exr \
-        [--samples N] [--width W --height H] [--threads T] [--seed S]
+        [--samples N] [--width W --height H] [--threads T] [--seed S] [--marble PATH] [--bake-size N] [--flat]
 
 What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/render/view_setup.cpp):
 - Mesh: a file path relative to the scene (OBJ only, positions and faces; `builtin:` meshes exist
@@ -26,8 +26,17 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
   Radius 0 (a true point). A directional light has no falloff in either: it becomes a sun of
   strength pi I (a sun's strength is its irradiance).
 - World black (compare with marble scenes that say "render": {"environment": "none"}).
+- Veins (a design whose vein colours differ from base_color, or a vein network model; --flat
+  turns this off): the stone
+  goes through the Blender bridge (tools/blender_marble.py). `marble export SCENE.json` (the
+  marble binary: --marble PATH, default build/marble of this repository) bakes the pattern onto
+  the mesh's texture coordinates or an unwrap (--bake-size, default 1024) and writes a .glb with
+  marble's own normalized mesh and normals (any mesh marble reads, builtin: ones included);
+  Blender's glTF importer reads it and the mesh is scaled from metres back to scene units
+  (1000 / mm_per_unit); the baked texture is the Base Color and Subsurface Color below. The
+  rest of this list holds unchanged.
 - Material: Principled BSDF, subsurface method RANDOM_WALK, Subsurface 1, base and subsurface
-  colour = base_color (scenes set base/vein/vein2 equal: a flat albedo), Subsurface IOR and IOR =
+  colour = base_color (a flat albedo; with veins, the baked texture), Subsurface IOR and IOR =
   ior; Specular = F0 / 0.08 with F0 = ((n-1)/(n+1))^2 (Blender's Principled convention);
   Roughness = roughness (both GGX alpha = roughness^2). Subsurface Radius: in the material's
   radius form (`"scattering": "radius"`, src/marble/scene/material_scattering.h) exactly
@@ -43,7 +52,9 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
 import json
 import math
 import os
+import subprocess
 import sys
+import tempfile
 
 import bpy
 from mathutils import Matrix, Vector
@@ -58,16 +69,21 @@ def fail(msg):
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    opts = {"samples": 64, "width": None, "height": None, "threads": 2, "seed": 0}
+    opts = {"samples": 64, "width": None, "height": None, "threads": 2, "seed": 0, "bake_size": 1024,
+            "marble": os.path.join(REPO, "build", "marble"), "flat": False}
     pos = []
     i = 0
     while i < len(argv):
         a = argv[i]
-        if a in ("--samples", "--width", "--height", "--threads", "--seed"):
+        if a in ("--samples", "--width", "--height", "--threads", "--seed", "--bake-size", "--marble"):
             if i + 1 >= len(argv):
                 fail(a + " needs a value")
-            opts[a[2:]] = int(argv[i + 1])
+            key = a[2:].replace("-", "_")
+            opts[key] = argv[i + 1] if a == "--marble" else int(argv[i + 1])
             i += 2
+        elif a == "--flat":
+            opts["flat"] = True
+            i += 1
         else:
             pos.append(a)
             i += 1
@@ -177,33 +193,13 @@ def load_obj(path, up):
     return [to_blender([(v[a] - centre[a]) * scale for a in range(3)]) for v in welded], faces, loop_normals
 
 
-def main():
-    scene_path, out_path, opts = parse_args()
-    with open(scene_path) as f:
-        scene = json.load(f)
-    scene_dir = os.path.dirname(os.path.abspath(scene_path))
-    mesh_ref = scene.get("mesh", "builtin:sculpture")
+def flat_mesh(scene, scene_dir, mesh_ref):
+    """The scene's OBJ as marble loads it (the docstring's Mesh item), as a Blender object."""
     if mesh_ref.startswith("builtin:"):
         fail("mesh: '%s' exists only inside marble; use a mesh file (e.g. export one as OBJ)" % mesh_ref)
     mesh_path = os.path.join(scene_dir, mesh_ref)
     if not mesh_path.lower().endswith(".obj"):
         fail("mesh: only OBJ files are supported here, got " + mesh_ref)
-    cam = scene.get("camera", {})
-    light = scene.get("light", {})
-    render = scene.get("render", {})
-    mm_per_unit = float(scene.get("mm_per_unit", 100.0))
-    mat = load_material(scene, scene_dir)
-    if render.get("environment", "studio") != "none":
-        print("cycles_reference: warning: the scene uses marble's studio environment; "
-              "this reference has a black world", file=sys.stderr)
-    if mat.get("vein_color") != mat.get("base_color") or mat.get("vein2_color") != mat.get("base_color"):
-        print("cycles_reference: warning: base/vein/vein2 colours differ; the reference uses base_color "
-              "as a flat albedo", file=sys.stderr)
-
-    bs = bpy.context.scene
-    for o in list(bpy.data.objects):
-        bpy.data.objects.remove(o)
-
     verts, faces, loop_normals = load_obj(mesh_path, scene.get("up", "y"))
     me = bpy.data.meshes.new("marble_mesh")
     me.from_pydata([tuple(v) for v in verts], [], faces)
@@ -221,7 +217,70 @@ def main():
         me.use_auto_smooth = True
         me.auto_smooth_angle = math.radians(crease)
     obj = bpy.data.objects.new("marble", me)
-    bs.collection.objects.link(obj)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def import_veined(scene_path, mm_per_unit, opts):
+    """The veined stone through the Blender bridge (the docstring's Veins item): returns the
+    mesh objects in scene units and the baked base colour image."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import blender_marble
+    if not os.access(opts["marble"], os.X_OK):
+        fail("--marble: %s is not an executable marble binary (build it, or give --marble PATH)" % opts["marble"])
+    work = tempfile.mkdtemp(prefix="cycles-reference-")
+    glb = os.path.join(work, "stone.glb")
+    r = subprocess.run([opts["marble"], "export", os.path.abspath(scene_path), "-o", glb, "--size", str(opts["bake_size"])],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("marble export: " + (r.stderr.strip() or r.stdout.strip()))
+    objects, _, glb_mm_per_unit = blender_marble.import_glb(glb)
+    veins = None
+    for o in objects:
+        # The .glb is in metres; scene units are mm_per_unit mm (the camera and light are in them).
+        o.matrix_world = Matrix.Scale(1000.0 / glb_mm_per_unit, 4) @ o.matrix_world
+        for slot in o.material_slots:
+            veins = veins or blender_marble.base_color_image(slot.material)
+    if veins is None:
+        fail("marble export wrote no base colour texture")
+    # The importer packs a .glb's images into the scene, so the temporary folder can go.
+    for f in os.listdir(work):
+        os.remove(os.path.join(work, f))
+    os.rmdir(work)
+    print("cycles_reference: veins baked by marble export (%dx%d) onto %d mesh(es)" %
+          (veins.size[0], veins.size[1], len(objects)))
+    return objects, veins
+
+
+def main():
+    scene_path, out_path, opts = parse_args()
+    with open(scene_path) as f:
+        scene = json.load(f)
+    scene_dir = os.path.dirname(os.path.abspath(scene_path))
+    mesh_ref = scene.get("mesh", "builtin:sculpture")
+    cam = scene.get("camera", {})
+    light = scene.get("light", {})
+    render = scene.get("render", {})
+    mm_per_unit = float(scene.get("mm_per_unit", 100.0))
+    mat = load_material(scene, scene_dir)
+    if render.get("environment", "studio") != "none":
+        print("cycles_reference: warning: the scene uses marble's studio environment; "
+              "this reference has a black world", file=sys.stderr)
+    veined = (mat.get("vein_color") != mat.get("base_color") or mat.get("vein2_color") != mat.get("base_color")
+              or mat.get("vein_model", "paper") != "paper")
+    if veined and opts["flat"]:
+        print("cycles_reference: warning: base/vein/vein2 colours differ; --flat uses base_color "
+              "as a flat albedo", file=sys.stderr)
+        veined = False
+
+    bs = bpy.context.scene
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o)
+
+    if veined:
+        objects, veins = import_veined(scene_path, mm_per_unit, opts)
+    else:
+        objects, veins = [flat_mesh(scene, scene_dir, mesh_ref)], None
 
     # Material.
     albedo = list(mat.get("base_color", [0.93, 0.89, 0.8]))
@@ -249,7 +308,14 @@ def main():
     bsdf.inputs["Specular"].default_value = f0 / 0.08
     bsdf.inputs["Specular Tint"].default_value = 0.0
     bsdf.inputs["Roughness"].default_value = float(mat.get("roughness", 0.12))
-    me.materials.append(m)
+    if veins is not None:
+        tex = m.node_tree.nodes.new("ShaderNodeTexImage")
+        tex.image = veins  # sRGB, as the importer loaded it; the mesh's one UV map
+        m.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+        m.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Subsurface Color"])
+    for o in objects:
+        o.data.materials.clear()
+        o.data.materials.append(m)
 
     # Camera.
     pos = to_blender(cam.get("position", [0.0, 0.8, 4.2]))

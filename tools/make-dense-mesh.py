@@ -7,10 +7,15 @@ load). The output is benchmark data: write it to /tmp or out/, never into the re
 
     tools/make-dense-mesh.py /work/shared/models/dragon.obj /tmp/dragon-1.6m.obj --levels 2
 
+The output's extension picks the format: .obj (text), .ply (binary little-endian: float x y z,
+uchar-counted int vertex_indices) or .stl (binary: every triangle's own corners, as STL stores them),
+so that the loaders can be compared on the same mesh (bench/load_compare.cpp).
+
 (A midpoint split adds triangles but no shape: the new triangles lie in the old ones' planes,
 which a simplifier can undo almost without error -- a scan's noise would make that harder.)
 """
 import argparse
+import struct
 import sys
 
 
@@ -49,6 +54,24 @@ def subdivide(verts, faces):
     return out
 
 
+def write_ply(path, verts, faces):
+    header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+              "property float y\nproperty float z\nelement face %d\n"
+              "property list uchar int vertex_indices\nend_header\n" % (len(verts), len(faces)))
+    with open(path, "wb") as f:
+        f.write(header.encode("ascii"))
+        f.write(b"".join(struct.pack("<3f", *v) for v in verts))
+        f.write(b"".join(struct.pack("<B3i", 3, *t) for t in faces))
+
+
+def write_stl(path, verts, faces):
+    with open(path, "wb") as f:
+        f.write(b"make-dense-mesh.py".ljust(80, b" "))
+        f.write(struct.pack("<I", len(faces)))
+        # The facet normal is written as zero: readers compute their own (ours ignores it).
+        f.write(b"".join(struct.pack("<12fH", 0, 0, 0, *verts[a], *verts[b], *verts[c], 0) for a, b, c in faces))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("input")
@@ -60,9 +83,14 @@ def main():
     verts, faces = read_obj(a.input)
     for _ in range(a.levels):
         faces = subdivide(verts, faces)
-    with open(a.output, "w") as f:
-        f.write("".join("v %.7g %.7g %.7g\n" % v for v in verts))
-        f.write("".join("f %d %d %d\n" % (x + 1, y + 1, z + 1) for x, y, z in faces))
+    if a.output.lower().endswith(".ply"):
+        write_ply(a.output, verts, faces)
+    elif a.output.lower().endswith(".stl"):
+        write_stl(a.output, verts, faces)
+    else:
+        with open(a.output, "w") as f:
+            f.write("".join("v %.7g %.7g %.7g\n" % v for v in verts))
+            f.write("".join("f %d %d %d\n" % (x + 1, y + 1, z + 1) for x, y, z in faces))
     print("%s: %d vertices, %d triangles" % (a.output, len(verts), len(faces)))
 
 

@@ -1,12 +1,13 @@
 #pragma once
 // `marble bake INPUT -o DIR [--size N] [--preset P] [--set k=v ...]`: the marble baked onto the
 // mesh's texture coordinates (or a fresh unwrap): base_color.png, metallic_roughness.png,
-// thickness.png and material.json (bake/texture_set_files.h; docs/export.md).
+// thickness.png, thickness.exr and material.json (bake/texture_set_files.h; docs/export.md).
 #include <filesystem>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "marble/bake/bake_job.h"
 #include "scene_options.h"
 
 namespace marble {
@@ -20,11 +21,12 @@ struct BakeCommandOptions {
   bool progress = false;  // force the progress bar (it shows anyway when stderr is a terminal)
 };
 
-inline constexpr int kMinBakeSize = 16;
-inline constexpr int kMaxBakeSize = 8192;
-
 // The options bake and export share (input, material, up axis, size, texture coordinates).
 void addBakeOptions(CLI::App& cmd, BakeCommandOptions& o);
+
+// The scene and settings from the command line, the bake (bake/bake_job.h) with the progress bar
+// on stderr and the texture-coordinate note; shared by `bake` and `export`.
+BakeJobResult runBakeFromCommandLine(const BakeCommandOptions& o, BakeOutput kind, const std::filesystem::path& output);
 
 int runBakeCommand(const BakeCommandOptions& o);
 

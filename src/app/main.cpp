@@ -72,7 +72,7 @@ int run(int argc, char** argv) {
 
   BakeCommandOptions bake;
   auto* bakeCmd = app.add_subcommand("bake", "Bake the marble onto the mesh's texture coordinates (or an automatic unwrap): "
-                                              "base colour, metallic-roughness and thickness PNGs and material.json");
+                                              "base colour, metallic-roughness and thickness PNGs, thickness.exr (mm) and material.json");
   addBakeOptions(*bakeCmd, bake);
   bakeCmd->add_option("-o,--output", bake.outDir, "Output folder (created if needed)")->required();
 

@@ -149,6 +149,8 @@ int runViewCommand(const ViewOptions& o) {
     bool vsyncApplied = s.vsync;
 
     Renderer renderer(std::move(shaders));
+    // A large mesh's light proxy is made while the window already draws the full mesh.
+    renderer.setLightProxyInBackground(true);
     adoptMesh(renderer, s, firstMesh, s.scene.mesh);
     if (firstEnvironment) adoptEnvironment(renderer, s, *firstEnvironment);
     s.meshPathInput = s.scene.mesh.rfind("builtin:", 0) == 0 ? "" : s.scene.mesh;
@@ -214,6 +216,9 @@ int runViewCommand(const ViewOptions& o) {
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
         renderer.setMeshDetail(detail.next(s.interactionDetail, renderer.triangleCount(), scene.camera, model));
+        // A scripted screenshot (--frames N --screenshot) shows the finished picture, light proxy
+        // included, whatever the machine's speed.
+        if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForLightProxy();
         viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
         if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
       }

@@ -2,10 +2,9 @@
 
 #include <exception>
 #include <system_error>
+#include <utility>
 
-#include "marble/bake/bake_mesh.h"
-#include "marble/bake/gltf_export.h"
-#include "marble/bake/texture_set_files.h"
+#include "marble/bake/bake_job.h"
 #include "marble/core/error.h"
 
 namespace marble {
@@ -51,36 +50,19 @@ void BackgroundExport::run(Scene scene, ExportRequest request) {
     stage_ = s;
   };
   try {
-    // Everything checkable is checked before the bake, as on the command line.
     if (request.path.empty()) throw InputError("export", "path", "no path given");
-    if (request.size < 16 || request.size > 8192)
-      throw InputError("export", "size", "expected 16 to 8192 texels, got " + std::to_string(request.size));
-    const std::filesystem::path out(request.path);
-    if (request.textureSet) {
-      checkOutputFolder(out);
-    } else {
-      gltfContainerFor(out);
-      const auto folder = out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
-      std::error_code ec;
-      if (!std::filesystem::is_directory(folder, ec))
-        throw InputError(request.path, "", "the folder " + folder.string() + " does not exist");
-    }
-    const Mesh loaded = loadSceneMesh(scene);
-    BakeOptions options;
-    options.size = request.size;
-    const BakeMesh mesh = prepareBakeMesh(loaded, UvSource::Auto, request.size, options.dilationTexels, scene.mesh);
-    options.progress = [&](double f, const char* stage) {
+    BakeJob job;
+    job.kind = request.textureSet ? BakeOutput::TextureSet : BakeOutput::Gltf;
+    job.output = request.path;
+    job.size = request.size;
+    checkBakeJob(job);
+    const BakeJobResult r = runBakeJob(scene, loadSceneMesh(scene), job, [&](double f, const char* stage) {
       progress_ = f;
       setStage(stage);
       return !cancel_.load();
-    };
-    const TextureSet set = bakeTextureSet(mesh.mesh, scene.material, options);
-    if (cancel_) throw BakeCancelled();
-    setStage("writing");
-    if (request.textureSet) writeTextureSet(out, set, describeTextureSet(set, scene.material, scene.mm_per_unit, mesh));
-    else writeGltf(out, {mesh.mesh, set, scene.material, scene.mm_per_unit});
+    });
     outcome.ok = true;
-    outcome.message = "exported " + request.path + (mesh.unwrapped ? " (texture coordinates unwrapped)" : " (the file's texture coordinates)");
+    outcome.message = "exported " + request.path + (r.unwrapped ? " (texture coordinates unwrapped)" : " (the file's texture coordinates)");
   } catch (const BakeCancelled&) {
     outcome.cancelled = true;
     outcome.message = "export cancelled; nothing was written";

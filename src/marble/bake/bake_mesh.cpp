@@ -53,6 +53,7 @@ BakeMesh prepareBakeMesh(const Mesh& loaded, UvSource source, int textureSize, i
   UvUnwrapOptions options;
   options.textureSize = textureSize;
   options.paddingTexels = paddingTexels;
+  options.source = file;
   UvUnwrapResult r = unwrapUvs(loaded, options);
   out.mesh = std::move(r.mesh);
   out.stats = r.stats;

@@ -1,7 +1,7 @@
 #pragma once
 // A bounding volume hierarchy over a mesh's triangles for the nearest-hit rays of the thickness
-// bake: binary, split at the median of the longest axis of the centroids' box, leaves of at most
-// four triangles; Moller-Trumbore ray/triangle tests (both sides count: a ray cast inward leaves
+// bake: binary, split along the longest axis of the centroids' box where the binned surface
+// area heuristic puts it (the median where that fails), leaves of at most four triangles; Moller-Trumbore ray/triangle tests (both sides count: a ray cast inward leaves
 // through a back face).
 #include <cstdint>
 #include <vector>
@@ -27,6 +27,7 @@ class RayBvh {
     uint32_t right;  // inner: index of the right child
   };
   uint32_t build(uint32_t begin, uint32_t end, std::vector<glm::vec3>& centroids);
+  uint32_t splitPoint(uint32_t begin, uint32_t end, int axis, float lo, float extent, const std::vector<glm::vec3>& centroids) const;
   std::vector<Node> nodes_;
   std::vector<glm::vec3> corners_;  // three per triangle, in the order of the leaves
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -167,15 +168,21 @@ TextureSet bakeTextureSet(const Mesh& mesh, const Material& material, const Bake
   // 1. Base colour: ss x ss sub-samples per texel, each through the triangle covering it.
   std::vector<glm::vec4> colour(static_cast<size_t>(size) * size, glm::vec4(0));  // linear RGB sum, samples
   const int passes = ss * ss;
+  std::optional<AlbedoSampler> albedo;
   for (int k = 0; k < passes; ++k) {
     const glm::vec2 offset((static_cast<float>(k % ss) + 0.5f) / ss, (static_cast<float>(k / ss) + 0.5f) / ss);
     const std::vector<uint32_t> ids = coverageIds(mesh, size, offset);
+    if (!albedo) {  // made once the first pass says how many points there are (its grid may be worth baking)
+      if (options.progress && !options.progress(0.0, "pattern")) throw BakeCancelled();
+      const auto points = std::count_if(ids.begin(), ids.end(), [](uint32_t id) { return id != kEmpty; });
+      albedo.emplace(material, static_cast<double>(points) * passes);
+    }
     parallelRows(size, options, "base colour", 0.7 * k / passes, 0.7 * (k + 1) / passes, [&](int y) {
       for (int x = 0; x < size; ++x) {
         const size_t i = static_cast<size_t>(y) * size + x;
         if (ids[i] == kEmpty) continue;
         const SurfacePoint p = pointOnTriangle(mesh, ids[i], size, x, y, offset);
-        colour[i] += glm::vec4(marbleAlbedo(material, p.position, p.normal), 1.0f);
+        colour[i] += glm::vec4((*albedo)(p.position, p.normal), 1.0f);
       }
     });
   }
@@ -234,8 +241,11 @@ TextureSet bakeTextureSet(const Mesh& mesh, const Material& material, const Bake
     if (thick[i] >= 0) thickImg[i] = glm::vec4(thick[i] / out.thicknessScale, 0, 0, 1);
   fillEmpty(thickImg, ts, options.dilationTexels);
   out.thickness = blankImage(ts);
-  for (size_t i = 0; i < thickImg.size(); ++i)
+  out.thicknessValues.resize(thickImg.size());
+  for (size_t i = 0; i < thickImg.size(); ++i) {
+    out.thicknessValues[i] = thickImg[i].x;
     out.thickness.pixels[i * 4] = out.thickness.pixels[i * 4 + 1] = out.thickness.pixels[i * 4 + 2] = toByte(thickImg[i].x);
+  }
   if (options.progress) options.progress(1.0, "done");
   return out;
 }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "marble/core/image.h"
 #include "marble/mesh/mesh.h"
@@ -31,6 +32,7 @@ struct TextureSet {
   ImageRGBA8 metallicRoughness;  // glTF's packing (linear): G roughness, B metalness, R 255
   ImageRGBA8 thickness;          // R = G = B = local thickness / thicknessScale (linear), alpha 255
   float thicknessScale = 0;      // object units (the normalized mesh) that 255 stands for
+  std::vector<float> thicknessValues;  // the same map unquantized: local thickness / thicknessScale, row 0 on top
   double coverage = 0;           // fraction of base-colour texels some triangle covers
 };
 

@@ -10,6 +10,7 @@
 #include "marble/bake/gltf_material.h"
 #include "marble/core/atomic_file.h"
 #include "marble/core/error.h"
+#include "marble/core/image.h"
 #include "marble/scene/material_io.h"
 
 namespace marble {
@@ -38,7 +39,10 @@ json describeTextureSet(const TextureSet& set, const Material& m, float mmPerUni
           {"convention", "local thickness (mean distance along rays cast inward around the normal to where they leave the mesh), "
                          "normalized: value / 255 * scale"},
           {"scale_units", set.thicknessScale},
-          {"scale_mm", set.thicknessScale * mmPerUnit}}}}},
+          {"scale_mm", set.thicknessScale * mmPerUnit}}},
+        {"thickness_mm",
+         {{"file", kThicknessExrFile}, {"size", set.thickness.width}, {"encoding", "linear, 16-bit half float, R = G = B"},
+          {"convention", "the same local thickness, unquantized, in millimetres"}}}}},
       {"gltf",
        {{"roughnessFactor", g.roughness},
         {"metallicFactor", g.metallic},
@@ -64,13 +68,29 @@ void checkOutputFolder(const std::filesystem::path& dir) {
     throw InputError(dir.string(), "", "cannot create or write the folder: " + existing.string() + " is not writable");
 }
 
-void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, const json& description) {
+namespace {
+
+// The thickness in millimetres (the normalized values times the scale) as a float EXR.
+std::string encodeThicknessMm(const TextureSet& set, float mmPerUnit) {
+  ImageRGBF img;
+  img.width = set.thickness.width;
+  img.height = set.thickness.height;
+  img.pixels.resize(set.thicknessValues.size() * 3);
+  const float scaleMm = set.thicknessScale * mmPerUnit;
+  for (size_t i = 0; i < set.thicknessValues.size(); ++i) img.pixels[i * 3] = img.pixels[i * 3 + 1] = img.pixels[i * 3 + 2] = set.thicknessValues[i] * scaleMm;
+  return encodeExr(img);
+}
+
+}  // namespace
+
+void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, float mmPerUnit, const json& description) {
   std::vector<std::pair<std::string, std::string>> files = {{kBaseColorFile, encodePng(set.baseColor)},
                                                             {kMetallicRoughnessFile, encodePng(set.metallicRoughness)},
                                                             {kThicknessFile, encodePng(set.thickness)},
+                                                            {kThicknessExrFile, encodeThicknessMm(set, mmPerUnit)},
                                                             {kMaterialFile, description.dump(2) + "\n"}};
   for (const auto& [name, bytes] : files)
-    if (bytes.empty()) throw InputError((dir / name).string(), "", "PNG encoding failed");
+    if (bytes.empty()) throw InputError((dir / name).string(), "", "encoding failed");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))

@@ -1,6 +1,6 @@
 #pragma once
 // A baked texture set on disk (`marble bake -o DIR`): base_color.png, metallic_roughness.png,
-// thickness.png and material.json, which says what each file holds, the thickness's scale, the
+// thickness.png (and thickness.exr, unquantized in millimetres) and material.json, which says what each file holds, the thickness's scale, the
 // texture coordinates' provenance and the glTF parameters (docs/export.md).
 #include <filesystem>
 
@@ -14,6 +14,7 @@ namespace marble {
 inline constexpr const char* kBaseColorFile = "base_color.png";
 inline constexpr const char* kMetallicRoughnessFile = "metallic_roughness.png";
 inline constexpr const char* kThicknessFile = "thickness.png";
+inline constexpr const char* kThicknessExrFile = "thickness.exr";  // the same map in millimetres, half float (OpenEXR)
 inline constexpr const char* kMaterialFile = "material.json";
 
 nlohmann::json describeTextureSet(const TextureSet& set, const Material& m, float mmPerUnit, const BakeMesh& mesh);
@@ -23,6 +24,7 @@ nlohmann::json describeTextureSet(const TextureSet& set, const Material& m, floa
 void checkOutputFolder(const std::filesystem::path& dir);
 
 // Creates `dir` if needed, encodes every file, then writes each atomically (core/atomic_file.h).
-void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, const nlohmann::json& description);
+// mmPerUnit: the scene's, for thickness.exr's millimetres.
+void writeTextureSet(const std::filesystem::path& dir, const TextureSet& set, float mmPerUnit, const nlohmann::json& description);
 
 }  // namespace marble

@@ -391,8 +391,8 @@ UvUnwrapResult unwrapUvs(const Mesh& mesh, const UvUnwrapOptions& options) {
     (packShelves(charts, order, mid, size, pad) ? lo : hi) = mid;
   }
   if (!(lo > 0) || !packShelves(charts, order, lo, size, pad))
-    throw InputError("mesh", "unwrap", std::to_string(charts.size()) + " charts do not fit a " + std::to_string(size) +
-                                           "-texel texture with " + std::to_string(pad) + " texels of padding");
+    throw InputError(options.source, "unwrap", std::to_string(charts.size()) + " charts do not fit a " + std::to_string(size) +
+                                                   "-texel texture with " + std::to_string(pad) + " texels of padding (a larger --size fits them)");
   // Then the charts' own shapes on a skyline, at the largest scale that fits (bisection from the
   // shelves' scale up); the shelves stay when the skyline does no better.
   std::vector<std::vector<glm::vec2>> corners(charts.size());

@@ -8,6 +8,7 @@
 //
 // No Debian package provides an unwrapper (xatlas, UVAtlas are not packaged), so this is marble's own.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "marble/mesh/mesh.h"
@@ -18,6 +19,7 @@ struct UvUnwrapOptions {
   int textureSize = 2048;       // the texture the charts are packed for (padding is in its texels)
   int paddingTexels = 4;        // empty texels kept on every side of a chart
   float coneAngleDeg = 50.0f;   // largest angle between a face normal and its chart's seed normal
+  std::string source = "mesh";  // names the mesh in errors (its file)
 };
 
 struct UvUnwrapStats {

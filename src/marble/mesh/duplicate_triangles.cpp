@@ -3,7 +3,10 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <vector>
+
+#include "marble/core/parallel_for.h"
 
 namespace marble {
 namespace {
@@ -50,30 +53,45 @@ uint64_t hashOf(const std::array<Corner, 3>& key) {
 size_t removeDuplicateTriangles(Mesh& mesh) {
   const size_t count = mesh.indices.size() / 3;
   if (count < 2) return 0;
-  // Open addressing over kept triangles, load factor <= 1/2; each slot holds a kept triangle's
-  // position in the output (its key is recomputed on a hash match, which is rare).
+  // Every triangle's hash first, over threads (reading three random positions is most of the
+  // cost, and triangles are independent).
+  std::vector<uint64_t> hashes(count);
+  parallelFor(count, 100000, [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; ++t) hashes[t] = hashOf(canonical(mesh, t));
+  });
+  // Then in file order, open addressing over kept triangles, load factor <= 1/2. A slot holds a
+  // kept triangle's position in the output (low 32 bits) and the high half of its hash, so that
+  // a probe reads one word; a key is recomputed only when the whole hash matches (rare). The slot
+  // of a triangle a few ahead is prefetched: the table is far larger than the caches.
   size_t capacity = 16;
   while (capacity < count * 2) capacity *= 2;
-  constexpr uint32_t kEmpty = UINT32_MAX;
-  std::vector<uint32_t> slots(capacity, kEmpty);
-  std::vector<uint64_t> hashes;  // of each kept triangle
-  hashes.reserve(count);
+  const size_t mask = capacity - 1;
+  constexpr uint64_t kEmpty = UINT64_MAX;  // no triangle's slot: output positions are < 2^32 - 1
+  std::vector<uint64_t> slots(capacity, kEmpty);
+  std::vector<uint32_t> keptHashLow;  // the low half of each kept triangle's hash
+  keptHashLow.reserve(count);
+  constexpr size_t kAhead = 8;
   size_t kept = 0;
   for (size_t t = 0; t < count; ++t) {
-    const auto key = canonical(mesh, t);
-    const uint64_t h = hashOf(key);
-    size_t slot = static_cast<size_t>(h) & (capacity - 1);
+    if (t + kAhead < count) __builtin_prefetch(&slots[static_cast<size_t>(hashes[t + kAhead]) & mask]);
+    const uint64_t h = hashes[t];
+    const uint32_t high = static_cast<uint32_t>(h >> 32);
+    size_t slot = static_cast<size_t>(h) & mask;
     bool duplicate = false;
-    for (; slots[slot] != kEmpty; slot = (slot + 1) & (capacity - 1)) {
-      const uint32_t k = slots[slot];
-      if (hashes[k] == h && canonical(mesh, k) == key) {
+    std::optional<std::array<Corner, 3>> key;  // triangle t's, made at the first full hash match
+    for (; slots[slot] != kEmpty; slot = (slot + 1) & mask) {
+      const uint64_t entry = slots[slot];
+      const uint32_t k = static_cast<uint32_t>(entry);
+      if (static_cast<uint32_t>(entry >> 32) != high || keptHashLow[k] != static_cast<uint32_t>(h)) continue;
+      if (!key) key = canonical(mesh, t);
+      if (canonical(mesh, k) == *key) {
         duplicate = true;
         break;
       }
     }
     if (duplicate) continue;
-    slots[slot] = static_cast<uint32_t>(kept);
-    hashes.push_back(h);
+    slots[slot] = (static_cast<uint64_t>(high) << 32) | kept;
+    keptHashLow.push_back(static_cast<uint32_t>(h));
     if (kept != t)
       for (int i = 0; i < 3; ++i) mesh.indices[3 * kept + i] = mesh.indices[3 * t + i];
     ++kept;

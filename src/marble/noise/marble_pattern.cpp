@@ -1,5 +1,7 @@
 #include "marble/noise/marble_pattern.h"
 
+#include "marble/noise/turbulence_grid.h"
+
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -147,6 +149,46 @@ glm::vec3 patternColor(const Material& m, float v) { return patglsl::pat_color(t
 glm::vec3 marbleAlbedo(const Material& m, glm::vec3 objectPos, glm::vec3 objectNormal) {
   if (m.vein_model != VeinModel::Paper) return veinAlbedo(m, objectPos);
   return patglsl::pat_albedo(toParams(m), objectPos, objectNormal);
+}
+
+AlbedoSampler::AlbedoSampler(const Material& m, double expectedPoints) : material_(m), resolution_(m.resolution) {
+  if (turbulenceGridDimensions(m) != 3) return;
+  const double perPoint = m.vein_model != VeinModel::Paper ? 4.0 : 1.0;  // turbulences at one point
+  const double gridTexels = std::pow(static_cast<double>(m.resolution), 3.0);
+  if (expectedPoints * perPoint < 0.25 * gridTexels) return;
+  grid_ = bakeTurbulenceGrid(m);
+}
+
+float AlbedoSampler::gridTurbulence(glm::vec3 q) const {
+  // The texture unit's GL_LINEAR with GL_REPEAT on a grid whose texel i holds the turbulence at
+  // q = i (marble_pattern.glsl samples at (q + 0.5) / W).
+  const int w = resolution_;
+  const glm::vec3 f0 = glm::vec3(patglsl::floor(q.x), patglsl::floor(q.y), patglsl::floor(q.z));
+  const glm::vec3 f = q - f0;
+  auto wrap = [w](float i) {
+    const int k = static_cast<int>(i) % w;
+    return k < 0 ? k + w : k;
+  };
+  const int x0 = wrap(f0.x), y0 = wrap(f0.y), z0 = wrap(f0.z);
+  const int x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == w ? 0 : y0 + 1, z1 = z0 + 1 == w ? 0 : z0 + 1;
+  auto at = [&](int x, int y, int z) { return static_cast<float>(grid_[(static_cast<size_t>(z) * w + y) * w + x]); };
+  auto lerp = [](float a, float b, float t) { return a + (b - a) * t; };
+  const float c00 = lerp(at(x0, y0, z0), at(x1, y0, z0), f.x), c10 = lerp(at(x0, y1, z0), at(x1, y1, z0), f.x);
+  const float c01 = lerp(at(x0, y0, z1), at(x1, y0, z1), f.x), c11 = lerp(at(x0, y1, z1), at(x1, y1, z1), f.x);
+  return lerp(lerp(c00, c10, f.y), lerp(c01, c11, f.y), f.z) * (1.0f / 65535.0f);
+}
+
+glm::vec3 AlbedoSampler::operator()(glm::vec3 objectPos, glm::vec3 objectNormal) const {
+  if (grid_.empty()) return marbleAlbedo(material_, objectPos, objectNormal);
+  const PatParams P = toParams(material_);
+  if (material_.vein_model != VeinModel::Paper) {
+    float t[4];
+    for (int k = 0; k < 4; ++k) t[k] = gridTurbulence(patglsl::pat_vein_sample_point(P, objectPos, k));
+    return patglsl::pat_vein_albedo(P, objectPos, t[0], t[1], t[2], t[3]);
+  }
+  // The solid mapping (the only paper-model mapping with a 3D grid): pat_value_at's first case.
+  const glm::vec3 q = patglsl::pat_texel_pos(P, objectPos);
+  return patglsl::pat_color(P, patglsl::pat_sine(patglsl::pat_ramp3(P, q), gridTurbulence(q), P.turbPower));
 }
 
 // ---- batched rows ----

@@ -5,6 +5,9 @@
 //
 // Units: "texel" coordinates q address the paper's W x W texture (W = Material::resolution);
 // object-space positions p map to texels by q = p * (W / 2) / pattern_scale.
+#include <cstdint>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "marble/scene/material.h"
@@ -68,5 +71,28 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
 // turbOut and/or valueOut may be null.
 void patternRow2(const Material& m, const float* xs, float y, int count, float* turbOut, float* valueOut);
 void patternRow3(const Material& m, const float* xs, float y, float z, int count, float* turbOut, float* valueOut);
+
+// ---- many points at once (`marble bake`) ----
+// marbleAlbedo at arbitrary points, with the turbulence read from the baked grid
+// (turbulence_grid.h) by trilinear interpolation, as the GPU reads it, where that grid is exact
+// and solid (the value basis, turb_size a power of two dividing resolution <= 256; the solid
+// mapping or a vein model), and worth its bake: when the points would evaluate at least a
+// quarter as many turbulences as the grid has texels (one grid texel by rows costs about a
+// fifth of one turbulence at a point: docs/performance.md, "Bake"). Otherwise, and for the
+// planar and triplanar mappings of the paper's model, it is marbleAlbedo itself. The two agree
+// to the grid's 16-bit rounding of the turbulence (tested); the sampler is read-only after
+// construction, so threads share it.
+class AlbedoSampler {
+ public:
+  AlbedoSampler(const Material& m, double expectedPoints);
+  glm::vec3 operator()(glm::vec3 objectPos, glm::vec3 objectNormal) const;
+  bool usesGrid() const { return !grid_.empty(); }
+
+ private:
+  float gridTurbulence(glm::vec3 q) const;  // q in texels
+  Material material_;
+  std::vector<uint16_t> grid_;  // W^3, x fastest; empty: evaluated per point
+  int resolution_ = 0;
+};
 
 }  // namespace marble

@@ -79,15 +79,34 @@ void Renderer::makeLightProxy() {
   lightMesh_.reset();
   lightProxyMesh_ = Mesh();
   lightProxyErrorUnits_ = 0.0f;
+  lightProxyJob_.reset();  // a copy still being made for an earlier mesh is abandoned
   const size_t triangles = cpuMesh_.triangleCount();
   if (!lightProxyEnabled_ || triangles <= kLightProxyMinTriangles) return;
   const auto target = std::min(kLightProxyMaxTriangles,
                                static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction));
-  SimplifiedMesh proxy = simplifiedMesh(cpuMesh_, target, lightProxyMaxErrorUnits(passes_->lightDepth.size()));
-  if (proxy.mesh.triangleCount() >= triangles) return;  // nothing could be collapsed
+  const float maxError = lightProxyMaxErrorUnits(passes_->lightDepth.size());
+  if (lightProxyInBackground_) {
+    lightProxyJob_.emplace(cpuMesh_, target, maxError);
+    return;
+  }
+  useLightProxy(simplifiedMesh(cpuMesh_, target, maxError));
+}
+
+void Renderer::useLightProxy(SimplifiedMesh proxy) {
+  if (proxy.mesh.triangleCount() >= cpuMesh_.triangleCount()) return;  // nothing could be collapsed
   lightProxyErrorUnits_ = proxy.errorUnits;
   lightMesh_.emplace(proxy.mesh);
   lightProxyMesh_ = std::move(proxy.mesh);
+}
+
+void Renderer::adoptLightProxy(bool wait) {
+  if (!lightProxyJob_ || (!wait && !lightProxyJob_->ready())) return;
+  SimplifiedMesh proxy = lightProxyJob_->take();
+  lightProxyJob_.reset();
+  useLightProxy(std::move(proxy));
+  interactionMesh_.reset();  // made from the proxy from now on
+  interactionIsFull_ = false;
+  invalidate();  // every pass, as after setMesh: the next frame is a fresh renderer's
 }
 
 void Renderer::setLightProxyEnabled(bool enabled) {
@@ -109,6 +128,8 @@ const GpuMesh& Renderer::cameraMesh() {
   if (!interactionMesh_ && !interactionIsFull_) {
     if (cpuMesh_.triangleCount() <= kInteractionTriangles) {
       interactionIsFull_ = true;
+    } else if (lightProxyJob_) {
+      return *mesh_;  // made from the proxy once it is there (from the full mesh: seconds)
     } else {
       // From the light's proxy where there is one: the simplifier's cost grows with what it
       // starts from (1.6 M triangles: 1.7 s from the mesh, far less from the proxy).
@@ -158,6 +179,7 @@ void Renderer::reloadShaders() {
 }
 
 void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
+  adoptLightProxy(false);
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "marble/gl/shader_library.h"
+#include "marble/mesh/background_simplify.h"
 #include "marble/render/albedo_pass.h"
 #include "marble/render/blur_depth_pass.h"
 #include "marble/render/environment_map.h"
@@ -70,6 +71,16 @@ public:
   // from the mesh's (scene units; 0 without a proxy).
   size_t lightTriangleCount() const;
   float lightProxyErrorUnits() const { return lightProxyErrorUnits_; }
+  // The proxy made on a worker thread (the viewer: 2.3 s for a 1.6 M-triangle mesh, which would
+  // freeze the window): setMesh returns at once and the light's pass draws the full mesh until the
+  // proxy is there; the first render() after that takes it and re-runs every pass (isCurrent() is
+  // false from the moment it is ready), so each still frame from then on is exactly what a
+  // renderer that made the proxy in setMesh draws. Off by default (the CLI, tests, benchmarks:
+  // every frame the same). Applies from the next setMesh.
+  void setLightProxyInBackground(bool background) { lightProxyInBackground_ = background; }
+  bool lightProxyPending() const { return lightProxyJob_.has_value(); }
+  // Waits for a pending proxy and takes it now (GL context current).
+  void waitForLightProxy() { adoptLightProxy(true); }
 
   // Which mesh the camera's passes (geometry, floor) draw: the full mesh, or -- while the view
   // moves -- the interaction copy (about kInteractionTriangles, render/mesh_detail.h; made at
@@ -108,7 +119,8 @@ public:
   // no pass at all. (The renderer cannot know that by itself: a new target may get the name of
   // a deleted one.) Call invalidateOutput() after drawing into the target by other means.
   bool isCurrent(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) const {
-    return outputValid_ && lastOutput_ == OutputKey{scene, model, targetFbo, width, height};
+    return outputValid_ && lastOutput_ == OutputKey{scene, model, targetFbo, width, height} &&
+           !(lightProxyJob_ && lightProxyJob_->ready());
   }
   void invalidateOutput() { outputValid_ = false; }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
@@ -140,11 +152,15 @@ private:
   Mesh lightProxyMesh_;                   // its CPU copy (empty without), for the interaction copy
   float lightProxyErrorUnits_ = 0.0f;
   bool lightProxyEnabled_ = true;
+  bool lightProxyInBackground_ = false;
+  std::optional<BackgroundSimplification> lightProxyJob_;  // the proxy being made
   bool drawOrderOptimized_ = true;
   std::optional<GpuMesh> interactionMesh_;  // made at the first Interaction request
   bool interactionIsFull_ = false;          // the mesh is small enough to be its own copy
   MeshDetail detail_ = MeshDetail::Full;
   void makeLightProxy();
+  void useLightProxy(SimplifiedMesh proxy);
+  void adoptLightProxy(bool wait);  // takes a finished (or, with wait, the pending) proxy
   const GpuMesh& cameraMesh();
   const GpuMesh& lightMesh() const { return lightMesh_ ? *lightMesh_ : *mesh_; }
   OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)

@@ -27,6 +27,7 @@ uniform float u_k_schlick;
 uniform float u_metalness;
 uniform int u_reflectance_first;
 uniform int u_schlick_hn;
+uniform int u_schlick_program;  // SchlickBlend: 0 opacity (the paper's text), 1 its program's subtraction
 uniform float u_shininess;
 uniform float u_oren_nayar_sigma;
 // The render mode is a constant of the program (LIGHTING_MODE, defined by the lighting pass):
@@ -148,6 +149,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
                         u_translucency;
 }
 
+// The paper's reflectance (§3.3) on colour C: the Schlick term F over it, by schlick_blend.
+vec3 paper_reflectance(vec3 C, vec3 N, vec3 V, vec3 L) {
+  vec3 F = paper_schlick(C, u_metalness, N, V, L, u_schlick_hn);
+  return u_schlick_program == 1 ? C - u_k_schlick * (1.0 - F) : mix(C, F, u_k_schlick);
+}
+
 void main() {
   o_diffuse = vec4(0.0);
   if (u_mode == MODE_LIGHT_DEPTH) {
@@ -182,10 +189,9 @@ void main() {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;
     if (u_reflectance_first == 0) {
       // Paper §4: subsurface first, its result is the Schlick input colour.
-      vec3 d = albedo * sss;
-      c = mix(d, paper_schlick(d, u_metalness, N, V, L, u_schlick_hn), u_k_schlick);
+      c = paper_reflectance(albedo * sss, N, V, L);
     } else {
-      c = mix(albedo, paper_schlick(albedo, u_metalness, N, V, L, u_schlick_hn), u_k_schlick) * sss;
+      c = paper_reflectance(albedo, N, V, L) * sss;
     }
   } else if (u_mode == MODE_PHONG) {
     c = phong(albedo, N, V, L, u_light_radiance, u_shininess);

@@ -64,6 +64,13 @@ TEST(MaterialIoTest, TheSixPresetsExistAndLoad) {
     EXPECT_TRUE(names.count(want)) << want;
 }
 
+// Issue 14: the built-in material, which `marble --mode paper` renders without a preset, is the
+// paper's (presets/paper.json), not a near copy with other colours and another Schlick cosine.
+TEST(MaterialIoTest, DefaultIsThePaperPreset) {
+  expectSame(Material{}, loadPreset("paper"));
+  EXPECT_NE(Material{}, loadPreset("paper-program"));  // negative control
+}
+
 TEST(MaterialIoTest, EveryPresetFileSpellsOutEveryKey) {
   const auto keys = materialKeys();
   const std::set<std::string> keySet(keys.begin(), keys.end());

@@ -56,7 +56,7 @@ VeinStructure measureTexture(const std::string& preset, const char* file, const 
 std::vector<std::string> stonePresets() {
   std::vector<std::string> names;
   for (const auto& p : builtinPresets())
-    if (p.name != "paper") names.push_back(p.name);
+    if (p.name != "paper" && p.name != "paper-program") names.push_back(p.name);  // the paper's two: its veins
   return names;
 }
 

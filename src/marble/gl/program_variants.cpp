@@ -11,8 +11,4 @@ const Program& ProgramVariants::get(const std::vector<std::string>& defines) {
   return it->second;
 }
 
-void ProgramVariants::compile(const std::vector<std::vector<std::string>>& variants) {
-  for (const auto& v : variants) get(v);
-}
-
 }  // namespace marble::gl

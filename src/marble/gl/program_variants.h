@@ -35,10 +35,6 @@ public:
     return program;
   }
 
-  // Compiles every listed variant now (e.g. after a shader reload, so that an error shows
-  // while the previous programs are still in use).
-  void compile(const std::vector<std::vector<std::string>>& variants);
-
   size_t compiledCount() const { return programs_.size(); }
 
 private:

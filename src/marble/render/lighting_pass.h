@@ -31,7 +31,6 @@ public:
            const EnvironmentMap* environment);  // used when the scene asks for a map; null: none loaded
   GLuint hdrTexture() const { return hdr_.id(); }  // every mode but `marble`: the picture
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
-  GLuint fbo() const { return fbo_.id(); }  // hdrTexture's
   size_t bytes() const {
     return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>(enteringWidth_) * enteringHeight_ * 8;
   }

@@ -97,7 +97,6 @@ public:
   // a scene gets no environment light.
   void setEnvironmentMap(const PrefilteredEnvironment& environment);
   void clearEnvironmentMap();
-  bool hasEnvironmentMap() const { return environment_.has_value(); }
 
   // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
   void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);

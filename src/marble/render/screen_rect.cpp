@@ -33,12 +33,6 @@ ScreenRect projectedBounds(const glm::vec3& lo, const glm::vec3& hi, const glm::
   return {x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0)};
 }
 
-ScreenRect grown(const ScreenRect& r, int px, int width, int height) {
-  const int x0 = std::max(r.x - px, 0), y0 = std::max(r.y - px, 0);
-  const int x1 = std::min(r.x + r.width + px, width), y1 = std::min(r.y + r.height + px, height);
-  return {x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0)};
-}
-
 ScreenRect scaledDown(const ScreenRect& r, int factor) {
   const int x0 = r.x / factor, y0 = r.y / factor;
   const int x1 = (r.x + r.width + factor - 1) / factor, y1 = (r.y + r.height + factor - 1) / factor;

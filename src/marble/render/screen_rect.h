@@ -24,9 +24,6 @@ bool projectBox(const glm::vec3& lo, const glm::vec3& hi, const glm::mat4& mvp, 
 ScreenRect projectedBounds(const glm::vec3& lo, const glm::vec3& hi, const glm::mat4& mvp, int width, int height,
                            int marginPx = 2);
 
-// `r` grown by `px` on every side, clamped to a width x height target.
-ScreenRect grown(const ScreenRect& r, int px, int width, int height);
-
 // The same region in a target 1/`factor` the size (rounded outward).
 ScreenRect scaledDown(const ScreenRect& r, int factor);
 

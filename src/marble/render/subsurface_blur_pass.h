@@ -25,7 +25,6 @@ public:
   void run(const SubsurfaceBlurInputs& in, const CameraMatrices& camera, const Scene& scene, int height,
            const ScreenRect& rect);
   GLuint resultTexture() const { return result_.id(); }
-  GLuint resultFbo() const { return resultFbo_.id(); }
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
   PassTimer& timer() { return timer_; }
 

@@ -19,6 +19,10 @@ enum class NoiseBasis { Value, Perlin };          // key "basis": "value" (the p
 enum class PatternMapping { Planar, Triplanar, Solid };  // key "mapping": "planar" | "triplanar" | "solid"
 enum class ShadingOrder { SubsurfaceFirst, ReflectanceFirst };  // key "order": "sss-first" | "schlick-first"
 enum class SchlickCosine { HdotV, HdotN };        // key "schlick_cos": "hv" | "hn"
+// key "schlick_blend": how the Schlick term meets the colour: "opacity" (the paper's text, §3.3:
+// k_schlick is the term's opacity, mix(colour, F, k)) | "program" (the paper's own program,
+// judgyknowitall/marble-renderable lightPass.fs.glsl: colour - k (1 - F)).
+enum class SchlickBlend { Opacity, Program };
 // key "vein_model": "paper" (the paper's |sin(ramp + turbulence)|) | "network" (crack networks,
 // issue 16) | "breccia" (angular fragments in a matrix of crack veins).
 enum class VeinModel { Paper, Network, Breccia };
@@ -44,8 +48,8 @@ struct PatternParams {
 // The colour ramp over the pattern: read with it.
 struct ColourParams {
   glm::vec3 base_color{0.93f, 0.89f, 0.80f};
-  glm::vec3 vein_color{0.55f, 0.38f, 0.16f};
-  glm::vec3 vein2_color{0.75f, 0.62f, 0.42f};
+  glm::vec3 vein_color{0.52f, 0.3f, 0.09f};
+  glm::vec3 vein2_color{0.74f, 0.56f, 0.3f};
   float vein_sharpness = 1.0f;
   float vein2_amount = 0.0f;
   bool operator==(const ColourParams&) const = default;
@@ -81,7 +85,8 @@ struct PaperModelParams {
   float k_schlick = 0.5f;
   float metalness = 0.0f;
   ShadingOrder order = ShadingOrder::SubsurfaceFirst;
-  SchlickCosine schlick_cos = SchlickCosine::HdotV;
+  SchlickCosine schlick_cos = SchlickCosine::HdotN;  // the paper's H.N
+  SchlickBlend schlick_blend = SchlickBlend::Opacity;
   bool operator==(const PaperModelParams&) const = default;
 };
 
@@ -120,7 +125,8 @@ struct GlossParams {
 struct Material : PatternParams, ColourParams, VeinModelParams, PaperModelParams, ComparisonParams, ScatteringParams,
                   GlossParams {
   std::string name = "paper";
-  std::string description = "The paper's default: cream stone with ochre veins";
+  // The defaults are presets/paper.json, the paper's Figure 10 (MaterialIoTest.DefaultIsThePaperPreset).
+  std::string description = "The paper's default (its Figure 10): cream stone with ochre-brown veins";
 
   bool operator==(const Material&) const = default;
 };

@@ -22,6 +22,8 @@ constexpr EnumChoice kMapping[] = {{static_cast<int>(PatternMapping::Planar), "p
 constexpr EnumChoice kOrder[] = {
     {static_cast<int>(ShadingOrder::SubsurfaceFirst), "sss-first", "subsurface first (paper)"},
     {static_cast<int>(ShadingOrder::ReflectanceFirst), "schlick-first", "reflectance first"}};
+constexpr EnumChoice kBlend[] = {{static_cast<int>(SchlickBlend::Opacity), "opacity", "opacity (paper's text)"},
+                                 {static_cast<int>(SchlickBlend::Program), "program", "subtract (paper's program)"}};
 constexpr EnumChoice kVeinModel[] = {{static_cast<int>(VeinModel::Paper), "paper", "paper (|sin|)"},
                                      {static_cast<int>(VeinModel::Network), "network", "crack network"},
                                      {static_cast<int>(VeinModel::Breccia), "breccia", "breccia"}};
@@ -295,6 +297,16 @@ const ParamDesc kParams[] = {
             "writes it)",
      .modes = modeBit(RenderMode::Paper) | modeBit(RenderMode::Reflectance), .passes = kLightingPassBit,
      .uniform = "u_schlick_hn", .choices = kCos, .slider = {}, MARBLE_FIELD(PaperModelParams::schlick_cos)},
+    {.key = "schlick_blend", .group = ParamGroup::PaperModel, .type = ParamType::Choice, .lo = 0, .hi = 0,
+     .atMost = nullptr, .unit = "", .label = "Schlick blend",
+     .tooltip = "How the Schlick term F meets the colour C. Opacity (the paper's text): mix(C, F, k_schlick).\n"
+                "Subtract (the paper's own program): C - k_schlick * (1 - F), which darkens the stone except at\n"
+                "grazing angles.",
+     .doc = "`\"opacity\"`: k_schlick is the Schlick term's opacity over the colour C, `mix(C, F, k)` (the paper's "
+            "§3.3 text); `\"program\"`: `C − k·(1 − F)`, what the paper's own program computes "
+            "(judgyknowitall/marble-renderable, `lightPass.fs.glsl`; preset `paper-program`)",
+     .modes = modeBit(RenderMode::Paper), .passes = kLightingPassBit, .uniform = "u_schlick_program",
+     .choices = kBlend, .slider = {}, MARBLE_FIELD(PaperModelParams::schlick_blend)},
 
     // --- comparison models ---
     {.key = "shininess", .group = ParamGroup::Comparison, .type = ParamType::Float, .lo = 0, .hi = 10000,

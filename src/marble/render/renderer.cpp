@@ -214,7 +214,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
   const float seen = marble ? seenVeinAttenuation(scene) : 0.0f;
   if (viewMoved || !sameGroups(scene.material, lastMaterial_, kAlbedoGroups) || seen != lastSeenAttenuation_ ||
-      (seen > 0.0f && scene.material.ior != lastMaterial_.ior))
+      (seen > 0.0f && scene.material.ior != lastMaterial_.ior) || albedoFromPost_ != marble)
     albedoValid_ = false;
   lastSeenAttenuation_ = seen;
   passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
@@ -224,6 +224,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
                         scene.material, turbulence_.update(scene.material), rect);
     albedoValid_ = true;
+    albedoFromPost_ = false;
     times_.albedoRan = true;
   }
   lastLight_ = light;
@@ -284,7 +285,10 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   times_.diffuseSource = marble ? static_cast<int>(source) : -1;
   times_.postRan = true;
   times_.fxaaRan = fxaa;
-  if (marble) albedoValid_ = true;  // the post pass wrote it (other modes: the albedo pass, or not needed)
+  if (marble) {  // the post pass wrote it (other modes: the albedo pass, or not needed)
+    albedoValid_ = true;
+    albedoFromPost_ = true;
+  }
   diffuseValid_ = marble;  // other modes do not write it
   const bool stage = sceneHasStage(scene);
   if (stage) {

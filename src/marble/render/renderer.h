@@ -185,6 +185,11 @@ private:
   bool lightingValid_ = false;
   bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's
   bool albedoValid_ = false;     // the albedo texture holds the current view's and pattern's
+  // Which program wrote the albedo texture: marble's post pass (true) or the albedo pass. Each
+  // mode reuses only its own: the two programs compute the pattern from the same source, but
+  // GLSL does not promise that two programs round an expression alike, and a few pixels one
+  // 8-bit level apart would make a cached frame differ from a fresh one.
+  bool albedoFromPost_ = false;
   bool diffuseValid_ = false;    // the post pass's diffuse part is the current frame's (`marble`)
   // What the last frame drew, and where: a call with the same draws nothing.
   struct OutputKey {

@@ -53,6 +53,7 @@ uniform vec3 u_pat_cloud_color;
 uniform float u_pat_cloud_amount;
 uniform float u_pat_grain_amount;
 uniform float u_pat_fragment_tint;
+uniform float u_pat_fragment_split;
 
 PatParams marble_params() {
   PatParams P;
@@ -83,6 +84,7 @@ PatParams marble_params() {
   P.cloudAmount = u_pat_cloud_amount;
   P.grainAmount = u_pat_grain_amount;
   P.fragmentTint = u_pat_fragment_tint;
+  P.fragmentSplit = u_pat_fragment_split;
   return P;
 }
 

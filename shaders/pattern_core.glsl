@@ -66,6 +66,7 @@ struct PatParams {
   float cloudAmount;  // [0,1]
   float grainAmount;  // [0,1]: contrast of the fine calcite grain
   float fragmentTint; // [0,1], breccia: how much fragments differ in colour
+  float fragmentSplit; // [0,1], breccia: probability that a fragment is broken again at the next finer spacing
 };
 
 // ---- white noise ------------------------------------------------------------------------
@@ -335,8 +336,7 @@ vec3 pat_albedo(PatParams P, vec3 objectPos, vec3 objectNormal) {
 //     swell, pinch and fade out inside the stone;
 //   * three families at different spacings (dominant, secondary, hairline) are composed from
 //     the finest to the coarsest over a cloudy ground with fine grain;
-//   * breccia: the dominant family's cells are angular fragments, each tinted at random, and
-//     its faces are the matrix between them.
+//   * breccia: angular fragments of three sizes in a matrix, cut by cracks (see "breccia" below).
 // Voronoi search: the 2 x 2 x 2 cells nearest the point (not 3 x 3 x 3), with feature points
 // jittered over the central 80 % of their cells. This is exact for F1 almost everywhere and
 // rarely picks a wrong F2 (a short straight cut in a vein where it does, hidden by the warp);
@@ -524,22 +524,82 @@ vec3 pat_vein_warped(PatParams P, vec3 objectPos, float t0, float t1, float t2) 
   return objectPos + (vec3(t0, t1, t2) - 0.5f) * (2.0f * P.veinWarp);
 }
 
-// The three families' coverages at warped point p with width field m: (dominant -- for breccia
-// the matrix between fragments --, secondary, hairline), and in w the dominant cell's random
-// in [0,1) (breccia: which tint its fragment takes).
+// ---- breccia (issue 16): fragments of many sizes ------------------------------------------
+// A breccia is rock broken into angular fragments, cemented by a matrix of another mineral and
+// often cut again by later calcite veins. Fragment sizes in broken rock follow a power law,
+// N(> r) ~ r^-D with D about 2.5 (Turcotte, "Fractals and fragmentation", J. Geophys. Res. 91,
+// 1986), which a fragmentation cascade produces (his renormalization model): each fragment of
+// one scale is broken into the cells of the next finer family with probability p, the others
+// stay whole. With spacings s_i and s_i+1 = s_i / r, D = 3 + ln p / ln r (Turcotte's is r = 2,
+// D = ln(8p) / ln 2): p = 0.5 and r = 3 give D = 2.4. Here the cascade has three levels (the
+// three families' spacings: clasts, smaller fragments, grit), so the law holds over the range
+// the spacings span and not beyond; the finer cells are not nested in the coarser ones as
+// Turcotte's cubes are, so a broken fragment's border cuts its pieces (more angular shards, the
+// same counts to within the cells the border crosses).
+//   * level 0: the dominant family's cells are the fragments, all its faces matrix;
+//   * level 1: in a broken fragment every face of the secondary family is matrix (of the
+//     secondary width) between smaller fragments; in a whole fragment its filled faces are cracks
+//     inside the fragment (vein2Color, under the matrix: the fragment was veined before it broke);
+//   * level 2: the same with the hairline family inside the broken level-1 fragments (grit);
+//     elsewhere its filled faces are late calcite veins (vein3Color) drawn over fragments and
+//     matrix alike.
+// The matrix's width varies from face to face (0.4 to 1.6 times its width, at random per face:
+// fragments that nearly touch beside fragments that float in the matrix) and along each face
+// (the width field, as the veins). Each fragment, of whichever level, takes its own tint.
+
+// A per-cell random in [0,1) for purpose `salt` (the cell's hash rehashed: independent bits).
+float pat_cell_random(uint h, uint salt) { return pat_unit(pat_hash(h + salt)); }
+
+// Width w modulated by the width field m in [0,1]: from (1 - pinch) to (1 + pinch) times w; at
+// pinch 1 the vein fades out where m is low.
+float pat_pinched(PatParams P, float w, float m) { return w * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f); }
+
+// The matrix on the faces of cells c of full width w (before the per-face factor), at the surface.
+float pat_matrix_cover(PatParams P, PatCells c, float spacing, float w) {
+  return pat_vein_cover(c.edge * spacing, w * (0.4f + 1.2f * pat_face_random(c)), P.veinSoftness);
+}
+
+// The breccia's coverages at warped point p with width field m: (matrix, cracks inside whole
+// fragments, late hairline veins, the random of the fragment p is in). The level-0 matrix is also
+// seen along the ray (attenuation k), as the dominant veins are.
+vec4 pat_breccia_covers(PatParams P, vec3 p, float m, vec3 ray, float k) {
+  const uint kBroken = 0x2545f491u;
+  PatCells f = pat_voronoi(pat_stretch(p, P.veinNormal, P.veinStretch) * (1.0f / P.veinSpacing.x), 0x9e3779b9u);
+  float matrix = pat_cells_cover(P, f, P.veinSpacing.x, P.veinStretch,
+                                 pat_pinched(P, P.veinWidth.x, m) * (0.4f + 1.2f * pat_face_random(f)), ray, k);
+  uint fragment = f.h1;
+  float s2 = sqrt(P.veinStretch);
+  PatCells s = pat_voronoi(pat_stretch(p, P.veinNormal, s2) * (1.0f / P.veinSpacing.y), 0x165667b1u);
+  float w1 = pat_pinched(P, P.veinWidth.y, m);
+  bool broken = pat_cell_random(f.h1, kBroken) < P.fragmentSplit;
+  float crack = 0.0f;
+  if (broken) {
+    matrix = max(matrix, pat_matrix_cover(P, s, P.veinSpacing.y, w1));
+    fragment = s.h1;
+  } else if (pat_face_random(s) < P.veinDensity.y) {
+    crack = pat_vein_cover(s.edge * P.veinSpacing.y, w1, P.veinSoftness);
+  }
+  PatCells h = pat_voronoi(p * (1.0f / P.veinSpacing.z), 0x27d4eb2fu);
+  float w2 = pat_pinched(P, P.veinWidth.z, 1.0f - m);
+  float hair = 0.0f;
+  if (broken && pat_cell_random(s.h1, kBroken) < P.fragmentSplit) {
+    matrix = max(matrix, pat_matrix_cover(P, h, P.veinSpacing.z, w2));
+    fragment = h.h1;
+  } else if (pat_face_random(h) < P.veinDensity.z) {
+    hair = pat_vein_cover(h.edge * P.veinSpacing.z, w2, P.veinSoftness);
+  }
+  return vec4(matrix, crack, hair, pat_cell_random(fragment, 0x85ebca6bu));
+}
+
+// The three families' coverages at warped point p with width field m: (dominant, secondary,
+// hairline), w unused (0); breccia: pat_breccia_covers.
 vec4 pat_vein_covers(PatParams P, vec3 p, float m, vec3 ray, float k) {
+  if (P.veinModel == PAT_VEINS_BRECCIA) return pat_breccia_covers(P, p, m, ray, k);
   // Seen through the polish: the dominant family only (the finer veins' buried parts are as
   // thin as they are, well under a pixel at the sizes they are drawn at, and cost as much).
   float hair = pat_family_cover(P, p, P.veinSpacing.z, 1.0f, P.veinWidth.z, P.veinDensity.z, 1.0f - m, 0x27d4eb2fu, ray, 0.0f);
   float secondary =
       pat_family_cover(P, p, P.veinSpacing.y, sqrt(P.veinStretch), P.veinWidth.y, P.veinDensity.y, m, 0x165667b1u, ray, 0.0f);
-  if (P.veinModel == PAT_VEINS_BRECCIA) {
-    // Every face of the dominant family is matrix: the fragments are its cells.
-    PatCells f = pat_voronoi(pat_stretch(p, P.veinNormal, P.veinStretch) * (1.0f / P.veinSpacing.x), 0x9e3779b9u);
-    float width = P.veinWidth.x * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f);
-    float matrix = pat_cells_cover(P, f, P.veinSpacing.x, P.veinStretch, width, ray, k);
-    return vec4(matrix, secondary, hair, pat_unit(pat_hash(f.h1 + 0x85ebca6bu)));
-  }
   float dominant =
       pat_family_cover(P, p, P.veinSpacing.x, P.veinStretch, P.veinWidth.x, P.veinDensity.x, m, 0x9e3779b9u, ray, k);
   return vec4(dominant, secondary, hair, 0.0f);
@@ -554,10 +614,17 @@ vec4 pat_vein_shade_seen(PatParams P, vec3 objectPos, float t0, float t1, float 
   vec4 cov = pat_vein_covers(P, pat_vein_warped(P, objectPos, t0, t1, t2), pat_spread(t3), ray, k);
   // Ground: clouds (the third warp sample, a broad turbulence); breccia fragments' tints.
   vec3 c = pat_mix3(P.baseColor, P.cloudColor, P.cloudAmount * pat_spread(t2));
-  if (P.veinModel == PAT_VEINS_BRECCIA) c = pat_mix3(c, P.cloudColor, P.fragmentTint * cov.w);
-  c = pat_mix3(c, P.vein3Color, cov.z);
-  c = pat_mix3(c, P.vein2Color, cov.y);
-  c = pat_mix3(c, P.veinColor, cov.x);
+  if (P.veinModel == PAT_VEINS_BRECCIA) {
+    // Fragment tint; the cracks inside fragments under the matrix, the late veins over it.
+    c = pat_mix3(c, P.cloudColor, P.fragmentTint * cov.w);
+    c = pat_mix3(c, P.vein2Color, cov.y);
+    c = pat_mix3(c, P.veinColor, cov.x);
+    c = pat_mix3(c, P.vein3Color, cov.z);
+  } else {
+    c = pat_mix3(c, P.vein3Color, cov.z);
+    c = pat_mix3(c, P.vein2Color, cov.y);
+    c = pat_mix3(c, P.veinColor, cov.x);
+  }
   // Grain: one octave of value noise at 1.5 texels, a multiplicative speckle.
   float g = pat_value3(pat_texel_pos(P, objectPos) * 0.6667f, 1048576.0f, 0x3c6ef372u);
   c = c * (1.0f + P.grainAmount * (g - 0.5f));

@@ -3,7 +3,9 @@
 // tests/vein_structure.h do what they claim on pictures whose answer is known.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "marble/core/error.h"
@@ -83,6 +85,66 @@ TEST(VeinPattern, VeinsAreSomewhereAndNotEverywhere) {
         veins += veinPatternValue(m, {-1.0f + x / 32.0f, -1.0f + y / 32.0f, 0.1f}) < 0.5f ? 1 : 0;
     EXPECT_GT(veins, total / 100) << preset;
     EXPECT_LT(veins, total / 2) << preset;
+  }
+}
+
+// Breccia fragments come in many sizes (pattern_core.glsl, "breccia": the fragmentation
+// cascade). On a 256 x 256 slice across [-1,1]^2 (no cracks: the matrix alone parts the
+// fragments), the fragments -- 4-connected regions of value > 0.5 -- are counted per decade of
+// area in pixels: [4, 40), [40, 400), [400, 4000). A breccia has fragments in every decade. The
+// negative control is the same preset with fragment_split 0 (one size of cells, as before the
+// cascade: crackle glaze), whose fragments crowd one or two decades; its smallest decade holds only the
+// slivers where the slice grazes a cell's corner.
+std::array<int, 3> fragmentsPerDecade(const Material& m) {
+  constexpr int n = 256;
+  std::vector<float> v(static_cast<size_t>(n) * n);
+  for (int y = 0; y < n; ++y)
+    veinAlbedoRow(m, {-1.0f + 1.0f / n, -1.0f + (2.0f * y + 1.0f) / n, 0.1f}, {2.0f / n, 0.0f, 0.0f}, n, nullptr,
+                  &v[static_cast<size_t>(y) * n]);
+  std::vector<int> label(v.size(), 0);
+  std::array<int, 3> decades{};
+  std::vector<size_t> stack;
+  for (size_t start = 0; start < v.size(); ++start) {
+    if (label[start] || v[start] <= 0.5f) continue;
+    int area = 0;
+    stack.push_back(start);
+    label[start] = 1;
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      ++area;
+      const int x = static_cast<int>(i % n), y = static_cast<int>(i / n);
+      for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= n || ny >= n) continue;
+        const size_t j = static_cast<size_t>(ny) * n + nx;
+        if (label[j] || v[j] <= 0.5f) continue;
+        label[j] = 1;
+        stack.push_back(j);
+      }
+    }
+    if (area >= 4 && area < 4000) ++decades[static_cast<size_t>(std::log10(area / 4.0))];
+  }
+  return decades;
+}
+
+// Measured (2026-12-02, the four breccia presets): 28-169, 41-113, 16-17 fragments per decade
+// with the cascade; 1-2, 5-15, 13-16 without. The pass mark: at least 20 in each of the two
+// smaller decades and 5 in the largest.
+bool manySizes(const std::array<int, 3>& d) { return d[0] >= 20 && d[1] >= 20 && d[2] >= 5; }
+
+TEST(VeinPattern, BrecciaFragmentsComeInManySizes) {
+  for (const char* preset : {"breccia-pernice", "emperador", "rosso-levanto", "verde-alpi"}) {
+    Material m = loadPreset(preset);
+    ASSERT_GT(m.fragment_split, 0.0f) << preset;
+    m.vein_density = glm::vec3(m.vein_density.x, 0.0f, 0.0f);
+    const std::array<int, 3> cascade = fragmentsPerDecade(m);
+    m.fragment_split = 0.0f;
+    const std::array<int, 3> oneSize = fragmentsPerDecade(m);
+    std::printf("%s: fragments per decade of area (4-40, 40-400, 400-4000 px): %d %d %d; without the cascade %d %d %d\n",
+                preset, cascade[0], cascade[1], cascade[2], oneSize[0], oneSize[1], oneSize[2]);
+    EXPECT_TRUE(manySizes(cascade)) << preset;
+    EXPECT_FALSE(manySizes(oneSize)) << preset << ": the negative control";
   }
 }
 

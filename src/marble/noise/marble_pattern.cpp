@@ -73,6 +73,7 @@ PatParams toParams(const Material& m) {
   P.cloudAmount = m.cloud_amount;
   P.grainAmount = m.grain_amount;
   P.fragmentTint = m.fragment_tint;
+  P.fragmentSplit = m.fragment_split;
   return P;
 }
 

@@ -74,6 +74,7 @@ struct VeinModelParams {
   float cloud_amount = 0.5f;
   float grain_amount = 0.06f;
   float fragment_tint = 0.0f;
+  float fragment_split = 0.0f;
   bool operator==(const VeinModelParams&) const = default;
 };
 

@@ -181,8 +181,9 @@ const ParamDesc kParams[] = {
     {.key = "vein_width", .group = ParamGroup::VeinModel, .type = ParamType::Vec3, .lo = 0, .hi = 10, .atMost = nullptr,
      .unit = "object units", .label = "width",
      .tooltip = "Full width of each family's veins, object units: how thick the mineral filling is.\n"
-                "Breccia: the first is the matrix between fragments.",
-     .doc = "full thickness of each family's mineral filling; breccia: the first is the matrix",
+                "Breccia: the first is the matrix between fragments; the others also between the smaller fragments of broken ones.",
+     .doc = "full thickness of each family's mineral filling; breccia: the first is the matrix, the others also the matrix "
+            "between the smaller fragments of broken ones (`fragment_split`)",
      .modes = kShadingModes, .passes = kPattern, .uniform = "u_pat_vein_width", .choices = {}, .slider = {1.0e-4f, 0.5f, true, "%.4g"},
      MARBLE_FIELD(VeinModelParams::vein_width), .active = &veinNetwork, .inactive = kWithPaperVeins, .hideInactive = true},
     {.key = "vein_density", .group = ParamGroup::VeinModel, .type = ParamType::Vec3, .lo = 0, .hi = 1, .atMost = nullptr,
@@ -254,6 +255,15 @@ const ParamDesc kParams[] = {
      .doc = "breccia: how far each fragment's colour goes from `base_color` toward `cloud_color` (at random per fragment)",
      .modes = kShadingModes, .passes = kPattern, .uniform = "u_pat_fragment_tint", .choices = {}, .slider = {0.0f, 1.0f, false},
      MARBLE_FIELD(VeinModelParams::fragment_tint), .active = &breccia, .inactive = "used only with vein_model breccia", .hideInactive = true},
+    {.key = "fragment_split", .group = ParamGroup::VeinModel, .type = ParamType::Float, .lo = 0, .hi = 1, .atMost = nullptr,
+     .unit = "", .label = "fragment split",
+     .tooltip = "Chance that a fragment is broken again into fragments of the next finer spacing (secondary, then hairline).\n"
+                "0: fragments of one size (crackle glaze); 0.3-0.6: clasts, smaller fragments and grit, as in real breccias.",
+     .doc = "breccia: probability that a fragment is broken again into the cells of the next finer family (a fragmentation "
+            "cascade, Turcotte 1986): 0 fragments of one size; sizes then follow N(>r) ~ r^-D, D = 3 + ln p / ln r for a "
+            "spacing ratio r (0.5 and 3: D = 2.4), over the range the three spacings span",
+     .modes = kShadingModes, .passes = kPattern, .uniform = "u_pat_fragment_split", .choices = {}, .slider = {0.0f, 1.0f, false},
+     MARBLE_FIELD(VeinModelParams::fragment_split), .active = &breccia, .inactive = "used only with vein_model breccia", .hideInactive = true},
 
     // --- the paper's models (§3.2, §3.3, §4) ---
     {.key = "sigma_t", .group = ParamGroup::PaperModel, .type = ParamType::Vec3, .lo = 0, .hi = 1000,

@@ -101,10 +101,10 @@ void Renderer::adoptLightProxy(bool wait) {
   useLightProxy(std::move(proxy));
   interactionMesh_.reset();  // made from the proxy from now on
   interactionIsFull_ = false;
-  // The light's pass re-runs with the proxy, the camera's with the interaction copy now made
-  // from it: the next frame is what a renderer that made the proxy in setMesh draws.
-  cache_.changed(PassInput::LightMesh);
-  interactionCopyRemade();
+  // Every pass, as after setMesh, not only those that read the light's mesh: the next frame is
+  // then a fresh renderer's bit for bit (a `marble` frame reusing the stored albedo can differ
+  // from one evaluating the pattern by one level in a pixel: two programs need not round alike).
+  invalidate();
 }
 
 void Renderer::setLightProxyEnabled(bool enabled) {

@@ -22,9 +22,11 @@ bool sameInput(PassInput i, const FrameInputs& a, const FrameInputs& b) {
     case PassInput::TurbulenceGrid: return true;  // by revision (PassCache)
     case PassInput::Model: return sameMatrix(a.model, b.model);
     case PassInput::LightMatrices:
+      // `direction` is set for a directional light only (view_setup.cpp leaves it unset otherwise).
       return sameMatrix(a.light.viewProj, b.light.viewProj) && a.light.position == b.light.position &&
-             a.light.direction == b.light.direction && a.light.directional == b.light.directional &&
-             a.light.near == b.light.near && a.light.far == b.light.far;
+             a.light.directional == b.light.directional &&
+             (!a.light.directional || a.light.direction == b.light.direction) && a.light.near == b.light.near &&
+             a.light.far == b.light.far;
     case PassInput::CameraMatrices: return sameMatrix(a.camera.viewProj, b.camera.viewProj);
     case PassInput::FrameSize: return a.width == b.width && a.height == b.height;
     case PassInput::Light: return a.scene.light == b.scene.light;

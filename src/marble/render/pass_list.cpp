@@ -44,8 +44,8 @@ constexpr PassDecl kPasses[] = {
      true},
     {Pass::Stage, "stage", "stage",
      "Backdrop and ground around the object (and, when the mesh or model changed, the ground's contact map).",
-     in(I::LightMesh) | in(I::Model) | in(I::Light) | in(I::LightMatrices) | in(I::Camera) | in(I::CameraMatrices) |
-         in(I::Environment) | in(I::EnvironmentMap) | in(I::Scene),
+     in(I::Model) | in(I::Light) | in(I::LightMatrices) | in(I::Camera) | in(I::CameraMatrices) | in(I::Environment) |
+         in(I::EnvironmentMap) | in(I::Scene),
      0, 0, of(Pass::LightDepth) | of(Pass::Geometry) | of(Pass::Post), true},
     {Pass::Fxaa, "fxaa", "fxaa",
      "Antialiasing (FXAA) of the displayed picture, on the tiles the object can cover.",

@@ -1,17 +1,9 @@
 #pragma once
-// The renderer owns the passes and runs them in the order of passList() (render/pass_list.h),
-// each cached one only when an input it declares there changed since its output was made
-// (render/pass_cache.h); the passes that draw the picture run in every frame that is drawn:
-//   light depth      the light's mesh, model, light          -> distance and depth from the light
-//   geometry         the camera's mesh, model, camera, size  -> normal and depth (the G-buffer)
-//   albedo           G-buffer, pattern groups                -> the pattern per pixel (not `marble`)
-//   blur depth       G-buffer                                -> depth at the blur's half resolution
-//   lighting         light depth, G-buffer, albedo, light, camera, mode, the mode's groups
-//   subsurface blur  lighting                                -> (`marble`) diffused light
-//   post             every frame: composes `marble` (diffused light x albedo + reflection)
-//   stage, FXAA      every frame the scene has them (display image -> target)
-// The screen passes draw only inside the mesh's screen rectangle.
-// The viewer and the CLI own nothing of GL but a context and a Renderer.
+// The renderer owns the passes and runs them in the order of passList() (render/pass_list.h,
+// which also says what each reads; docs/architecture.md "One frame" draws it): a cached pass
+// only when an input it declares changed since its output was made (render/pass_cache.h), the
+// passes that draw the picture in every frame that is drawn. The screen passes draw only inside
+// the mesh's screen rectangle. The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
 

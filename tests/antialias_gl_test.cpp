@@ -75,7 +75,7 @@ TEST_F(AntialiasFixture, FxaaIsTimedAndNeedsNoMemoryOfItsOwn) {
   renderImage(renderer, sceneOf(RenderMode::Marble, Antialias::None));
   const size_t without = renderer.glBytes();
   renderImage(renderer, sceneOf(RenderMode::Marble, Antialias::Fxaa));
-  EXPECT_GT(renderer.passTimes(true).fxaaMs, 0.0);
+  EXPECT_GT(renderer.passTimes(true).ms[Pass::Fxaa], 0.0);
   // It reads the display image the post pass always writes (and copies when FXAA is off).
   EXPECT_EQ(renderer.glBytes(), without);
 }

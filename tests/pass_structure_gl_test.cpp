@@ -46,9 +46,9 @@ TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
   s.material.roughness = 0.6f;
   const ImageRGBA8 after = renderImage(renderer, s);
   const PassTimes t = renderer.passTimes(true);
-  EXPECT_FALSE(t.lightDepthRan);
-  EXPECT_FALSE(t.geometryRan);
-  EXPECT_FALSE(t.lightingRan);
+  EXPECT_FALSE(t.ran[Pass::LightDepth]);
+  EXPECT_FALSE(t.ran[Pass::Geometry]);
+  EXPECT_FALSE(t.ran[Pass::Lighting]);
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::Stored)) << "the diffuse part is reused";
   EXPECT_GT(meanAbsDiff(before, after), 0.2) << "the highlight must change";
   EXPECT_EQ(meanAbsDiff(after, freshRender("sphere", s)), 0.0);
@@ -88,8 +88,8 @@ TEST_F(PassFixture, ScatteringChangeReRunsLightingAndBlurButNotGeometry) {
   s.material.sigma_s_mm *= 0.1f;
   const ImageRGBA8 cached = renderImage(renderer, s);
   const PassTimes t = renderer.passTimes(true);
-  EXPECT_FALSE(t.geometryRan);
-  EXPECT_TRUE(t.lightingRan);
+  EXPECT_FALSE(t.ran[Pass::Geometry]);
+  EXPECT_TRUE(t.ran[Pass::Lighting]);
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::StoredAlbedo)) << "the albedo is reused";
   // Different programs (the fresh frame evaluates the pattern): the stored values are used as
   // stored on both sides, but the two compilations may round a value differently -- one level
@@ -104,10 +104,10 @@ TEST_F(PassFixture, PatternChangeReRunsOnlyThePatternAndMatchesAFreshRender) {
   s.material.vein_color = glm::vec3(0.1f, 0.3f, 0.6f);
   const ImageRGBA8 cached = renderImage(renderer, s);
   const PassTimes t = renderer.passTimes(true);
-  EXPECT_FALSE(t.geometryRan);
-  EXPECT_FALSE(t.albedoRan) << "`marble` evaluates the pattern in its post pass";
+  EXPECT_FALSE(t.ran[Pass::Geometry]);
+  EXPECT_FALSE(t.ran[Pass::Albedo]) << "`marble` evaluates the pattern in its post pass";
   EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::Pattern));
-  EXPECT_FALSE(t.lightingRan) << "the light entering the stone does not depend on its albedo";
+  EXPECT_FALSE(t.ran[Pass::Lighting]) << "the light entering the stone does not depend on its albedo";
   EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
 }
 
@@ -122,7 +122,7 @@ TEST_F(PassFixture, ModesReuseOnlyTheAlbedoTheirOwnPassWrote) {
   paper.render.mode = RenderMode::Paper;
   renderImage(renderer, marble);
   EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), freshRender("sphere", paper)), 0.0) << "after marble";
-  EXPECT_TRUE(renderer.passTimes(true).albedoRan) << "marble's post pass wrote the albedo";
+  EXPECT_TRUE(renderer.passTimes(true).ran[Pass::Albedo]) << "marble's post pass wrote the albedo";
   EXPECT_EQ(meanAbsDiff(renderImage(renderer, marble), freshRender("sphere", marble)), 0.0) << "after paper";
   EXPECT_EQ(renderer.passTimes(true).diffuseSource, static_cast<int>(DiffuseSource::Pattern));
   paper.light.position = marble.light.position = glm::vec3(-2.0f, 3.0f, 2.0f);
@@ -131,7 +131,22 @@ TEST_F(PassFixture, ModesReuseOnlyTheAlbedoTheirOwnPassWrote) {
       << "marble reuses its own albedo";
   paper.material.vein_color = glm::vec3(0.1f, 0.3f, 0.6f);
   EXPECT_EQ(meanAbsDiff(renderImage(renderer, paper), freshRender("sphere", paper)), 0.0);
-  EXPECT_TRUE(renderer.passTimes(true).albedoRan) << "the paper's mode runs the albedo pass";
+  EXPECT_TRUE(renderer.passTimes(true).ran[Pass::Albedo]) << "the paper's mode runs the albedo pass";
+}
+
+// The blur's depth buffer is made from the G-buffer's depth; a frame of another mode moving
+// the camera re-runs the geometry pass but not the blur's depth (the other modes have no blur),
+// so the next `marble` frame must see that the G-buffer changed since the blur's depth was made
+// (pass_list.h: BlurDepth reads Geometry), not merely whether the geometry ran in this frame.
+TEST_F(PassFixture, BlurDepthFollowsAGeometryChangeMadeInAnotherMode) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene marble = marbleScene("sphere", 64);
+  renderImage(renderer, marble);
+  Scene paper = marble;
+  paper.render.mode = RenderMode::Paper;
+  paper.camera.position = marble.camera.position = glm::vec3(1.5f, 0.4f, 2.2f);
+  renderImage(renderer, paper);
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, marble), freshRender("sphere", marble)), 0.0);
 }
 
 // Views of buffers show no pattern: they do not evaluate it, and a shading mode after them
@@ -143,11 +158,11 @@ TEST_F(PassFixture, BufferViewsDoNotEvaluateThePattern) {
                           RenderMode::LightDepth}) {
     s.render.mode = mode;
     renderImage(renderer, s);
-    EXPECT_FALSE(renderer.passTimes(true).albedoRan) << renderModeName(mode);
+    EXPECT_FALSE(renderer.passTimes(true).ran[Pass::Albedo]) << renderModeName(mode);
   }
   s.render.mode = RenderMode::Paper;
   const ImageRGBA8 paper = renderImage(renderer, s);
-  EXPECT_TRUE(renderer.passTimes(true).albedoRan);
+  EXPECT_TRUE(renderer.passTimes(true).ran[Pass::Albedo]);
   EXPECT_EQ(meanAbsDiff(paper, freshRender("sphere", s)), 0.0);
   s.render.mode = RenderMode::Marble;
   EXPECT_EQ(meanAbsDiff(renderImage(renderer, s), freshRender("sphere", s)), 0.0);
@@ -186,7 +201,7 @@ TEST_F(PassFixture, HalfResolutionBlurIsCloseToFullResolution) {
   const ImageRGBA8 full = renderImage(renderer, s);
   s.render.subsurface_resolution = SubsurfaceResolution::Half;
   const ImageRGBA8 half = renderImage(renderer, s);
-  EXPECT_TRUE(renderer.passTimes(true).lightingRan) << "the resolution is an input of the blur";
+  EXPECT_TRUE(renderer.passTimes(true).ran[Pass::Lighting]) << "the resolution is an input of the blur";
   const double diff = meanAbsDiff(full, half);
   EXPECT_GT(diff, 0.0) << "they are different computations";
   EXPECT_LT(diff, 1.0) << "mean difference in 8-bit levels";
@@ -213,7 +228,7 @@ TEST_F(PassFixture, HdrReadbackIsTheLastFrameLinear) {
   EXPECT_EQ(hdr.pixels[corner], 0.0f);
   // Reading does not disturb the next frame's caching.
   renderImage(renderer, s);
-  EXPECT_FALSE(renderer.passTimes(true).lightingRan);
+  EXPECT_FALSE(renderer.passTimes(true).ran[Pass::Lighting]);
 }
 
 TEST(ProgramVariants, CompilesEachSetOfDefinesOnceAndReportsErrorsByFile) {

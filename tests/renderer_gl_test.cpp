@@ -161,29 +161,29 @@ TEST_F(RendererFixture, CachedPassesAreSkippedWhenTheirInputsDoNotChange) {
   Scene s = smallScene(RenderMode::Paper, "builtin:sphere", 64);
   renderImage(renderer, s);
   PassTimes t = renderer.passTimes(true);
-  EXPECT_TRUE(t.lightDepthRan);
-  EXPECT_TRUE(t.geometryRan);
-  EXPECT_TRUE(t.lightingRan);
+  EXPECT_TRUE(t.ran[Pass::LightDepth]);
+  EXPECT_TRUE(t.ran[Pass::Geometry]);
+  EXPECT_TRUE(t.ran[Pass::Lighting]);
   renderImage(renderer, s);  // nothing changed: only the post pass runs
   t = renderer.passTimes(true);
-  EXPECT_FALSE(t.lightDepthRan);
-  EXPECT_FALSE(t.geometryRan);
-  EXPECT_FALSE(t.lightingRan);
+  EXPECT_FALSE(t.ran[Pass::LightDepth]);
+  EXPECT_FALSE(t.ran[Pass::Geometry]);
+  EXPECT_FALSE(t.ran[Pass::Lighting]);
   s.render.exposure = 1.0f;  // post-only
   renderImage(renderer, s);
-  EXPECT_FALSE(renderer.passTimes(true).lightingRan);
+  EXPECT_FALSE(renderer.passTimes(true).ran[Pass::Lighting]);
   s.material.k_schlick = 0.9f;  // a lighting-only parameter
   renderImage(renderer, s);
   t = renderer.passTimes(true);
-  EXPECT_FALSE(t.lightDepthRan);
-  EXPECT_FALSE(t.geometryRan);
-  EXPECT_TRUE(t.lightingRan);
+  EXPECT_FALSE(t.ran[Pass::LightDepth]);
+  EXPECT_FALSE(t.ran[Pass::Geometry]);
+  EXPECT_TRUE(t.ran[Pass::Lighting]);
   s.camera.position.x += 0.1f;
   renderImage(renderer, s);
   t = renderer.passTimes(true);
-  EXPECT_FALSE(t.lightDepthRan);
-  EXPECT_TRUE(t.geometryRan);
+  EXPECT_FALSE(t.ran[Pass::LightDepth]);
+  EXPECT_TRUE(t.ran[Pass::Geometry]);
   s.light.position.y += 0.5f;
   renderImage(renderer, s);
-  EXPECT_TRUE(renderer.passTimes(true).lightDepthRan);
+  EXPECT_TRUE(renderer.passTimes(true).ran[Pass::LightDepth]);
 }

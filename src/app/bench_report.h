@@ -6,10 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "marble/render/pass_list.h"
+
 namespace marble {
 
 struct PassSeries {
-  std::string name;         // "light_depth", "geometry", "lighting", "subsurface_blur", "post", "fxaa", "floor"
+  Pass pass;
+  std::string name;         // passName(pass): "light_depth", "geometry", ... (render/pass_list.h)
   std::vector<double> ms;   // one per measured frame; 0 when the pass was skipped (cached)
   int runs = 0;             // frames in which the pass actually ran
   std::vector<double> msWhenRun;  // only the frames in which it ran: the cost of one run

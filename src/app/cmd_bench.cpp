@@ -34,21 +34,15 @@ std::string glString(GLenum name) {
   return s ? s : "";
 }
 
-// The passes a frame of these settings runs, in order. The subsurface blur (and its depth
-// buffer, at half resolution) exists only for `marble`, FXAA only when antialiasing is on; the
-// floor mode is one pass and nothing else.
-std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
-  if (settings.mode == RenderMode::Floor) return {PassSeries{"floor", {}, 0, {}}};
-  // `marble` has no albedo pass: its post pass evaluates the pattern when it changed
-  // (post_diffuse_sources counts how often).
-  const bool marble = settings.mode == RenderMode::Marble;
-  std::vector<PassSeries> s = {{"light_depth", {}, 0, {}}, {"geometry", {}, 0, {}}};
-  if (!marble) s.push_back({"albedo", {}, 0, {}});
-  if (marble && settings.subsurface_resolution == SubsurfaceResolution::Half) s.push_back({"blur_depth", {}, 0, {}});
-  s.push_back({"lighting", {}, 0, {}});
-  if (marble) s.push_back({"subsurface_blur", {}, 0, {}});
-  s.push_back({"post", {}, 0, {}});
-  if (settings.antialias == Antialias::Fxaa) s.push_back({"fxaa", {}, 0, {}});
+// The passes a frame of this scene has, in the order it runs them (passList, passInFrame):
+// e.g. the subsurface blur (and its depth buffer, at half resolution) only for `marble`, FXAA
+// only when antialiasing is on, the floor mode one pass and nothing else. `marble` has no
+// albedo pass: its post pass evaluates the pattern when it changed (post_diffuse_sources
+// counts how often).
+std::vector<PassSeries> emptySeries(const Scene& scene) {
+  std::vector<PassSeries> s;
+  for (const PassDecl& d : passList())
+    if (passInFrame(d.pass, scene)) s.push_back({d.pass, d.name, {}, 0, {}});
   return s;
 }
 
@@ -56,17 +50,8 @@ std::vector<PassSeries> emptySeries(const RenderSettings& settings) {
 // post pass and FXAA run whenever anything changed (a frame with no change draws nothing).
 void recordPasses(std::vector<PassSeries>& series, const PassTimes& t) {
   for (auto& p : series) {
-    double ms = 0;
-    bool ran = true;
-    if (p.name == "floor") ran = t.floorRan, ms = t.floorMs;
-    if (p.name == "lighting") ran = t.lightingRan, ms = t.lightingMs;
-    if (p.name == "subsurface_blur") ran = t.lightingRan, ms = t.subsurfaceBlurMs;
-    if (p.name == "post") ran = t.postRan, ms = t.postMs;
-    if (p.name == "fxaa") ran = t.fxaaRan, ms = t.fxaaMs;
-    if (p.name == "light_depth") ran = t.lightDepthRan, ms = t.lightDepthMs;
-    if (p.name == "geometry") ran = t.geometryRan, ms = t.geometryMs;
-    if (p.name == "albedo") ran = t.albedoRan, ms = t.albedoMs;
-    if (p.name == "blur_depth") ran = t.blurDepthRan, ms = t.blurDepthMs;
+    const bool ran = t.ran[p.pass];
+    const double ms = t.ms[p.pass];
     p.ms.push_back(ran ? ms : 0.0);
     if (ran) {
       ++p.runs;
@@ -154,7 +139,7 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
-    r.passes = emptySeries(base.render);
+    r.passes = emptySeries(base);
 
     const glm::mat4 model(1.0f);
     for (int i = 0; i < o.warmup + o.frames; ++i) {

@@ -117,14 +117,9 @@ int runRenderCommand(const RenderOptions& o) {
     if (!o.hdr.empty()) std::cout << "wrote " << o.hdr << " (linear, not tone-mapped)\n";
     if (o.timings) {
       const PassTimes t = renderer.passTimes(true);
-      std::printf("pass             GPU ms\nlight-depth      %8.2f\ngeometry         %8.2f\nlighting         %8.2f\n"
-                  "subsurface-blur  %8.2f\npost             %8.2f\n",
-                  t.lightDepthMs, t.geometryMs, t.lightingMs,
-                  scene.render.mode == RenderMode::Marble ? t.subsurfaceBlurMs : 0.0, t.postMs);
-      if (scene.render.mode == RenderMode::Floor) std::printf("floor         %8.2f\n", t.floorMs);
-      if (t.stageRan) std::printf("stage            %8.2f\n", t.stageMs);
-      if (scene.render.mode != RenderMode::Floor && scene.render.antialias == Antialias::Fxaa)
-        std::printf("fxaa             %8.2f\n", t.fxaaMs);
+      std::printf("pass             GPU ms\n");
+      for (const PassDecl& d : passList())
+        if (passInFrame(d.pass, scene)) std::printf("%-16s %7.2f\n", d.name, t.ms[d.pass]);
     }
     std::cout << "wrote " << o.output << " (" << scene.render.width << "x" << scene.render.height << ", "
               << renderModeName(scene.render.mode) << ", " << mesh.triangleCount() << " triangles";

@@ -1,6 +1,7 @@
-// The performance section: frame-time graph and each pass's GPU time. The renderer re-runs the
-// light-depth and geometry passes only when their inputs change; a pass that did not run this
-// frame shows "cached", not a stale number.
+// The performance section: frame-time graph and each pass's GPU time, for the passes of the
+// frame (render/pass_list.h). A cached pass re-runs only when an input it declares changed; one
+// that did not run this frame shows "cached", not a stale number. Each tooltip says what the
+// pass makes and, from its declaration, what makes it re-run in the current mode.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -14,10 +15,11 @@
 namespace marble::viewer {
 namespace {
 
-void passLine(const char* name, double ms, bool ran, const char* tip) {
-  if (ran) ImGui::Text("  %-12s %7.2f ms", name, ms);
-  else ImGui::TextDisabled("  %-12s  cached", name);
-  tooltip(tip);
+void passLine(const PassDecl& d, const PassTimes& t, const Scene& scene) {
+  if (t.ran[d.pass]) ImGui::Text("  %-15s %7.2f ms", d.label, t.ms[d.pass]);
+  else ImGui::TextDisabled("  %-15s  cached", d.label);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))  // the text is made only when shown
+    tooltip((std::string(d.what) + " " + passInputsText(d.pass, scene)).c_str());
 }
 
 // auto / on / off, and what auto means for the mesh that is loaded.
@@ -55,22 +57,9 @@ void drawPerformanceSection(ViewerState& s) {
   drawInteractionDetailSetting(s);
   const PassTimes& t = s.passTimes;
   ImGui::TextUnformatted("GPU time per pass:");
-  passLine("light depth", t.lightDepthMs, t.lightDepthRan, "Depth map from the light. Re-runs when the light, mesh or turntable moves.");
-  passLine("geometry", t.geometryMs, t.geometryRan, "G-buffer (normal, depth) from the camera. Re-runs when the camera, mesh or size changes.");
-  const bool marble = s.scene.render.mode == RenderMode::Marble;
-  if (!marble)
-    passLine("albedo", t.albedoMs, t.albedoRan, "The marble pattern, once per visible pixel. Re-runs with the geometry or when the pattern changes. (Marble mode evaluates it in the post pass.)");
-  if (marble && s.scene.render.subsurface_resolution == SubsurfaceResolution::Half)
-    passLine("blur depth", t.blurDepthMs, t.blurDepthRan, "The depth at the blur's half resolution, so the lighting and blur shade only the object. Re-runs with the geometry.");
-  passLine("lighting", t.lightingMs, t.lightingRan, "Screen-space shading of the object's pixels. Marble mode: the light entering the stone, at the blur's resolution; re-runs when the light, view, scattering, IOR or translucency changes. Other modes: when anything but exposure and background changes.");
-  if (marble)
-    passLine("subsurface blur", t.subsurfaceBlurMs, t.lightingRan, "Screen-space diffusion of the light under the surface (marble mode, half or full resolution), with the lighting.");
-  passLine("post", t.postMs, t.postRan, "Marble mode: blurred light x albedo + reflections, then tone mapping; evaluates the pattern when the view or pattern changed, reuses the stored diffuse part when only gloss, exposure or background changed. Runs whenever anything changed.");
-  if (sceneHasStage(s.scene))
-    passLine("stage", t.stageMs, t.stageRan, "Backdrop and ground around the object (and, when the model moved, the floor's contact map). Runs whenever anything changed.");
-  if (s.scene.render.mode != RenderMode::Floor && s.scene.render.antialias == Antialias::Fxaa)
-    passLine("fxaa", t.fxaaMs, t.fxaaRan, "Antialiasing (FXAA) of the displayed picture, on the tiles the object can cover: blends across contrast edges. Runs whenever anything changed.");
-  if (s.scene.render.mode == RenderMode::Floor) passLine("floor", t.floorMs, t.floorRan, "The mesh once, flat-shaded: the cheapest frame (benchmarks).");
+  for (const PassDecl& d : passList())
+    if (passInFrame(d.pass, s.scene))
+      passLine(d, t, s.scene);
 }
 
 }  // namespace marble::viewer

@@ -26,30 +26,23 @@ struct Renderer::Passes {
 
 void Renderer::invalidateStage() { passes_->stage.invalidateBottomMap(); }
 
-namespace {
-// What the pattern's evaluation reads (the albedo pass, or `marble`'s post pass evaluating it):
-// the pattern, colour and vein-model groups.
-const GroupSet kAlbedoGroups = groupsRead(kAlbedoPassBit, RenderMode::Albedo);
+void Renderer::invalidate() {
+  cache_.forget();
+  storedDiffuse_.reset();
+  lastOutput_.reset();
+  invalidateStage();
+}
 
-bool sameView(const Scene& a, const Scene& b) {
-  return a.light.type == b.light.type && a.light.position == b.light.position && a.light.color == b.light.color &&
-         a.light.intensity == b.light.intensity && a.camera.position == b.camera.position &&
-         a.camera.target == b.camera.target && a.camera.up == b.camera.up &&
-         a.camera.fov_y_deg == b.camera.fov_y_deg && a.render.mode == b.render.mode &&
-         a.render.environment == b.render.environment &&
-         a.render.environment_intensity == b.render.environment_intensity &&
-         a.render.subsurface_resolution == b.render.subsurface_resolution &&
-         a.render.environment_rotation_deg == b.render.environment_rotation_deg;
+void Renderer::interactionCopyRemade() {
+  if (detail_ == MeshDetail::Interaction) cache_.changed(PassInput::CameraMesh);
 }
-// What the lighting pass (and, for `marble`, the subsurface blur) reads besides the G-buffer,
-// the light's map and, outside `marble`, the albedo texture: the groups of the parameters they
-// read in this mode (material_params.cpp says which). For `marble` that is the light entering
-// the stone (the scattering group) -- not the albedo or the gloss, which the post pass applies.
-bool sameLightingInputs(const Scene& a, const Scene& b) {
-  if (!sameView(a, b)) return false;
-  return a.mm_per_unit == b.mm_per_unit &&
-         sameGroups(a.material, b.material, groupsRead(kLightingPassBit | kBlurPassBit, a.render.mode));
+
+void Renderer::setTurbulenceGridEnabled(bool enabled) {
+  turbulence_.setEnabled(enabled);
+  cache_.changed(PassInput::TurbulenceGrid);
 }
+
+namespace {
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
 
@@ -72,7 +65,9 @@ void Renderer::setMesh(const Mesh& mesh) {
   interactionMesh_.reset();
   interactionIsFull_ = false;
   makeLightProxy();
-  invalidate();
+  cache_.changed(PassInput::LightMesh);
+  cache_.changed(PassInput::CameraMesh);
+  invalidateStage();  // the ground's contact map is the stage's own (StagePass)
 }
 
 void Renderer::makeLightProxy() {
@@ -106,7 +101,10 @@ void Renderer::adoptLightProxy(bool wait) {
   useLightProxy(std::move(proxy));
   interactionMesh_.reset();  // made from the proxy from now on
   interactionIsFull_ = false;
-  invalidate();  // every pass, as after setMesh: the next frame is a fresh renderer's
+  // Every pass, as after setMesh, not only those that read the light's mesh: the next frame is
+  // then a fresh renderer's bit for bit (a `marble` frame reusing the stored albedo can differ
+  // from one evaluating the pattern by one level in a pixel: two programs need not round alike).
+  invalidate();
 }
 
 void Renderer::setLightProxyEnabled(bool enabled) {
@@ -115,7 +113,8 @@ void Renderer::setLightProxyEnabled(bool enabled) {
   if (mesh_) makeLightProxy();
   interactionMesh_.reset();  // it is made from the proxy: made again at its next use
   interactionIsFull_ = false;
-  lightValid_ = lightingValid_ = outputValid_ = false;
+  cache_.changed(PassInput::LightMesh);
+  interactionCopyRemade();
 }
 
 size_t Renderer::lightTriangleCount() const {
@@ -145,7 +144,7 @@ void Renderer::setMeshDetail(MeshDetail detail) {
   detail_ = detail;
   // The camera's passes re-run with the other mesh (the interaction copy may be the full mesh
   // itself: re-running then costs one frame and changes nothing).
-  geometryValid_ = outputValid_ = false;
+  cache_.changed(PassInput::CameraMesh);
 }
 
 size_t Renderer::interactionTriangleCount() {
@@ -159,12 +158,12 @@ size_t Renderer::interactionTriangleCount() {
 
 void Renderer::setEnvironmentMap(const PrefilteredEnvironment& environment) {
   environment_.emplace(environment);
-  lightingValid_ = outputValid_ = false;
+  cache_.changed(PassInput::EnvironmentMap);
 }
 
 void Renderer::clearEnvironmentMap() {
   environment_.reset();
-  lightingValid_ = outputValid_ = false;
+  cache_.changed(PassInput::EnvironmentMap);
 }
 
 void Renderer::reloadShaders() {
@@ -175,97 +174,79 @@ void Renderer::reloadShaders() {
   fresh->lighting.compileAll();
   fresh->post.compileAll();
   passes_ = std::move(fresh);
-  invalidate();
+  invalidate();  // new passes: nothing they stored survives
 }
 
 void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
   adoptLightProxy(false);
   if (!mesh_ || width <= 0 || height <= 0) return;
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
-  times_.lightDepthRan = times_.geometryRan = times_.albedoRan = times_.lightingRan = times_.blurDepthRan = false;
-  times_.postRan = times_.fxaaRan = times_.floorRan = times_.stageRan = false;
+  times_.ran = {};
   times_.diffuseSource = -1;
-  outputValid_ = true;
-  lastOutput_ = OutputKey{scene, model, targetFbo, width, height};
+  lastOutput_ = OutputKey{scene, model, targetFbo, width, height, cache_.stateRevision()};
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
-    times_.floorRan = true;
+    times_.ran[Pass::Floor] = true;
     return;
   }
-  const LightMatrices light = lightMatrices(scene.light);
-  const bool modelMoved = !sameMatrix(model, lastModel_);
-  if (!lightValid_ || !sameMatrix(light.viewProj, lastLight_.viewProj) || modelMoved) {
+  const bool marble = scene.render.mode == RenderMode::Marble;
+  // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
+  const FrameInputs now{scene, model, camera, lightMatrices(scene.light), width, height,
+                        marble ? seenVeinAttenuation(scene) : 0.0f};
+  // Whether a cached pass must run; and that it ran.
+  auto stale = [&](Pass p) { return !cache_.current(p, now); };
+  auto ran = [&](Pass p) {
+    cache_.made(p, now);
+    times_.ran[p] = true;
+  };
+  const LightMatrices& light = now.light;
+  if (stale(Pass::LightDepth)) {
     passes_->lightDepth.run(lightMesh(), model, light);
-    lightValid_ = true;
-    times_.lightDepthRan = true;
+    ran(Pass::LightDepth);
   }
   passes_->geometry.resize(width, height);
-  const bool viewMoved = !geometryValid_ || !sameMatrix(camera.viewProj, lastCamera_.viewProj) || modelMoved ||
-                         width != lastWidth_ || height != lastHeight_;
-  if (viewMoved) {
+  if (stale(Pass::Geometry)) {
     passes_->geometry.run(cameraMesh(), model, camera);
-    geometryValid_ = true;
-    times_.geometryRan = true;
+    ran(Pass::Geometry);
   }
   const ScreenRect rect =
       projectedBounds(mesh_->boundsMin(), mesh_->boundsMax(), camera.viewProj * model, width, height);
-  const bool marble = scene.render.mode == RenderMode::Marble;
-  // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
-  const float seen = marble ? seenVeinAttenuation(scene) : 0.0f;
-  if (viewMoved || !sameGroups(scene.material, lastMaterial_, kAlbedoGroups) || seen != lastSeenAttenuation_ ||
-      (seen > 0.0f && scene.material.ior != lastMaterial_.ior) || albedoFromPost_ != marble)
-    albedoValid_ = false;
-  lastSeenAttenuation_ = seen;
+  // The albedo texture: written by the albedo pass, or -- `marble` -- by the post pass
+  // evaluating the pattern (DiffuseSource::Pattern); its inputs are the albedo pass's either way.
   passes_->albedo.resize(width, height, passes_->geometry.depthTexture());
-  // `marble` evaluates the pattern in its post pass (DiffuseSource::Pattern); the other modes
-  // read the albedo in the lighting pass.
-  if (!albedoValid_ && !marble && modeShowsAlbedo(scene.render.mode)) {
+  bool albedoCurrent = !stale(Pass::Albedo);
+  if (!albedoCurrent && passInFrame(Pass::Albedo, scene)) {
     passes_->albedo.run(passes_->geometry.depthTexture(), passes_->geometry.normalTexture(), model, camera,
                         scene.material, turbulence_.update(scene.material), rect);
-    albedoValid_ = true;
-    albedoFromPost_ = false;
-    times_.albedoRan = true;
+    ran(Pass::Albedo);
+    albedoCurrent = true;
   }
-  lastLight_ = light;
-  lastCamera_ = camera;
-  lastModel_ = model;
-  lastMaterial_ = scene.material;
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
-  // Lighting and blur depend on neither the exposure nor the background (post-only), nor --
-  // for `marble` -- on the albedo (a pattern change re-runs only the post pass, which evaluates
-  // it). The other modes read the albedo in the lighting pass.
-  const bool lightingCurrent = lightingValid_ && !times_.lightDepthRan && !viewMoved &&
-                               sameLightingInputs(scene, lastLightingScene_) && (marble || !times_.albedoRan);
-  if (!lightingCurrent) {
-    const int scale = subsurfaceScale(scene.render);
-    if (marble) {
-      const bool remade = passes_->blurDepth.resize(width, height, scale, passes_->geometry.depthTexture());
-      if (remade || viewMoved || !blurDepthValid_) {
-        passes_->blurDepth.run(rect);
-        blurDepthValid_ = true;
-        times_.blurDepthRan = scale != 1;
-      }
+  const int scale = subsurfaceScale(scene.render);
+  if (marble) {
+    // At full resolution the G-buffer's depth serves (resize points the pass at it).
+    const bool remade = passes_->blurDepth.resize(width, height, scale, passes_->geometry.depthTexture());
+    if (passInFrame(Pass::BlurDepth, scene) && (remade || stale(Pass::BlurDepth))) {
+      passes_->blurDepth.run(rect);
+      ran(Pass::BlurDepth);
     }
+  }
+  if (stale(Pass::Lighting)) {
     const LightingInputs in{passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
                             passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture()};
     passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(), passes_->blurDepth.depthTexture());
     passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect, environment());
-    if (marble) {
-      passes_->blur.resize(width, height, scale, passes_->blurDepth.depthTexture());
-      passes_->blur.run({passes_->lighting.enteringTexture()}, camera, scene, height,
-                        rect);
-    }
-    times_.lightingRan = true;
-    lightingValid_ = true;
-    lastLightingScene_ = scene;
+    ran(Pass::Lighting);
   }
-  lastWidth_ = width;
-  lastHeight_ = height;
-  lastScene_ = scene;
+  if (marble && stale(Pass::SubsurfaceBlur)) {
+    passes_->blur.resize(width, height, scale, passes_->blurDepth.depthTexture());
+    passes_->blur.run({passes_->lighting.enteringTexture()}, camera, scene, height, rect);
+    ran(Pass::SubsurfaceBlur);
+  }
+  lastFrame_ = now;
   lastRect_ = rect;
-  lastLightTexelWorld_ = lightTexelWorld;
 
   // The post pass writes the display image (resized with the frame); FXAA or a copy takes it
   // to the target. For `marble` it also writes what later frames can reuse: the diffuse part,
@@ -275,28 +256,32 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
   OffscreenTarget& display = surfaceTarget(displayImage_, width, height, GL_RGBA8);
   display.attach(GL_COLOR_ATTACHMENT1, passes_->post.diffuseTexture());
   display.attach(GL_COLOR_ATTACHMENT2, passes_->albedo.albedoTexture());
-  const DiffuseSource source = !albedoValid_                            ? DiffuseSource::Pattern
-                               : times_.lightingRan || !diffuseValid_ ? DiffuseSource::StoredAlbedo
-                                                                      : DiffuseSource::Stored;
+  auto sameReads = [this](const PerPass<uint64_t>& made) {
+    for (const PassDecl& q : passList())
+      if ((kStoredDiffuseReads & passBit(q.pass)) != 0 && made[q.pass] != cache_.generations()[q.pass]) return false;
+    return true;
+  };
+  const DiffuseSource source = !albedoCurrent                               ? DiffuseSource::Pattern
+                               : !storedDiffuse_ || !sameReads(*storedDiffuse_) ? DiffuseSource::StoredAlbedo
+                                                                               : DiffuseSource::Stored;
   const GLuint turbulenceGrid = marble && source == DiffuseSource::Pattern ? turbulence_.update(scene.material) : 0;
   passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model, turbulenceGrid},
                     display.fbo(), width, height, rect,
                     fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
-  times_.diffuseSource = marble ? static_cast<int>(source) : -1;
-  times_.postRan = true;
-  times_.fxaaRan = fxaa;
-  if (marble) {  // the post pass wrote it (other modes: the albedo pass, or not needed)
-    albedoValid_ = true;
-    albedoFromPost_ = true;
+  times_.ran[Pass::Post] = true;
+  if (marble) {
+    times_.diffuseSource = static_cast<int>(source);
+    if (source == DiffuseSource::Pattern) cache_.made(Pass::Albedo, now);  // the post pass wrote it
+    if (source != DiffuseSource::Stored) storedDiffuse_ = cache_.generations();
+  } else {
+    storedDiffuse_.reset();  // only `marble`'s post pass writes it
   }
-  diffuseValid_ = marble;  // other modes do not write it
-  const bool stage = sceneHasStage(scene);
-  if (stage) {
+  if (passInFrame(Pass::Stage, scene)) {
     if (scene.render.ground) passes_->stage.updateBottomMap(*mesh_, model);
     passes_->stage.run(scene, camera, light, lightTexelWorld, environment(), passes_->geometry.depthTexture(),
                        passes_->lightDepth.depthTexture(), mesh_->boundsMin().y - 0.002f, display.fbo(), width, height,
                        fxaa);
-    times_.stageRan = true;
+    times_.ran[Pass::Stage] = true;
   }
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
@@ -305,9 +290,10 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
     // The light's map, or a stage around the object: content everywhere.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || stage;
+    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || times_.ran[Pass::Stage];
     passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
                       glm::clamp(scene.render.background, 0.0f, 1.0f));
+    times_.ran[Pass::Fxaa] = true;
   }
 }
 
@@ -337,18 +323,27 @@ PostInputs Renderer::postInputs() const {
           passes_->lightDepth.depthTexture()};
 }
 
+PassTimer& Renderer::timerOf(Pass p) {
+  switch (p) {
+    case Pass::LightDepth: return passes_->lightDepth.timer();
+    case Pass::Geometry: return passes_->geometry.timer();
+    case Pass::Albedo: return passes_->albedo.timer();
+    case Pass::BlurDepth: return passes_->blurDepth.timer();
+    case Pass::Lighting: return passes_->lighting.timer();
+    case Pass::SubsurfaceBlur: return passes_->blur.timer();
+    case Pass::Post: return passes_->post.timer();
+    case Pass::Stage: return passes_->stage.timer();
+    case Pass::Fxaa: return passes_->fxaa.timer();
+    case Pass::Floor: return passes_->floor.timer();
+  }
+  return passes_->post.timer();  // not reached: every Pass is listed
+}
+
 PassTimes Renderer::passTimes(bool wait) {
-  auto get = [wait](PassTimer& t) { return wait ? t.waitMilliseconds() : t.milliseconds(); };
-  times_.lightDepthMs = get(passes_->lightDepth.timer());
-  times_.geometryMs = get(passes_->geometry.timer());
-  times_.albedoMs = get(passes_->albedo.timer());
-  times_.lightingMs = get(passes_->lighting.timer());
-  times_.subsurfaceBlurMs = get(passes_->blur.timer());
-  times_.postMs = get(passes_->post.timer());
-  times_.floorMs = get(passes_->floor.timer());
-  times_.fxaaMs = get(passes_->fxaa.timer());
-  times_.blurDepthMs = get(passes_->blurDepth.timer());
-  times_.stageMs = get(passes_->stage.timer());
+  for (const PassDecl& d : passList()) {
+    PassTimer& t = timerOf(d.pass);
+    times_.ms[d.pass] = wait ? t.waitMilliseconds() : t.milliseconds();
+  }
   return times_;
 }
 
@@ -360,13 +355,16 @@ size_t Renderer::glBytes() const {
 }
 
 ImageRGBF Renderer::readHdr() {
-  const int w = lastWidth_, h = lastHeight_;
+  const int w = lastFrame_ ? lastFrame_->width : 0, h = lastFrame_ ? lastFrame_->height : 0;
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
-  if (!geometryValid_ || w <= 0 || h <= 0) return img;
+  // Nothing to read when the G-buffer no longer holds the last frame's view (a new mesh, shaders).
+  if (!lastFrame_ || !cache_.current(Pass::Geometry, *lastFrame_) || w <= 0 || h <= 0) return img;
+  const FrameInputs& last = *lastFrame_;
+  const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   // The last frame once more, through the same post pass, into a float target, linear.
   OffscreenTarget& readback = surfaceTarget(hdrReadback_, w, h, GL_RGBA32F);
   // The diffuse part the frame stored (`marble`); nothing else is written.
-  passes_->post.run(postInputs(), lastScene_, {lastCamera_, lastLight_, lastLightTexelWorld_, environment(), lastModel_},
+  passes_->post.run(postInputs(), last.scene, {last.camera, last.light, lightTexelWorld, environment(), last.model},
                     readback.fbo(), w, h, lastRect_, PostPass::Output::Linear, DiffuseSource::Stored);
   // RGB: linear light; A: coverage (the post pass writes 1 on the object, 0 elsewhere).
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4);

@@ -1,16 +1,9 @@
 #pragma once
-// The renderer owns the passes and runs them in order, each only when its inputs changed:
-//   1 light depth      -> the light, the mesh or the model transform changed
-//   2 geometry         -> the camera, the mesh or the size changed (normal and depth)
-//   3 albedo           -> with 2, or the pattern changed (the marble pattern per pixel)
-//   4 lighting         -> 1 or 2 ran, or what it reads of the material changed
-//   5 subsurface blur  -> with 4 (`marble` only; half resolution by default)
-//   6 post             -> every frame (composes `marble`: blurred light x albedo + reflection)
-// The screen passes (3-6) draw only inside the mesh's screen rectangle.
-//   6b stage           -> every frame the scene shows a backdrop or a ground (`marble`; the
-//                         floor's contact map from below when the mesh or model changed)
-//   7 FXAA             -> every frame when antialiasing is on (display image -> target)
-// The viewer and the CLI own nothing of GL but a context and a Renderer.
+// The renderer owns the passes and runs them in the order of passList() (render/pass_list.h,
+// which also says what each reads; docs/architecture.md "One frame" draws it): a cached pass
+// only when an input it declares changed since its output was made (render/pass_cache.h), the
+// passes that draw the picture in every frame that is drawn. The screen passes draw only inside
+// the mesh's screen rectangle. The viewer and the CLI own nothing of GL but a context and a Renderer.
 #include <memory>
 #include <optional>
 
@@ -26,6 +19,8 @@
 #include "marble/render/light_depth_pass.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/offscreen_target.h"
+#include "marble/render/pass_cache.h"
+#include "marble/render/pass_list.h"
 #include "marble/render/post_pass.h"
 #include "marble/render/screen_tiles.h"
 #include "marble/render/stage_pass.h"
@@ -35,16 +30,6 @@
 #include "marble/scene/scene.h"
 
 namespace marble {
-
-struct PassTimes {
-  double lightDepthMs = 0, geometryMs = 0, albedoMs = 0, lightingMs = 0, subsurfaceBlurMs = 0, postMs = 0, floorMs = 0,
-         fxaaMs = 0, blurDepthMs = 0, stageMs = 0;
-  bool lightDepthRan = false, geometryRan = false, albedoRan = false, lightingRan = false, blurDepthRan = false;
-  bool postRan = false, fxaaRan = false, floorRan = false, stageRan = false;  // false only when the whole frame was unchanged
-  // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
-  // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
-  int diffuseSource = -1;
-};
 
 class Renderer {
 public:
@@ -111,32 +96,26 @@ public:
   // Bytes of GL textures and buffers the renderer allocated.
   size_t glBytes() const;
 
-  // Forget cached passes (the next frame runs all of them).
   // Whether `targetFbo` still holds what render() would draw now: the last call drew this
   // scene, model and size into it and nothing the frame depends on changed since (mesh,
-  // environment map, shaders). A caller whose target keeps its content between frames (the
-  // viewer's view image, the benchmark's target) skips render() then: an unchanged frame runs
-  // no pass at all. (The renderer cannot know that by itself: a new target may get the name of
-  // a deleted one.) Call invalidateOutput() after drawing into the target by other means.
+  // environment map, shaders, settings). A caller whose target keeps its content between
+  // frames (the viewer's view image, the benchmark's target) skips render() then: an unchanged
+  // frame runs no pass at all. (The renderer cannot know that by itself: a new target may get
+  // the name of a deleted one.) Call invalidateOutput() after drawing into the target by other means.
   bool isCurrent(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) const {
-    return outputValid_ && lastOutput_ == OutputKey{scene, model, targetFbo, width, height} &&
+    return lastOutput_ && *lastOutput_ == OutputKey{scene, model, targetFbo, width, height, cache_.stateRevision()} &&
            !(lightProxyJob_ && lightProxyJob_->ready());
   }
-  void invalidateOutput() { outputValid_ = false; }
+  void invalidateOutput() { lastOutput_.reset(); }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
   // antialiasing: for tests and tools.
   GLuint displayImageTexture() const { return displayImage_ ? displayImage_->texture() : 0; }
-  void invalidate() {
-    lightValid_ = geometryValid_ = lightingValid_ = blurDepthValid_ = albedoValid_ = diffuseValid_ = outputValid_ = false;
-    invalidateStage();
-  }
+  // Forget every cached output (the next frame runs every pass).
+  void invalidate();
 
   // Off: the pattern's turbulence is evaluated per pixel even where a baked grid would give the
   // same picture (turbulence_texture.h); for comparisons. On by default.
-  void setTurbulenceGridEnabled(bool enabled) {
-    turbulence_.setEnabled(enabled);
-    albedoValid_ = outputValid_ = false;
-  }
+  void setTurbulenceGridEnabled(bool enabled);
 
   // Rebuilds every program from the library's sources. On a compile error the previous
   // programs stay in use and gl::ShaderError is thrown (its message names file and line).
@@ -174,43 +153,30 @@ private:
   std::optional<EnvironmentMap> environment_;
   TurbulenceTexture turbulence_;  // the pattern's baked turbulence, kept across shader reloads
   PassTimes times_;
-  // What the cached passes were made from.
-  bool lightValid_ = false, geometryValid_ = false;
-  LightMatrices lastLight_{};
-  CameraMatrices lastCamera_{};
-  glm::mat4 lastModel_{1.0f};
-  Material lastMaterial_{};
-  float lastSeenAttenuation_ = 0.0f;  // seenVeinAttenuation of the last frame
-  // The lighting (and blur) result is reused when none of its inputs changed.
-  bool lightingValid_ = false;
-  bool blurDepthValid_ = false;  // the blur's depth buffer holds the current view's
-  bool albedoValid_ = false;     // the albedo texture holds the current view's and pattern's
-  // Which program wrote the albedo texture: marble's post pass (true) or the albedo pass. Each
-  // mode reuses only its own: the two programs compute the pattern from the same source, but
-  // GLSL does not promise that two programs round an expression alike, and a few pixels one
-  // 8-bit level apart would make a cached frame differ from a fresh one.
-  bool albedoFromPost_ = false;
-  bool diffuseValid_ = false;    // the post pass's diffuse part is the current frame's (`marble`)
+  PassCache cache_;  // what each cached pass's output was made from
+  // What the post pass's stored diffuse part (`marble`) was made from: the generations of
+  // kStoredDiffuseReads' passes when it was written.
+  std::optional<PerPass<uint64_t>> storedDiffuse_;
   // What the last frame drew, and where: a call with the same draws nothing.
   struct OutputKey {
     Scene scene;
     glm::mat4 model{1.0f};
     GLuint target = 0;
     int width = 0, height = 0;
+    uint64_t stateRevision = 0;  // PassCache::stateRevision
     bool operator==(const OutputKey&) const = default;
   };
-  OutputKey lastOutput_;
-  bool outputValid_ = false;  // the target holds lastOutput_'s frame
-  Scene lastLightingScene_{};
-  // The last frame, for readHdr.
-  int lastWidth_ = 0, lastHeight_ = 0;
-  Scene lastScene_{};
+  std::optional<OutputKey> lastOutput_;  // empty: the target holds nothing known
+  // The last frame that ran the passes (not `floor`), for readHdr.
+  std::optional<FrameInputs> lastFrame_;
   ScreenRect lastRect_{};
-  float lastLightTexelWorld_ = 0.0f;
   std::optional<OffscreenTarget> hdrReadback_;
 
   PostInputs postInputs() const;
+  PassTimer& timerOf(Pass p);
   void invalidateStage();
+  // The copy the camera's passes draw was remade: their inputs changed if they draw it.
+  void interactionCopyRemade();
   // `target`, (re)made at this size and format, with the G-buffer's depth attached.
   OffscreenTarget& surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height, GLenum format);
   const EnvironmentMap* environment() const { return environment_ ? &*environment_ : nullptr; }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_support.h"
 #include "marble/gl/headless_context.h"
 #include "marble/gl/shader_library.h"
 #include "marble/noise/marble_pattern.h"
@@ -86,7 +87,10 @@ void main() {
 
 class PatternGlTest : public ::testing::Test {
 protected:
-  static void SetUpTestSuite() { ctx_ = new HeadlessContext(); }
+  static void SetUpTestSuite() {
+    ctx_ = new HeadlessContext();
+    gl::enableDebugOutput(test::failOnSevereGlMessages);
+  }
   static void TearDownTestSuite() {
     delete ctx_;
     ctx_ = nullptr;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "marble/core/error.h"
+#include "marble/gl/debug_output.h"
 
 #ifndef EGL_PLATFORM_SURFACELESS_MESA
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
@@ -126,6 +127,7 @@ HeadlessContext::HeadlessContext() {
       throw EnvironmentError("headless OpenGL: got version " + std::to_string(v / 10) + "." + std::to_string(v % 10) +
                              ", marble needs 4.5 core");  // `attempt` releases the context
     std::tie(display_, context_) = attempt.release();
+    if (gl::debugOutputWanted()) gl::enableDebugOutput();
     return;
   }
   throw EnvironmentError("headless OpenGL: " + lastProblem);

@@ -52,13 +52,14 @@ void AlbedoPass::compileAll() {
 }
 
 void AlbedoPass::resize(int width, int height, GLuint depthTexture) {
-  if (width == width_ && height == height_ && depthTexture == depth_ && fbo_) return;
-  width_ = width;
-  height_ = height;
-  depth_ = depthTexture;
-  albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
-  fbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  if (width != width_ || height != height_ || !fbo_) {
+    width_ = width;
+    height_ = height;
+    albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
+    fbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  }
+  // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(fbo_.id(), depthTexture);
 }
 

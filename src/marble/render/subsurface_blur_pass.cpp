@@ -29,16 +29,17 @@ int subsurfaceScale(const RenderSettings& settings) {
 
 void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTexture) {
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;  // rounded up
-  if (w == width_ && h == height_ && depthTexture == depth_ && resultFbo_) return;
-  depth_ = depthTexture;
-  width_ = w;
-  height_ = h;
-  horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
-  result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
-  horizontalFbo_ = gl::Framebuffer::create();
-  resultFbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
-  glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+  if (w != width_ || h != height_ || !resultFbo_) {
+    width_ = w;
+    height_ = h;
+    horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+    result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+    horizontalFbo_ = gl::Framebuffer::create();
+    resultFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
+    glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+  }
+  // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(horizontalFbo_.id(), depthTexture);
   gl::attachSurfaceDepth(resultFbo_.id(), depthTexture);
 }

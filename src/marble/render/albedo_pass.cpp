@@ -3,6 +3,7 @@
 #include "marble/noise/marble_pattern.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/render/turbulence_texture.h"
 
 namespace marble {
@@ -73,7 +74,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
-  glBindTextures(0, 2, textures);
+  glBindTextures(shader::UNIT_ALBEDO_DEPTH, 2, textures);
   const gl::Program& p = programs_.get(patternVariantKey(material, turbulenceGrid),
                                        [&] { return patternDefines(material, turbulenceGrid); });
   setPatternUniforms(p, model, camera, turbulenceGrid);

@@ -1,5 +1,7 @@
 #include "marble/render/blur_depth_pass.h"
 
+#include "marble/render/shader_constants.h"
+
 namespace marble {
 
 BlurDepthPass::BlurDepthPass(const ShaderLibrary& shaders)
@@ -36,7 +38,7 @@ void BlurDepthPass::run(const ScreenRect& rect) {
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   scissorTo(scaledDown(rect, scale_));
-  glBindTextureUnit(0, gBufferDepth_.id());
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT, gBufferDepth_.id());
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
   scissorOff();

@@ -2,6 +2,7 @@
 
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/scene/material_scattering.h"
 
 namespace marble {
@@ -68,7 +69,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   else if (!wholeFrame)
     scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
-  glBindTextures(0, 5, textures);
+  glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 5, textures);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));

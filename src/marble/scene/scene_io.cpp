@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "marble/core/atomic_file.h"
+#include "marble/scene/enum_choice.h"
 #include "marble/scene/material_io.h"
 
 namespace marble {
@@ -45,9 +46,9 @@ ojson renderObject(const RenderSettings& r, const std::filesystem::path& scenePa
              {"background", vec3(r.background)},
              {"mode", renderModeName(r.mode)},
              {"exposure", number(r.exposure)},
-             {"environment", environmentNames().at(static_cast<size_t>(r.environment))},
+             {"environment", choiceName(environmentChoices(), static_cast<int>(r.environment))},
              {"environment_intensity", number(r.environment_intensity)},
-             {"subsurface_resolution", r.subsurface_resolution == SubsurfaceResolution::Half ? "half" : "full"},
+             {"subsurface_resolution", choiceName(subsurfaceResolutionChoices(), static_cast<int>(r.subsurface_resolution))},
              {"antialias", antialiasName(r.antialias)}};
   // The map is kept while another environment is chosen, so switching back finds it.
   if (!r.environment_map.empty()) j["environment_map"] = fileField(r.environment_map, scenePath);
@@ -71,7 +72,7 @@ std::string sceneToJsonText(const Scene& scene, const std::filesystem::path& pat
                  {"target", vec3(scene.camera.target)},
                  {"up", vec3(scene.camera.up)},
                  {"fov_y_deg", number(scene.camera.fov_y_deg)}};
-  j["light"] = {{"type", scene.light.type == LightType::Point ? "point" : "directional"},
+  j["light"] = {{"type", choiceName(lightTypeChoices(), static_cast<int>(scene.light.type))},
                 {"position", vec3(scene.light.position)},
                 {"color", vec3(scene.light.color)},
                 {"intensity", number(scene.light.intensity)}};

@@ -10,6 +10,7 @@
 #include "marble/scene/scene_io.h"
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
+#include "marble/scene/enum_choice.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/scene.h"
 
@@ -127,9 +128,9 @@ void readLight(const json& j, const std::string& file, Light& light, std::vector
   ObjectReader r(j, file, "light.");
   std::string type;
   if (r.string("type", type)) {
-    if (type == "point") light.type = LightType::Point;
-    else if (type == "directional") light.type = LightType::Directional;
-    else r.fail("type", "expected \"point\" or \"directional\", got \"" + type + "\"");
+    const EnumChoice* e = findChoice(lightTypeChoices(), type);
+    if (!e) r.fail("type", "expected " + choiceAlternatives(lightTypeChoices()) + ", got \"" + type + "\"");
+    light.type = static_cast<LightType>(e->value);
   }
   r.vec3("position", light.position, -1e4f, 1e4f);
   r.vec3("color", light.color, 0.0f, 1e3f);
@@ -164,9 +165,11 @@ void readRender(const json& j, const std::filesystem::path& scenePath, RenderSet
   r.number("environment_intensity", rs.environment_intensity, 0.0f, 100.0f);
   std::string sssRes;
   if (r.string("subsurface_resolution", sssRes)) {
-    if (sssRes == "half") rs.subsurface_resolution = SubsurfaceResolution::Half;
-    else if (sssRes == "full") rs.subsurface_resolution = SubsurfaceResolution::Full;
-    else r.fail("subsurface_resolution", "expected \"half\" or \"full\", got \"" + sssRes + "\"");
+    const EnumChoice* e = findChoice(subsurfaceResolutionChoices(), sssRes);
+    if (!e)
+      r.fail("subsurface_resolution",
+             "expected " + choiceAlternatives(subsurfaceResolutionChoices()) + ", got \"" + sssRes + "\"");
+    rs.subsurface_resolution = static_cast<SubsurfaceResolution>(e->value);
   }
   std::string antialias;
   if (r.string("antialias", antialias)) {

@@ -65,7 +65,10 @@ bool isSevere(const DebugMessage& m) {
          m.severity == GL_DEBUG_SEVERITY_HIGH;
 }
 
-bool isWorthReporting(const DebugMessage& m) { return m.severity != GL_DEBUG_SEVERITY_NOTIFICATION || isSevere(m); }
+bool isWorthReporting(const DebugMessage& m) {
+  if (m.source == GL_DEBUG_SOURCE_SHADER_COMPILER) return false;  // the ShaderError says it, once
+  return m.severity != GL_DEBUG_SEVERITY_NOTIFICATION || isSevere(m);
+}
 
 std::string describe(const DebugMessage& m) {
   return std::string("GL debug: ") + typeName(m.type) + " (" + severityName(m.severity) + ", " + sourceName(m.source) +

@@ -25,7 +25,8 @@ struct DebugMessage {
 // low/medium performance or portability remarks are not severe, nor is the shader compiler's
 // echo of a compile error: that reaches the caller as a ShaderError naming file and line.
 bool isSevere(const DebugMessage& m);
-// Worth a line on stderr: everything but notifications.
+// Worth a line on stderr: everything but notifications and the compiler's echo of a compile
+// error (the ShaderError's one line says it; a second would break "one line per error").
 bool isWorthReporting(const DebugMessage& m);
 // One line: "GL debug: error (high, API, id 1280): <driver's text>".
 std::string describe(const DebugMessage& m);

@@ -9,8 +9,8 @@
 
 in vec2 v_uv;
 layout(location = 0) out vec4 o_albedo;
-layout(binding = 0) uniform sampler2D u_depth;
-layout(binding = 1) uniform sampler2D u_normal;
+layout(binding = UNIT_ALBEDO_DEPTH) uniform sampler2D u_depth;
+layout(binding = UNIT_ALBEDO_NORMAL) uniform sampler2D u_normal;
 
 void main() {
   float z = texture(u_depth, v_uv).r;

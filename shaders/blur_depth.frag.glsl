@@ -4,6 +4,6 @@
 // representative_depth). With it attached, the half-resolution lighting and blur passes test
 // depth and shade the surface only (gl::setSurfaceOnlyScreenPassState), as the full-resolution
 // passes do with the G-buffer's own depth.
-layout(binding = 0) uniform sampler2D u_depth;  // the G-buffer's
+layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_depth;  // the G-buffer's
 uniform int u_scale;
 void main() { gl_FragDepth = texelFetch(u_depth, ivec2(gl_FragCoord.xy) * u_scale, 0).r; }

@@ -5,7 +5,7 @@
 //   env_radiance(dir, roughness): radiance seen looking along dir, blurred by a GGX lobe of that roughness
 // Needs from the includer: PI, studio_diffuse(), studio_radiance().
 
-layout(binding = 7) uniform sampler2D u_env_map;  // mip k >= 1: GGX-prefiltered for alpha_1 2^(k-1)
+layout(binding = UNIT_ENV_MAP) uniform sampler2D u_env_map;  // mip k >= 1: GGX-prefiltered for alpha_1 2^(k-1)
 // The kind is a constant of the program (ENV_KIND, defined by the passes that include this;
 // gl/program_variants.h): llvmpipe would run the map's lookups for the studio too.
 #ifdef ENV_KIND
@@ -21,7 +21,6 @@ uniform float u_env_max_lod;
 // the roughness by the pass that calls env_radiance (marble::setStudioBlurUniform).
 uniform vec2 u_studio_blur_cs;
 
-const int ENV_STUDIO = 0, ENV_MAP = 1;  // kEnvStudio, kEnvMap in render/environment_map.h
 const float kStudioBlurPerRoughness = 1.2;  // the same constant in render/environment_map.h
 
 // A world direction in the map's own frame: the map is turned by +yaw about +Y, so it is looked

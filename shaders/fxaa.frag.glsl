@@ -20,7 +20,7 @@ layout(location = 0) out vec4 o_color;
 // RGBA8 display image, GL_LINEAR, clamped to edge; alpha: the luma of the colour (the post pass
 // computes it once per pixel). Neighbours' lumas are read four at a time (textureGather of
 // alpha): on llvmpipe every texture read costs about as much as the rest of a simple pass.
-layout(binding = 0) uniform sampler2D u_image;
+layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_image;
 uniform vec2 u_texel;                           // 1 / image size
 
 // Lottes' defaults for the quality path: contrast threshold 0.166 (0.063 "overkill" ... 0.333

@@ -12,11 +12,11 @@ layout(location = 0) out vec4 o_color;
 // surface reflects). The pass binds only the output its mode uses.
 layout(location = 1) out vec4 o_diffuse;
 
-layout(binding = 0) uniform sampler2D u_albedo;
-layout(binding = 1) uniform sampler2D u_normal;
-layout(binding = 2) uniform sampler2D u_depth;
-layout(binding = 3) uniform sampler2D u_light_distance;
-layout(binding = 4) uniform sampler2DShadow u_light_shadow;
+layout(binding = UNIT_LIGHTING_ALBEDO) uniform sampler2D u_albedo;
+layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
+layout(binding = UNIT_LIGHTING_LIGHT_DISTANCE) uniform sampler2D u_light_distance;
+layout(binding = UNIT_LIGHTING_LIGHT_SHADOW) uniform sampler2DShadow u_light_shadow;
 
 uniform vec2 u_camera_near_far;
 uniform vec2 u_light_near_far;   // range of distances the light's map can hold
@@ -51,10 +51,7 @@ uniform float u_env_intensity;   // 0 = no environment light
 // takes it to stand for (subsurface_common.glsl, representative_depth).
 uniform int u_scale;
 
-// Keep in step with marble::RenderMode.
-const int MODE_PAPER = 0, MODE_MARBLE = 1, MODE_PHONG = 2, MODE_OREN_NAYAR = 3, MODE_SUBSURFACE = 4,
-          MODE_REFLECTANCE = 5, MODE_ALBEDO = 6, MODE_LIGHT_DEPTH = 7, MODE_THICKNESS = 8,
-          MODE_DEPTH = 9, MODE_POSITION = 10, MODE_NORMAL = 11;
+// MODE_PAPER, MODE_MARBLE, ...: marble::RenderMode's numbers (render/shader_constants.h).
 
 // Distance the light travelled inside the object before leaving at p (GPU Gems 1, 16.3):
 // the light's map holds where it entered; p is where it leaves.

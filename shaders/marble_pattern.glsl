@@ -94,10 +94,10 @@ PatParams marble_params() {
 // to rounding). Defined by the passes with the grid's dimensions, 3 (solid) or 2; the program
 // is specialized for it with PAT_MAPPING, so only the mapping's own lines run.
 #if PAT_TURBULENCE_GRID == 3
-layout(binding = 8) uniform sampler3D u_pat_turbulence_grid;
+layout(binding = UNIT_TURBULENCE_GRID) uniform sampler3D u_pat_turbulence_grid;
 float pat_grid_turbulence3(vec3 q) { return texture(u_pat_turbulence_grid, (q + 0.5) / u_pat_resolution).r; }
 #else
-layout(binding = 8) uniform sampler2D u_pat_turbulence_grid;
+layout(binding = UNIT_TURBULENCE_GRID) uniform sampler2D u_pat_turbulence_grid;
 // Texel i holds the value at q = i: its centre is at (i + 0.5) / W.
 float pat_grid_turbulence2(vec2 q) { return texture(u_pat_turbulence_grid, (q + 0.5) / u_pat_resolution).r; }
 float pat_grid_pattern2(PatParams P, vec2 q) { return pat_sine(pat_ramp2(P, q), pat_grid_turbulence2(q), P.turbPower); }

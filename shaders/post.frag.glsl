@@ -28,12 +28,12 @@ in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_diffuse;  // DIFFUSE_SOURCE 0 and 1: blurred light x albedo, linear
 layout(location = 2) out vec4 o_albedo;   // DIFFUSE_SOURCE 0: the pattern's colour
-layout(binding = 0) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
-layout(binding = 2) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
-layout(binding = 3) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
-layout(binding = 4) uniform sampler2D u_albedo;
-layout(binding = 5) uniform sampler2D u_normal;
-layout(binding = 6) uniform sampler2DShadow u_light_shadow;
+layout(binding = UNIT_POST_HDR) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
+layout(binding = UNIT_POST_BLURRED) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
+layout(binding = UNIT_POST_DIFFUSE) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
+layout(binding = UNIT_POST_ALBEDO) uniform sampler2D u_albedo;
+layout(binding = UNIT_POST_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_POST_LIGHT_SHADOW) uniform sampler2DShadow u_light_shadow;
 // Composing `marble` or passing another mode through: a constant of the program
 // (COMPOSE_MARBLE 0 or 1, defined by the post pass; gl/program_variants.h).
 const int u_compose_marble = COMPOSE_MARBLE;

@@ -20,9 +20,9 @@
 
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
-layout(binding = 1) uniform sampler2D u_depth;             // the G-buffer's: 1 where no object
-layout(binding = 6) uniform sampler2DShadow u_light_shadow;
-layout(binding = 8) uniform sampler2D u_bottom_distance;  // R32F, nearest
+layout(binding = UNIT_SURFACE_DEPTH) uniform sampler2D u_depth;             // the G-buffer's: 1 where no object
+layout(binding = UNIT_STAGE_LIGHT_SHADOW) uniform sampler2DShadow u_light_shadow;
+layout(binding = UNIT_STAGE_BOTTOM_DISTANCE) uniform sampler2D u_bottom_distance;  // R32F, nearest
 
 uniform int u_luma_alpha;        // 1: alpha holds the display colour's luma, for FXAA
 uniform float u_exposure_scale;  // 2^exposure, as the post pass

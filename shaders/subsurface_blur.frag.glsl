@@ -21,13 +21,13 @@
 layout(location = 0) out vec4 o_color;
 // The lighting pass's entering light (first pass) or the first pass's result (second), at the
 // blur's resolution; alpha: view depth, 0 off the stone.
-layout(binding = 0) uniform sampler2D u_entering;
+layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_entering;
 uniform vec2 u_direction;          // (1,0) then (0,1)
 uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans in texels)
 uniform float u_step_mm;           // spacing of the taps, mm (u_reach_mm / u_taps)
-uniform vec3 u_weights[10];        // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
+uniform vec3 u_weights[MAX_TAPS + 1];  // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
 
-const int MAX_TAPS = 9;            // kMaxTaps in subsurface_blur_pass.cpp
+// MAX_TAPS: render/shader_constants.h
 
 void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);

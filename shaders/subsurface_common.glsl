@@ -2,7 +2,7 @@
 // half-resolution result, share: depths and the millimetre scale on screen. Set by
 // marble::setSubsurfaceUniforms (src/marble/render/subsurface_blur_pass.h). Needs gbuffer.glsl
 // included before it.
-layout(binding = 1) uniform sampler2D u_depth;  // the G-buffer's, full resolution
+layout(binding = UNIT_SURFACE_DEPTH) uniform sampler2D u_depth;  // the G-buffer's, full resolution
 uniform vec2 u_near_far;
 uniform float u_mm_per_unit;
 uniform float u_pixels_per_mm_at_unit_depth;  // full-res pixels per mm at view distance 1 unit

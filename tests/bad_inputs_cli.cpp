@@ -268,7 +268,7 @@ const std::vector<Row>& rows() {
        "marble render: negwidth.json: render.width: expected a whole number in [1, 8192], got -1"},
       {"SceneNanLiteral", "NaN in scene JSON (not JSON)", "render nanliteral.json" + kSmall, 2,
        "marble render: nanliteral.json: invalid JSON: parse error at line 1, column 26"},
-      // Regression (found by fuzz_scene): see GltfNumberOverflow. Fails until scene_json.cpp catches it.
+      // Regression (found by fuzz_scene): see GltfNumberOverflow. Fails until scene_io.cpp (loadSceneText) catches it.
       {"SceneNumberOverflow", "number beyond double (1e400) in a scene", "render overflow.json" + kSmall, 2, "marble render: overflow.json: "},
       {"SceneHugeCoordinate", "camera at 1e39", "render far.json" + kSmall, 2,
        "marble render: far.json: camera.position: component 2 must be in [-10000, 10000], got 1e+39"},

@@ -1,18 +1,34 @@
 #pragma once
 // Shared by the GL tests: one headless context per test binary (EGL on llvmpipe here; a GL
-// test that cannot get a context fails, it does not skip), and a render-to-image helper.
+// test that cannot get a context fails, it does not skip), with KHR_debug output on, and a
+// render-to-image helper.
 #include <gtest/gtest.h>
 
 #include <memory>
 
+#include "marble/gl/debug_output.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
 
 namespace marble::test {
 
+// The GL tests' debug handler: a severe message (gl::isSevere: an error, undefined behaviour,
+// anything of high severity) fails the running test with the driver's words; lesser ones other
+// than notifications are printed.
+inline void failOnSevereGlMessages(const gl::DebugMessage& m) {
+  if (gl::isSevere(m))
+    ADD_FAILURE() << gl::describe(m);
+  else
+    gl::printDebugMessage(m);
+}
+
 inline HeadlessContext& glContext() {
-  static std::unique_ptr<HeadlessContext> ctx = std::make_unique<HeadlessContext>();
+  static std::unique_ptr<HeadlessContext> ctx = [] {
+    auto c = std::make_unique<HeadlessContext>();
+    gl::enableDebugOutput(failOnSevereGlMessages);
+    return c;
+  }();
   return *ctx;
 }
 

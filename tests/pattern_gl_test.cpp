@@ -11,10 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "gl_support.h"
 #include "marble/gl/headless_context.h"
 #include "marble/gl/shader_library.h"
 #include "marble/noise/marble_pattern.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/turbulence_texture.h"
 #include "marble/scene/material_io.h"
@@ -86,7 +88,10 @@ void main() {
 
 class PatternGlTest : public ::testing::Test {
 protected:
-  static void SetUpTestSuite() { ctx_ = new HeadlessContext(); }
+  static void SetUpTestSuite() {
+    ctx_ = new HeadlessContext();
+    gl::enableDebugOutput(test::failOnSevereGlMessages);
+  }
   static void TearDownTestSuite() {
     delete ctx_;
     ctx_ = nullptr;
@@ -112,9 +117,12 @@ protected:
     glNamedBufferStorage(buffers_[2], 2 * kPoints * sizeof(glm::vec4), nullptr, GL_MAP_READ_BIT);
   }
 
-  // The compute program with `defines` (#define lines) before the pattern's source; 0 on error.
+  // The compute program with `defines` (#define lines) before the pattern's source, after the
+  // constants every shader gets (render/shader_constants.h); 0 on error.
   static GLuint buildProgram(const std::string& defines, const char* main = kComputeMain) {
-    const std::string src = "#version 450 core\n" + defines +
+    std::string shared;
+    for (const auto& d : shader::sharedShaderDefines()) shared += "#define " + d + "\n";
+    const std::string src = "#version 450 core\n" + shared + defines +
                             inlineIncludes(embeddedShaders().at("marble_pattern.glsl")) + main;
     const char* text = src.c_str();
     const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);

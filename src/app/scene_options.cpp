@@ -7,6 +7,7 @@
 
 #include "marble/core/error.h"
 #include "marble/gl/program.h"
+#include "marble/scene/enum_choice.h"
 #include "marble/scene/material_io.h"
 #include "marble/scene/material_params.h"
 #include "marble/scene/orbit.h"
@@ -230,10 +231,14 @@ Scene buildScene(const SceneOptions& o) {
     if (!std::isfinite(*o.creaseAngle)) throw InputError("--crease-angle", "", "expected a number of degrees in [0, 180]");
     scene.crease_angle_deg = *o.creaseAngle;
   }
-  if (o.subsurfaceResolution == "half") scene.render.subsurface_resolution = SubsurfaceResolution::Half;
-  else if (o.subsurfaceResolution == "full") scene.render.subsurface_resolution = SubsurfaceResolution::Full;
-  else if (!o.subsurfaceResolution.empty())
-    throw InputError("--subsurface-resolution", "", "expected half or full, got \"" + o.subsurfaceResolution + "\"");
+  if (!o.subsurfaceResolution.empty()) {
+    const EnumChoice* e = findChoice(subsurfaceResolutionChoices(), o.subsurfaceResolution);
+    if (!e)
+      throw InputError("--subsurface-resolution", "",
+                       "expected " + choiceAlternatives(subsurfaceResolutionChoices(), false) + ", got \"" +
+                           o.subsurfaceResolution + "\"");
+    scene.render.subsurface_resolution = static_cast<SubsurfaceResolution>(e->value);
+  }
   if (!o.environmentMap.empty()) {
     scene.render.environment_map = o.environmentMap;
     scene.render.environment = Environment::Map;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "marble/core/error.h"
+#include "marble/gl/debug_output.h"
 
 namespace marble {
 namespace {
@@ -27,6 +28,8 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  // A debug context makes drivers report everything they notice (gl/debug_output.h).
+  if (gl::debugOutputWanted()) glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     glfwTerminate();
@@ -38,6 +41,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwTerminate();
     throw EnvironmentError("the window's OpenGL is older than 4.5 core");
   }
+  if (gl::debugOutputWanted()) gl::enableDebugOutput();
 }
 
 GlfwWindow::~GlfwWindow() {

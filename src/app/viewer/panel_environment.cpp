@@ -31,7 +31,7 @@ void drawEnvironmentSection(ViewerState& s) {
   if (!ImGui::CollapsingHeader("Environment")) return;
   RenderSettings& r = s.scene.render;
   Environment choice = r.environment;
-  if (enumCombo("environment", choice, {"studio", "none", "map"},
+  if (enumCombo("environment", choice, environmentChoices(),
                 "Light from all around the object (marble mode): diffuse light and the reflections in the polish.\n"
                 "studio: a built-in photo studio (softbox, strip lights). none: only the light.\n"
                 "map: an equirectangular Radiance .hdr (twice as wide as high), loaded below.")) {

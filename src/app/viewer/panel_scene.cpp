@@ -30,13 +30,9 @@ void drawTopBar(ViewerState& s) {
   }
   tooltip("Built-in marbles. Picking one replaces the whole material (undoable).\n"
           "Files: load your own in the Files section.");
-  int mode = static_cast<int>(s.scene.render.mode);
-  std::vector<const char*> names;
-  for (const auto& n : renderModeNames()) names.push_back(n.c_str());
-  if (ImGui::Combo("render mode", &mode, names.data(), static_cast<int>(names.size())))
-    s.scene.render.mode = static_cast<RenderMode>(mode);
-  tooltip("marble: our best. paper: the paper's combination. phong / oren-nayar: comparisons.\n"
-          "subsurface, reflectance: one term alone. albedo ... normal: the buffers. floor: the mesh once, flat (the benchmarks' floor).");
+  enumCombo("render mode", s.scene.render.mode, renderModeChoices(),
+            "marble: our best. paper: the paper's combination. phong / oren-nayar: comparisons.\n"
+            "subsurface, reflectance: one term alone. albedo ... normal: the buffers. floor: the mesh once, flat (the benchmarks' floor).");
   if (s.scene.render.mode == RenderMode::Marble) {
     bool fullBlur = s.scene.render.subsurface_resolution == SubsurfaceResolution::Full;
     if (ImGui::Checkbox("full-resolution blur", &fullBlur))
@@ -158,7 +154,7 @@ void drawLightSection(ViewerState& s) {
   ImGui::SameLine();
   if (ImGui::SmallButton("at camera")) s.light = Orbit::fromPosition(s.camera.position());
   tooltip("Light from the viewer's position: flat, shows the pattern best.");
-  enumCombo("type", s.scene.light.type, {"point", "directional"},
+  enumCombo("type", s.scene.light.type, lightTypeChoices(),
             "Point: light from a position, with falloff. Directional: parallel light from that direction (the sun).");
   colour("colour##light", s.scene.light.color, "Colour of the light (linear RGB).");
   ImGui::SliderFloat("intensity", &s.scene.light.intensity, 0.0f, 4.0f, "%.2f");
@@ -194,7 +190,7 @@ void drawViewSection(ViewerState& s) {
   ImGui::SliderFloat("exposure", &s.scene.render.exposure, -5.0f, 5.0f, "%+.1f EV");
   tooltip("Stops of brightness before tone mapping (+1 doubles the light; `--exposure`). Saved with the scene.");
   colour("background", s.scene.render.background, "Colour behind the object (linear RGB), saved with the scene.");
-  enumCombo("antialiasing", s.scene.render.antialias, {"none", "FXAA"},
+  enumCombo("antialiasing", s.scene.render.antialias, antialiasChoices(),
             "FXAA smooths the stair-stepped edges of the picture (silhouettes, sharp veins) after tone mapping;\n"
             "flat areas stay exactly as they are. Saved with the scene. Not used by the floor mode.");
   ImGui::Checkbox("vsync", &s.vsync);

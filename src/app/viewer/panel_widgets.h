@@ -4,9 +4,13 @@
 #include <imgui.h>
 
 #include <initializer_list>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
+
+#include "marble/scene/enum_choice.h"
 
 namespace marble::viewer {
 
@@ -24,6 +28,17 @@ template <typename Enum>
 bool enumCombo(const char* label, Enum& value, std::initializer_list<const char*> names, const char* tip) {
   int i = static_cast<int>(value);
   const bool changed = ImGui::Combo(label, &i, names.begin(), static_cast<int>(names.size()));
+  if (changed) value = static_cast<Enum>(i);
+  tooltip(tip);
+  return changed;
+}
+
+// The same for an enum with a name table (scene/enum_choice.h): the combo shows its labels.
+template <typename Enum>
+bool enumCombo(const char* label, Enum& value, std::span<const EnumChoice> table, const char* tip) {
+  const std::vector<const char*> labels = choiceLabelsByValue(table);
+  int i = static_cast<int>(value);
+  const bool changed = ImGui::Combo(label, &i, labels.data(), static_cast<int>(labels.size()));
   if (changed) value = static_cast<Enum>(i);
   tooltip(tip);
   return changed;

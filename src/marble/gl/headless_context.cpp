@@ -6,9 +6,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "marble/core/error.h"
+#include "marble/gl/debug_output.h"
 
 #ifndef EGL_PLATFORM_SURFACELESS_MESA
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
@@ -53,6 +56,36 @@ std::vector<EGLDisplay> candidateDisplays() {
   return out;
 }
 
+// Gives back what a display and context hold, in reverse order of acquisition; either may be
+// null (a display initialized but no context made yet).
+void releaseEgl(EGLDisplay display, EGLContext context) {
+  if (!display) return;
+  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  if (context) eglDestroyContext(display, context);
+  eglTerminate(display);
+}
+
+// What one candidate display has acquired so far. Whatever a failed attempt holds is released
+// when it goes out of scope (a `continue`, a throw); a successful one hands both over with
+// release(), after which it owns nothing.
+class EglAttempt {
+public:
+  EglAttempt() = default;
+  ~EglAttempt() { releaseEgl(display_, context_); }
+  EglAttempt(const EglAttempt&) = delete;
+  EglAttempt& operator=(const EglAttempt&) = delete;
+
+  void ownDisplay(EGLDisplay d) { display_ = d; }   // after eglInitialize succeeded
+  void ownContext(EGLContext c) { context_ = c; }
+  std::pair<EGLDisplay, EGLContext> release() {
+    return {std::exchange(display_, nullptr), std::exchange(context_, nullptr)};
+  }
+
+private:
+  EGLDisplay display_ = nullptr;
+  EGLContext context_ = nullptr;
+};
+
 }  // namespace
 
 HeadlessContext::HeadlessContext() {
@@ -66,9 +99,10 @@ HeadlessContext::HeadlessContext() {
       if (lastProblem.rfind("no EGL display", 0) == 0) lastProblem = "eglInitialize failed";
       continue;
     }
+    EglAttempt attempt;
+    attempt.ownDisplay(display);
     if (!eglBindAPI(EGL_OPENGL_API)) {
       lastProblem = "EGL has no desktop OpenGL API";
-      eglTerminate(display);
       continue;
     }
     const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
@@ -82,36 +116,24 @@ HeadlessContext::HeadlessContext() {
     EGLContext ctx = eglCreateContext(display, numConfigs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttribs);
     if (ctx == EGL_NO_CONTEXT) {
       lastProblem = "the driver offers no OpenGL 4.5 core context";
-      eglTerminate(display);
       continue;
     }
+    attempt.ownContext(ctx);
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
       lastProblem = "cannot make a surfaceless context current (EGL_KHR_surfaceless_context missing)";
-      eglDestroyContext(display, ctx);
-      eglTerminate(display);
       continue;
     }
-    display_ = display;
-    context_ = ctx;
-    if (epoxy_gl_version() < 45) {
-      const int v = epoxy_gl_version();
-      this->~HeadlessContext();
-      display_ = context_ = nullptr;
+    if (const int v = epoxy_gl_version(); v < 45)
       throw EnvironmentError("headless OpenGL: got version " + std::to_string(v / 10) + "." + std::to_string(v % 10) +
-                             ", marble needs 4.5 core");
-    }
+                             ", marble needs 4.5 core");  // `attempt` releases the context
+    std::tie(display_, context_) = attempt.release();
+    if (gl::debugOutputWanted()) gl::enableDebugOutput();
     return;
   }
   throw EnvironmentError("headless OpenGL: " + lastProblem);
 }
 
-HeadlessContext::~HeadlessContext() {
-  if (!display_) return;
-  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (context_) eglDestroyContext(display_, context_);
-  eglTerminate(display_);
-  display_ = context_ = nullptr;
-}
+HeadlessContext::~HeadlessContext() { releaseEgl(display_, context_); }
 
 std::string HeadlessContext::renderer() const {
   const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

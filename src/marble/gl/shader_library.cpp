@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "marble/render/shader_constants.h"
+
 namespace marble {
 
 ShaderLibrary::ShaderLibrary(std::string sourceDir) : sourceDir_(std::move(sourceDir)) {}
@@ -46,6 +48,7 @@ std::string ShaderLibrary::assemble(const std::string& name, const std::vector<s
   if (body.rfind("#version", 0) != 0 || eol == std::string::npos)
     throw std::runtime_error(displayName(name) + ":1: error: a shader must start with #version");
   std::string head = body.substr(0, eol + 1);
+  for (const auto& d : shader::sharedShaderDefines()) head += "#define " + d + "\n";
   for (const auto& d : defines) head += "#define " + d + "\n";
   head += "#line 2 0\n";
   return head + body.substr(eol + 1);

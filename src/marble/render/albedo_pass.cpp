@@ -3,6 +3,7 @@
 #include "marble/noise/marble_pattern.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/render/turbulence_texture.h"
 
 namespace marble {
@@ -52,13 +53,14 @@ void AlbedoPass::compileAll() {
 }
 
 void AlbedoPass::resize(int width, int height, GLuint depthTexture) {
-  if (width == width_ && height == height_ && depthTexture == depth_ && fbo_) return;
-  width_ = width;
-  height_ = height;
-  depth_ = depthTexture;
-  albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
-  fbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  if (width != width_ || height != height_ || !fbo_) {
+    width_ = width;
+    height_ = height;
+    albedo_ = gl::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST);
+    fbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, albedo_.id(), 0);
+  }
+  // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(fbo_.id(), depthTexture);
 }
 
@@ -72,7 +74,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
-  glBindTextures(0, 2, textures);
+  glBindTextures(shader::UNIT_ALBEDO_DEPTH, 2, textures);
   const gl::Program& p = programs_.get(patternVariantKey(material, turbulenceGrid),
                                        [&] { return patternDefines(material, turbulenceGrid); });
   setPatternUniforms(p, model, camera, turbulenceGrid);

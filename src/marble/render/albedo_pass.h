@@ -41,7 +41,6 @@ private:
   gl::Texture albedo_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
-  GLuint depth_ = 0;
   PassTimer timer_;
 };
 

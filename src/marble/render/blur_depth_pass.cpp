@@ -1,5 +1,7 @@
 #include "marble/render/blur_depth_pass.h"
 
+#include "marble/render/shader_constants.h"
+
 namespace marble {
 
 BlurDepthPass::BlurDepthPass(const ShaderLibrary& shaders)
@@ -8,11 +10,11 @@ BlurDepthPass::BlurDepthPass(const ShaderLibrary& shaders)
 
 bool BlurDepthPass::resize(int width, int height, int scale, GLuint gBufferDepth) {
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;  // rounded up, as the blur's
-  if (w == width_ && h == height_ && scale == scale_ && gBufferDepth == gBufferDepth_) return false;
+  gBufferDepth_ = gl::Borrowed(gBufferDepth);
+  if (w == width_ && h == height_ && scale == scale_) return false;
   width_ = w;
   height_ = h;
   scale_ = scale;
-  gBufferDepth_ = gBufferDepth;
   if (scale == 1) {
     depth_ = {};
     fbo_ = {};
@@ -36,7 +38,7 @@ void BlurDepthPass::run(const ScreenRect& rect) {
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   scissorTo(scaledDown(rect, scale_));
-  glBindTextureUnit(0, gBufferDepth_);
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT, gBufferDepth_.id());
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
   scissorOff();

@@ -9,6 +9,7 @@
 
 #include "marble/environment/environment_lighting.h"
 #include "marble/gl/program.h"
+#include "marble/render/shader_constants.h"
 #include "marble/scene/scene.h"
 
 namespace marble {
@@ -35,8 +36,8 @@ private:
 // What environment.glsl is given for a frame. The kind (studio -- also used, at intensity 0,
 // for none -- or map) is compiled into the programs that include it (ENV_KIND); the rest are
 // uniforms, and the map's texture goes to unit kEnvMapUnit.
-constexpr int kEnvStudio = 0, kEnvMap = 1;  // ENV_STUDIO, ENV_MAP in environment.glsl
-constexpr GLuint kEnvMapUnit = 7;            // u_env_map's binding
+constexpr int kEnvStudio = shader::ENV_STUDIO, kEnvMap = shader::ENV_MAP;
+constexpr GLuint kEnvMapUnit = shader::UNIT_ENV_MAP;  // u_env_map's binding
 // `map`: the loaded map, or null when none is (a scene asking for a map then has no environment).
 int environmentKind(const RenderSettings& settings, const EnvironmentMap* map);
 std::string environmentDefine(const RenderSettings& settings, const EnvironmentMap* map);  // "ENV_KIND k"

@@ -1,5 +1,7 @@
 #include "marble/render/fxaa_pass.h"
 
+#include "marble/render/shader_constants.h"
+
 namespace marble {
 
 namespace {
@@ -42,7 +44,7 @@ void FxaaPass::run(GLuint displayImage, GLuint targetFbo, int width, int height,
   scissorTo({0, 0, width, height});  // the target may be larger than the frame
   glClearBufferfv(GL_COLOR, 0, &clear.x);
   scissorOff();
-  glBindTextureUnit(0, displayImage);
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT, displayImage);
   program_.set("u_texel", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
   program_.set("u_target_size", glm::vec2(width, height));
   glUseProgram(program_.id());

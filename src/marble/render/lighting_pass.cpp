@@ -2,6 +2,7 @@
 
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/scene/material_scattering.h"
 
 namespace marble {
@@ -25,26 +26,24 @@ void LightingPass::compileAll() {
 }
 
 void LightingPass::resize(int width, int height, int enteringScale, GLuint depthTexture, GLuint enteringDepth) {
-  if (width == width_ && height == height_ && enteringScale == enteringScale_ && depthTexture == depth_ &&
-      enteringDepth == enteringDepth_ && fbo_)
-    return;
-  enteringDepth_ = enteringDepth;
-  width_ = width;
-  height_ = height;
-  enteringScale_ = enteringScale;
-  enteringWidth_ = (width + enteringScale - 1) / enteringScale;  // rounded up, as the blur's
-  enteringHeight_ = (height + enteringScale - 1) / enteringScale;
-  depth_ = depthTexture;
-  hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
-  entering_ = gl::makeTexture2D(GL_RGBA16F, enteringWidth_, enteringHeight_, GL_LINEAR);
-  // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
-  fbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+  if (width != width_ || height != height_ || enteringScale != enteringScale_ || !fbo_) {
+    width_ = width;
+    height_ = height;
+    enteringScale_ = enteringScale;
+    enteringWidth_ = (width + enteringScale - 1) / enteringScale;  // rounded up, as the blur's
+    enteringHeight_ = (height + enteringScale - 1) / enteringScale;
+    hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
+    entering_ = gl::makeTexture2D(GL_RGBA16F, enteringWidth_, enteringHeight_, GL_LINEAR);
+    // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
+    fbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+    enteringFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
+    const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(enteringFbo_.id(), 2, bufs);
+  }
+  // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(fbo_.id(), depthTexture);
-  enteringFbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
-  const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(enteringFbo_.id(), 2, bufs);
   gl::attachSurfaceDepth(enteringFbo_.id(), enteringDepth);
 }
 
@@ -70,7 +69,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   else if (!wholeFrame)
     scissorTo(rect);
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
-  glBindTextures(0, 5, textures);
+  glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 5, textures);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));

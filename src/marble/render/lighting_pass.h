@@ -44,7 +44,6 @@ private:
   gl::Texture hdr_, entering_;
   gl::Framebuffer fbo_, enteringFbo_;
   int width_ = 0, height_ = 0, enteringWidth_ = 0, enteringHeight_ = 0, enteringScale_ = 0;
-  GLuint depth_ = 0, enteringDepth_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
 };

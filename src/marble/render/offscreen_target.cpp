@@ -9,14 +9,7 @@ OffscreenTarget::OffscreenTarget(int width, int height, GLenum internalFormat)
 }
 
 void OffscreenTarget::attach(GLenum attachment, GLuint texture) {
-  for (auto& [point, id] : attached_)
-    if (point == attachment) {
-      if (id != texture) glNamedFramebufferTexture(fbo_.id(), attachment, texture, 0);
-      id = texture;
-      return;
-    }
   glNamedFramebufferTexture(fbo_.id(), attachment, texture, 0);
-  attached_.emplace_back(attachment, texture);
 }
 
 ImageRGBA8 OffscreenTarget::read() const {

@@ -21,15 +21,14 @@ public:
   ImageRGBA8 read() const;  // top row first; RGBA8 targets only
   // Attaches `texture` (of the same size) at `attachment` of the framebuffer, besides its own
   // colour at GL_COLOR_ATTACHMENT0: e.g. the G-buffer's depth (GL_DEPTH_ATTACHMENT), for a
-  // pass limited to the surface (gl::setSurfaceOnlyScreenPassState). Re-attaching the same
-  // texture at the same place does nothing.
+  // pass limited to the surface (gl::setSurfaceOnlyScreenPassState). The texture is borrowed
+  // (gl::Borrowed): attached on every call, never compared with what was attached before.
   void attach(GLenum attachment, GLuint texture);
 
 private:
   int width_, height_;
   gl::Texture color_;
   gl::Framebuffer fbo_;
-  std::vector<std::pair<GLenum, GLuint>> attached_;
 };
 
 }  // namespace marble

@@ -2,13 +2,14 @@
 
 #include <cmath>
 
-#include "marble/render/albedo_pass.h"
 #include "marble/noise/turbulence_grid.h"
-#include "marble/scene/material_scattering.h"
+#include "marble/render/albedo_pass.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/lighting_pass.h"
 #include "marble/render/material_uniforms.h"
+#include "marble/render/shader_constants.h"
 #include "marble/render/subsurface_blur_pass.h"
+#include "marble/scene/material_scattering.h"
 
 namespace marble {
 
@@ -103,7 +104,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   const GLsizei outputs = !marble || source == DiffuseSource::Stored ? 1 : source == DiffuseSource::StoredAlbedo ? 2 : 3;
   glNamedFramebufferDrawBuffers(targetFbo, outputs, all);
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
-  glBindTextures(0, 7, textures);
+  glBindTextures(shader::UNIT_POST_HDR, 7, textures);
   const int envKind = environmentKind(settings, view.environment);
   const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid);
   p.set("u_output_linear", linearOutput ? 1 : 0);

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "marble/render/frame_uniforms.h"
+#include "marble/render/shader_constants.h"
 
 namespace marble {
 
@@ -61,9 +62,9 @@ void StagePass::run(const Scene& scene, const CameraMatrices& camera, const Ligh
   p.set("u_ground", r.ground ? 1 : 0);
   p.set("u_ground_y", groundY);
   p.set("u_bottom_view_proj", bottomMatrices_.viewProj);
-  glBindTextureUnit(1, depth);
-  glBindTextureUnit(6, lightShadow);
-  glBindTextureUnit(8, bottom_.distanceTexture());
+  glBindTextureUnit(shader::UNIT_SURFACE_DEPTH, depth);
+  glBindTextureUnit(shader::UNIT_STAGE_LIGHT_SHADOW, lightShadow);
+  glBindTextureUnit(shader::UNIT_STAGE_BOTTOM_DISTANCE, bottom_.distanceTexture());
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   timer_.end();
 }

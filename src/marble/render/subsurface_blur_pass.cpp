@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "marble/render/shader_constants.h"
+
 namespace marble {
 
 namespace {
-// Taps per side at most; keep in step with MAX_TAPS in subsurface_blur.frag.glsl.
-constexpr int kMaxTaps = 9;
+// Taps per side at most (the shader's MAX_TAPS).
+constexpr int kMaxTaps = shader::MAX_TAPS;
 // Taps a texel apart: the profile sampled as finely as the (bilinearly read) light it blurs.
 // (Half a texel apart: twice the taps, +1 ms on the dragon at 800x800, for SSIM against Cycles
 // within +-0.006 on the reference scenes, docs/quality.md.)
@@ -29,16 +31,17 @@ int subsurfaceScale(const RenderSettings& settings) {
 
 void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTexture) {
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;  // rounded up
-  if (w == width_ && h == height_ && depthTexture == depth_ && resultFbo_) return;
-  depth_ = depthTexture;
-  width_ = w;
-  height_ = h;
-  horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
-  result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
-  horizontalFbo_ = gl::Framebuffer::create();
-  resultFbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
-  glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+  if (w != width_ || h != height_ || !resultFbo_) {
+    width_ = w;
+    height_ = h;
+    horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+    result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+    horizontalFbo_ = gl::Framebuffer::create();
+    resultFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);
+    glNamedFramebufferTexture(resultFbo_.id(), GL_COLOR_ATTACHMENT0, result_.id(), 0);
+  }
+  // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(horizontalFbo_.id(), depthTexture);
   gl::attachSurfaceDepth(resultFbo_.id(), depthTexture);
 }
@@ -100,12 +103,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   glClearNamedFramebufferfv(horizontalFbo_.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(resultFbo_.id(), GL_COLOR, 0, zero);
   scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
-  glBindTextureUnit(0, in.entering);
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT, in.entering);
   program_.set("u_direction", glm::vec2(1, 0));
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
-  glBindTextureUnit(0, horizontal_.id());
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT, horizontal_.id());
   program_.set("u_direction", glm::vec2(0, 1));
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -34,7 +34,6 @@ private:
   gl::Texture horizontal_, result_;
   gl::Framebuffer horizontalFbo_, resultFbo_;
   int width_ = 0, height_ = 0;
-  GLuint depth_ = 0;
   PassTimer timer_;
 };
 

@@ -7,11 +7,12 @@
 
 #include "marble/gl/handles.h"
 #include "marble/noise/turbulence_grid.h"
+#include "marble/render/shader_constants.h"
 
 namespace marble {
 
 // Texture unit of the grid in every program that evaluates the pattern (marble_pattern.glsl).
-inline constexpr GLuint kTurbulenceGridUnit = 8;
+inline constexpr GLuint kTurbulenceGridUnit = shader::UNIT_TURBULENCE_GRID;
 
 class TurbulenceTexture {
 public:

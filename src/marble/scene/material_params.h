@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "marble/scene/enum_choice.h"
 #include "marble/scene/material.h"
 #include "marble/scene/scene.h"
 
@@ -46,13 +47,6 @@ enum class ParamType {
   Vec3,    // glm::vec3, a coefficient per channel
   Colour,  // glm::vec3, linear RGB
   Choice,  // an enum, by name
-};
-
-// One name of an enum: in files and on the command line (`name`), in the panel (`label`).
-struct EnumChoice {
-  int value;
-  const char* name;
-  const char* label;
 };
 
 // A parameter's value, whatever its type: Text -> string; UInt, Int, Choice -> long long;

@@ -1,5 +1,6 @@
 #pragma once
-// Writing a whole scene as JSON that loadScene (scene_json.cpp) reads back to the same Scene:
+// A scene as JSON, both ways (scene_io.cpp; loadScene and loadSceneText are declared in
+// scene.h). Writing a whole scene as JSON that loadScene reads back to the same Scene:
 // every field is written (the full material, not a preset name plus overrides), floats as the
 // shortest decimal that reads back bit for bit, and the mesh path relative to the scene file's
 // folder so a scene and its mesh can be moved together.

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "marble/noise/marble_pattern.h"
+#include "marble/noise/turbulence_grid.h"
 #include "marble/scene/material_io.h"
 
 namespace {
@@ -136,6 +137,25 @@ void BM_Marble_Veins3D_Rows(benchmark::State& state) {
   });
 }
 
+// The same rows with the four turbulence samples read from the vein grid on the CPU
+// (AlbedoSampler::veinRow: the (W/2)^3 four-channel grid the GPU samples, baked once per
+// seed/resolution/turb_size, as the renderer keeps it; its bake is BM_Marble_VeinGrid_Bake).
+void BM_Marble_Veins3D_Rows_Grid(benchmark::State& state) {
+  const Material m = marble::loadPreset("carrara");
+  static const marble::AlbedoSampler sampler(m, 1e12);  // points enough to pay for the grid
+  std::vector<glm::vec3> colours(kGrid);
+  runGrid(state, [&](int y, float* out) {
+    const glm::vec3 origin(-1.0f, static_cast<float>(y) / 128.0f - 1.0f, kZ / 128.0f - 1.0f);
+    sampler.veinRow(origin, glm::vec3(1.0f / 128.0f, 0.0f, 0.0f), kGrid, colours.data(), out);
+  });
+}
+
+// Baking that grid (128^3 texels x 4 samples for carrara: W = 256), on all cores.
+void BM_Marble_VeinGrid_Bake(benchmark::State& state) {
+  const Material m = marble::loadPreset("carrara");
+  for (auto _ : state) benchmark::DoNotOptimize(marble::bakeTurbulenceGrid(m).data());
+}
+
 const int kThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
 #define MARBLE_BENCH(fn) BENCHMARK(fn)->Arg(1)->Arg(kThreads)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond)
@@ -145,6 +165,8 @@ MARBLE_BENCH(BM_Marble_Turbulence3D_PerPoint_Value);
 MARBLE_BENCH(BM_Marble_Turbulence3D_Rows_Value);
 MARBLE_BENCH(BM_Marble_Pattern3D_Rows_Value);
 MARBLE_BENCH(BM_Marble_Veins3D_Rows);
+MARBLE_BENCH(BM_Marble_Veins3D_Rows_Grid);
+BENCHMARK(BM_Marble_VeinGrid_Bake)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

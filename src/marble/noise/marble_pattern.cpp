@@ -144,7 +144,7 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 // The vein model's colour and value at the row's points origin + i * step (the expression the
 // per-point callers use), the four turbulence samples from samples(i, p, t).
 template <typename Samples>
-void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut,
+__attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut,
               Samples samples) {
   RowMemoScope memo;
   for (int i = 0; i < count; ++i) {

@@ -106,7 +106,7 @@ TEST(VeinRows, EqualThePointReferenceBitForBitOnRandomRows) {
     const Agreement n = compareRows(
         rows, [&](const Row& r, glm::vec3* c, float* v) { veinAlbedoRow(other, r.origin, r.step, r.count, c, v); },
         [&](glm::vec3 p) { return reference(m, p); });
-    EXPECT_GT(n.different, n.points * 9 / 10) << name;
+    EXPECT_GT(n.different, n.points / 2) << name;
   }
 }
 
@@ -194,7 +194,7 @@ TEST(VeinRows, GridRowsEqualTheGridSamplerBitForBit) {
     const Agreement na = compareRows(
         rows, [&](const Row& r, glm::vec3* c, float* v) { otherSampler.veinRow(r.origin, r.step, r.count, c, v); },
         [&](glm::vec3 p) { return glm::vec4(sampler(p, n), NAN); });
-    EXPECT_GT(na.different, na.points * 9 / 10) << preset;
+    EXPECT_GT(na.different, na.points / 2) << preset;
   }
 }
 

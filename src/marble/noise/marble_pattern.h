@@ -62,10 +62,10 @@ glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
 // colour (xyz) and value (w) at objectPos along the refracted view ray `ray` (object space,
 // unit, into the stone) with attenuation k per object unit (0: the surface, = veinAlbedo).
 glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
-// A row of object-space points (x0 + i * dx, y, z), i < count, the colour of each (the fast
-// path of `marble texture`: the four turbulence samples by rows, then the cells per point;
-// equal to veinAlbedo up to float rounding of the point positions -- bit-identical for the
-// same points, tested).
+// A row of object-space points origin + i * step, i < count, the colour and value of each (the
+// fast path of `marble texture`: along x the four turbulence samples by rows; then the model
+// per point with each Voronoi block and grain column computed once per row, marble_pattern.cpp
+// "row memo"). Bit-identical to veinAlbedo / veinPatternValue at the same points (tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
 
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl

@@ -142,10 +142,11 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 }
 
 // The vein model's colour and value at the row's points origin + i * step (the expression the
-// per-point callers use), the four turbulence samples from samples(i, p, t).
+// per-point callers use), the four turbulence samples from samples(i, p, t). Inlined whole, so
+// what depends on the parameters alone can leave the point loop.
 template <typename Samples>
-__attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut,
-              Samples samples) {
+__attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
+                                       glm::vec3* out, float* valueOut, Samples samples) {
   RowMemoScope memo;
   for (int i = 0; i < count; ++i) {
     const glm::vec3 p = origin + static_cast<float>(i) * step;

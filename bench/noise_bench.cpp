@@ -7,6 +7,9 @@
 // frequency 1/32 per texel, lacunarity 2, persistence 0.5 (each octave half the weight of the
 // previous: the same weights as the paper's turbulence), default quality (cubic s-curve).
 //
+// The vein model (issue 16) runs the Carrara preset on the same points: evaluated by rows, and
+// with its turbulence read from the baked vein grid (the grid's bake measured on its own).
+//
 // Each benchmark evaluates all 65,536 points per iteration; the counter "samples/s" is points
 // per second of wall time. "/threads:2" variants split the rows over std::threads.
 #include <benchmark/benchmark.h>
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "marble/noise/marble_pattern.h"
+#include "marble/noise/turbulence_grid.h"
 #include "marble/scene/material_io.h"
 
 namespace {
@@ -136,6 +140,25 @@ void BM_Marble_Veins3D_Rows(benchmark::State& state) {
   });
 }
 
+// The same rows with the four turbulence samples read from the vein grid on the CPU
+// (AlbedoSampler::veinRow: the (W/2)^3 four-channel grid the GPU samples, baked once per
+// seed/resolution/turb_size, as the renderer keeps it; its bake is BM_Marble_VeinGrid_Bake).
+void BM_Marble_Veins3D_Rows_Grid(benchmark::State& state) {
+  const Material m = marble::loadPreset("carrara");
+  static const marble::AlbedoSampler sampler(m, 1e12);  // points enough to pay for the grid
+  std::vector<glm::vec3> colours(kGrid);
+  runGrid(state, [&](int y, float* out) {
+    const glm::vec3 origin(-1.0f, static_cast<float>(y) / 128.0f - 1.0f, kZ / 128.0f - 1.0f);
+    sampler.veinRow(origin, glm::vec3(1.0f / 128.0f, 0.0f, 0.0f), kGrid, colours.data(), out);
+  });
+}
+
+// Baking that grid (128^3 texels x 4 samples for carrara: W = 256), on all cores.
+void BM_Marble_VeinGrid_Bake(benchmark::State& state) {
+  const Material m = marble::loadPreset("carrara");
+  for (auto _ : state) benchmark::DoNotOptimize(marble::bakeTurbulenceGrid(m).data());
+}
+
 const int kThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
 #define MARBLE_BENCH(fn) BENCHMARK(fn)->Arg(1)->Arg(kThreads)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond)
@@ -145,6 +168,8 @@ MARBLE_BENCH(BM_Marble_Turbulence3D_PerPoint_Value);
 MARBLE_BENCH(BM_Marble_Turbulence3D_Rows_Value);
 MARBLE_BENCH(BM_Marble_Pattern3D_Rows_Value);
 MARBLE_BENCH(BM_Marble_Veins3D_Rows);
+MARBLE_BENCH(BM_Marble_Veins3D_Rows_Grid);
+BENCHMARK(BM_Marble_VeinGrid_Bake)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

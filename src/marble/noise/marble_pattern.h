@@ -62,10 +62,10 @@ glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
 // colour (xyz) and value (w) at objectPos along the refracted view ray `ray` (object space,
 // unit, into the stone) with attenuation k per object unit (0: the surface, = veinAlbedo).
 glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
-// A row of object-space points (x0 + i * dx, y, z), i < count, the colour of each (the fast
-// path of `marble texture`: the four turbulence samples by rows, then the cells per point;
-// equal to veinAlbedo up to float rounding of the point positions -- bit-identical for the
-// same points, tested).
+// A row of object-space points origin + i * step, i < count, the colour and value of each (the
+// fast path of `marble texture`: along x the four turbulence samples by rows; then the model
+// per point with each Voronoi block and grain column computed once per row, marble_pattern.cpp
+// "row memo"). Bit-identical to veinAlbedo / veinPatternValue at the same points (tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
 
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
@@ -97,10 +97,21 @@ class AlbedoSampler {
  public:
   AlbedoSampler(const Material& m, double expectedPoints);
   glm::vec3 operator()(glm::vec3 objectPos, glm::vec3 objectNormal) const;
+  // The vein models' batched rows (as veinAlbedoRow: the points origin + i * step, i < count,
+  // colour and value before colour) with the turbulence from this sampler's grid: equal to
+  // operator() at each point bit for bit (tested). Rows along x read each grid column once;
+  // without a grid it is veinAlbedoRow. Throws std::logic_error for the paper's model.
+  void veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) const;
   bool usesGrid() const { return !grid_.empty(); }
 
  private:
-  float gridTurbulence(glm::vec3 g, int channel) const;  // g in grid texels (vein models: q / 2)
+  struct GridAxes {  // the 2 x 2 x 2 grid texels around a point and its weights
+    int x0, x1, y0, y1, z0, z1;
+    glm::vec3 f;
+  };
+  GridAxes gridAxes(glm::vec3 g) const;  // g in grid texels (vein models: q / 2)
+  float gridColumn(const GridAxes& a, int x, int channel) const;  // raw 16-bit units
+  float gridTurbulence(glm::vec3 g, int channel) const;
   Material material_;
   std::vector<uint16_t> grid_;  // W^3, x fastest; empty: evaluated per point
   int resolution_ = 0;  // the grid's texels per axis

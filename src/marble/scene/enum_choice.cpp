@@ -30,4 +30,11 @@ std::vector<const char*> choiceLabelsByValue(std::span<const EnumChoice> table) 
   return labels;
 }
 
+std::vector<std::string> choiceNames(std::span<const EnumChoice> table) {
+  std::vector<std::string> names;
+  names.reserve(table.size());
+  for (const auto& e : table) names.emplace_back(e.name);
+  return names;
+}
+
 }  // namespace marble

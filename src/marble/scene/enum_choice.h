@@ -24,6 +24,8 @@ const char* choiceName(std::span<const EnumChoice> table, int value);
 // The names as a message offers them, in table order: `"a" or "b"`, `"a", "b" or "c"` (quoted),
 // `a or b` (not).
 std::string choiceAlternatives(std::span<const EnumChoice> table, bool quoted = true);
+// The names in table order.
+std::vector<std::string> choiceNames(std::span<const EnumChoice> table);
 // The labels indexed by value (0, 1, ...: the values must be exactly those), for a combo box.
 std::vector<const char*> choiceLabelsByValue(std::span<const EnumChoice> table);
 

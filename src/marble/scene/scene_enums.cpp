@@ -63,11 +63,7 @@ std::span<const EnumChoice> antialiasChoices() { return kAntialias; }
 std::span<const EnumChoice> lightTypeChoices() { return kLightTypes; }
 
 const std::vector<std::string>& renderModeNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n;
-    for (const auto& e : kRenderModes) n.emplace_back(e.name);
-    return n;
-  }();
+  static const std::vector<std::string> names = choiceNames(kRenderModes);
   return names;
 }
 
@@ -95,11 +91,7 @@ bool modeShowsAlbedo(RenderMode mode) {
 }
 
 const std::vector<std::string>& environmentNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n;
-    for (const auto& e : kEnvironments) n.emplace_back(e.name);
-    return n;
-  }();
+  static const std::vector<std::string> names = choiceNames(kEnvironments);
   return names;
 }
 

@@ -29,12 +29,7 @@ void addBakeOptions(CLI::App& cmd, BakeCommandOptions& o) {
 BakeJobResult runBakeFromCommandLine(const BakeCommandOptions& o, BakeOutput kind, const std::filesystem::path& output) {
   // Everything that can be wrong is checked before anything is baked or written.
   const Scene scene = buildScene(o.scene);
-  BakeJob job;
-  job.kind = kind;
-  job.output = output;
-  job.size = o.size;
-  job.supersample = o.supersample;
-  job.uvSource = parseUvSource(o.uvFrom);
+  const BakeJob job{.kind = kind, .output = output, .size = o.size, .supersample = o.supersample, .uvSource = parseUvSource(o.uvFrom)};
   checkBakeJob(job);
   const Mesh loaded = loadSceneMesh(scene);
   ProgressBar bar(o.progress || isatty(STDERR_FILENO));

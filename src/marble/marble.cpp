@@ -59,12 +59,11 @@ Scene sceneFor(const StoneSource& source, std::vector<std::string>& warnings) {
 
 BakeSummary bake(const Stone& stone, BakeOutput kind, const std::filesystem::path& output, const BakeSettings& settings) {
   return translated([&] {
-    BakeJob job;
-    job.kind = kind;
-    job.output = output;
-    job.size = settings.size;
-    job.supersample = settings.supersample;
-    job.uvSource = parseUvSource(settings.uvFrom);
+    const BakeJob job{.kind = kind,
+                      .output = output,
+                      .size = settings.size,
+                      .supersample = settings.supersample,
+                      .uvSource = parseUvSource(settings.uvFrom)};
     const Stone::Data& d = stone.data();
     const BakeJobResult r = runBakeJob(d.scene, d.mesh, job, settings.progress);
     BakeSummary s;

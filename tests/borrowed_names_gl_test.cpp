@@ -73,5 +73,45 @@ TEST(BorrowedNames, WithoutReattachingTheFramebufferKeepsTheDeletedTexture) {  /
   EXPECT_EQ(p[1], 0);
 }
 
+// The caller's loop (the viewer's, the benchmark's): draw only when the target does not hold
+// the current frame; `shown` is the frame the target holds.
+void present(Renderer& renderer, const Scene& scene, const OffscreenTarget& target, Renderer::FrameToken& shown) {
+  if (!renderer.isCurrent(scene, glm::mat4(1.0f), shown, target.width(), target.height()))
+    shown = renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
+}
+
+// Renderer::isCurrent once compared the target framebuffer's name: a new target that got a
+// deleted one's name counted as holding its frame, and stayed empty.
+TEST(BorrowedNames, ANewTargetWithAReusedNameIsDrawnInto) {
+  setenv("force_gl_names_reuse", "true", 0);
+  glContext();
+  Scene scene;
+  scene.render.width = scene.render.height = 32;
+  scene.render.mode = RenderMode::Marble;
+  Renderer renderer;
+  renderer.setMesh(builtinMesh("sphere"));
+  Renderer::FrameToken shown;
+  ImageRGBA8 first;
+  GLuint oldName = 0;
+  {
+    OffscreenTarget target(32, 32);
+    present(renderer, scene, target, shown);
+    first = target.read();
+    oldName = target.fbo();
+  }  // deleted, as the viewer remakes its view image
+  OffscreenTarget target(32, 32);
+  shown = {};  // a new target holds no frame
+  if (target.fbo() != oldName) std::cout << "[          ] the driver did not reuse the name this time\n";
+  const float magenta[4] = {1.0f, 0.0f, 1.0f, 1.0f};  // what the target shows if nothing is drawn
+  glClearNamedFramebufferfv(target.fbo(), GL_COLOR, 0, magenta);
+  const ImageRGBA8 undrawn = target.read();
+  present(renderer, scene, target, shown);
+  const ImageRGBA8 second = target.read();
+  EXPECT_FALSE(second.pixels == undrawn.pixels) << "the new target was not drawn into";
+  EXPECT_TRUE(second.pixels == first.pixels) << "the new target's frame differs from the first";
+  EXPECT_FALSE(undrawn.pixels == first.pixels);  // the control: the marker is not the picture
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace marble

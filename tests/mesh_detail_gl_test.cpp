@@ -178,12 +178,12 @@ TEST(LightProxy, MadeInTheBackgroundGivesTheSameStillFrame) {
   background.setLightProxyInBackground(true);
   background.setMesh(denseSculpture());
   const bool pendingAtFirstFrame = background.lightProxyPending();
-  background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
+  const Renderer::FrameToken shown = background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
   const ImageRGBA8 first = target.read();
   const bool firstUsedFullMesh = background.lightTriangleCount() == background.triangleCount();
   if (background.lightProxyPending()) {
     background.waitForLightProxy();
-    EXPECT_FALSE(background.isCurrent(s, glm::mat4(1.0f), target.fbo(), kSize, kSize));
+    EXPECT_FALSE(background.isCurrent(s, glm::mat4(1.0f), shown, kSize, kSize));
   }
   EXPECT_FALSE(background.lightProxyPending());
   EXPECT_LT(background.lightTriangleCount(), background.triangleCount());
@@ -226,10 +226,10 @@ TEST(InteractionDetail, StillFrameEqualsAFreshRender) {
     orbiting.camera.position = glm::vec3(std::cos(a) * p.x + std::sin(a) * p.z, p.y, -std::sin(a) * p.x + std::cos(a) * p.z);
     moving.render(orbiting, glm::mat4(1.0f), target.fbo(), kSize, kSize);
   }
-  moving.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);  // arrived, still drawn from the copy
+  const Renderer::FrameToken arrived = moving.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);  // still the copy
   const ImageRGBA8 lastMoving = target.read();
   moving.setMeshDetail(Renderer::MeshDetail::Full);  // the first still frame
-  EXPECT_FALSE(moving.isCurrent(s, glm::mat4(1.0f), target.fbo(), kSize, kSize));
+  EXPECT_FALSE(moving.isCurrent(s, glm::mat4(1.0f), arrived, kSize, kSize));
   moving.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
   const ImageRGBA8 still = target.read();
   Renderer fresh;

@@ -54,31 +54,41 @@ TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
   EXPECT_EQ(meanAbsDiff(after, freshRender("sphere", s)), 0.0);
 }
 
-// isCurrent: whether the target still holds what render() would draw (the viewer and the
-// benchmark skip such frames). Any change of the scene, model, target or size, or of what the
-// renderer holds (mesh, environment), makes it false; so does invalidateOutput().
+// isCurrent: whether a target holding a frame still holds what render() would draw (the viewer
+// and the benchmark skip such frames). Any change of the scene, model or size, of what the
+// renderer holds (mesh, environment), or a later frame drawn elsewhere makes it false; a target
+// with no token (new, or drawn into by other means) is never current.
 TEST_F(PassFixture, IsCurrentTellsWhenAFrameWouldDrawTheSame) {
   renderer.setMesh(builtinMesh("sphere"));
   const Scene s = marbleScene("sphere", 64);
   const glm::mat4 one(1.0f);
   OffscreenTarget target(64, 64), other(64, 64);
-  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "nothing drawn yet";
-  renderer.render(s, one, target.fbo(), 64, 64);
-  EXPECT_TRUE(renderer.isCurrent(s, one, target.fbo(), 64, 64));
-  EXPECT_FALSE(renderer.isCurrent(s, one, other.fbo(), 64, 64)) << "another target";
-  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 63)) << "another size";
-  EXPECT_FALSE(renderer.isCurrent(s, glm::scale(one, glm::vec3(1.01f)), target.fbo(), 64, 64)) << "the model moved";
+  const Renderer::FrameToken none;
+  EXPECT_FALSE(renderer.isCurrent(s, one, none, 64, 64)) << "nothing drawn yet";
+  const Renderer::FrameToken first = renderer.render(s, one, target.fbo(), 64, 64);
+  Renderer::FrameToken shown = first;
+  EXPECT_TRUE(renderer.isCurrent(s, one, shown, 64, 64));
+  EXPECT_FALSE(renderer.isCurrent(s, one, none, 64, 64)) << "a target with no frame";
+  EXPECT_FALSE(renderer.isCurrent(s, one, shown, 64, 63)) << "another size";
+  EXPECT_FALSE(renderer.isCurrent(s, glm::scale(one, glm::vec3(1.01f)), shown, 64, 64)) << "the model moved";
   Scene brighter = s;
   brighter.render.exposure = 1.0f;
-  EXPECT_FALSE(renderer.isCurrent(brighter, one, target.fbo(), 64, 64)) << "any field of the scene";
-  renderer.invalidateOutput();
-  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64));
-  renderer.render(s, one, target.fbo(), 64, 64);
+  EXPECT_FALSE(renderer.isCurrent(brighter, one, shown, 64, 64)) << "any field of the scene";
+  const Renderer::FrameToken elsewhere = renderer.render(s, one, other.fbo(), 64, 64);
+  EXPECT_FALSE(renderer.isCurrent(s, one, shown, 64, 64)) << "a later frame went to another target";
+  EXPECT_TRUE(renderer.isCurrent(s, one, elsewhere, 64, 64));
+  // Tokens are never handed out twice, across renderers too: another renderer's first frame
+  // (a counter per renderer would give it the same serial as `first`) is not `first`.
+  Renderer second;
+  second.setMesh(builtinMesh("sphere"));
+  EXPECT_TRUE(second.isCurrent(s, one, second.render(s, one, other.fbo(), 64, 64), 64, 64));
+  EXPECT_FALSE(second.isCurrent(s, one, first, 64, 64)) << "another renderer's frame";
+  shown = renderer.render(s, one, target.fbo(), 64, 64);
   renderer.setMesh(builtinMesh("torus"));
-  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "a new mesh";
-  renderer.render(s, one, target.fbo(), 64, 64);
+  EXPECT_FALSE(renderer.isCurrent(s, one, shown, 64, 64)) << "a new mesh";
+  shown = renderer.render(s, one, target.fbo(), 64, 64);
   renderer.clearEnvironmentMap();
-  EXPECT_FALSE(renderer.isCurrent(s, one, target.fbo(), 64, 64)) << "the environment";
+  EXPECT_FALSE(renderer.isCurrent(s, one, shown, 64, 64)) << "the environment";
 }
 
 TEST_F(PassFixture, ScatteringChangeReRunsLightingAndBlurButNotGeometry) {

@@ -139,6 +139,7 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
+    Renderer::FrameToken shown;  // the frame `target` holds
     r.passes = emptySeries(base);
 
     const glm::mat4 model(1.0f);
@@ -146,8 +147,8 @@ int runBenchCommand(const BenchOptions& o) {
       const Scene scene = sceneAtFrame(base, motion, i);  // outside the timed part: harness, not renderer
       const double wall0 = wallMs(), thread0 = threadCpuMs(), process0 = processCpuMs();
       // As the viewer does: a frame with nothing changed is not drawn (Renderer::isCurrent).
-      const bool drawn = !renderer.isCurrent(scene, model, target.fbo(), r.width, r.height);
-      if (drawn) renderer.render(scene, model, target.fbo(), r.width, r.height);
+      const bool drawn = !renderer.isCurrent(scene, model, shown, r.width, r.height);
+      if (drawn) shown = renderer.render(scene, model, target.fbo(), r.width, r.height);
       const double thread1 = threadCpuMs();
       // llvmpipe (like any GPU) works after the calls return; glFinish makes the frame's
       // whole cost land inside the measurement.

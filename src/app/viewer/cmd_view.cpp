@@ -166,6 +166,7 @@ int runViewCommand(const ViewOptions& o) {
     installCallbacks(w);
 
     std::optional<OffscreenTarget> view;  // the 3D view's image, blitted right of the panel
+    Renderer::FrameToken viewFrame;       // the frame `view` holds (none in a new one)
     BackgroundExport exportJob;  // the Export section's bake: CPU only, on its own thread; cancelled and joined on exit
     MouseControl mouse;
     KeyEdges keys;
@@ -210,7 +211,10 @@ int runViewCommand(const ViewOptions& o) {
       const ViewRect r = viewRect(w, s.panelWidth);  // this frame's panel width
       bool viewDrawn = false;
       if (r.width > 0) {
-        if (!view || view->width() != r.width || view->height() != r.height) view.emplace(r.width, r.height);
+        if (!view || view->width() != r.width || view->height() != r.height) {
+          view.emplace(r.width, r.height);
+          viewFrame = {};
+        }
         // The view image keeps its content: an unchanged frame (nothing moved or edited) is not
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
@@ -219,8 +223,8 @@ int runViewCommand(const ViewOptions& o) {
         // A scripted screenshot (--frames N --screenshot) shows the finished picture, light proxy
         // included, whatever the machine's speed.
         if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForLightProxy();
-        viewDrawn = !renderer.isCurrent(scene, model, view->fbo(), r.width, r.height);
-        if (viewDrawn) renderer.render(scene, model, view->fbo(), r.width, r.height);
+        viewDrawn = !renderer.isCurrent(scene, model, viewFrame, r.width, r.height);
+        if (viewDrawn) viewFrame = renderer.render(scene, model, view->fbo(), r.width, r.height);
       }
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, fw, fh);

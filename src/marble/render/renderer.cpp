@@ -1,6 +1,7 @@
 #include "marble/render/renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 #include "marble/mesh/mesh_optimize.h"
@@ -177,18 +178,23 @@ void Renderer::reloadShaders() {
   invalidate();  // new passes: nothing they stored survives
 }
 
-void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) {
+Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
+                                      int height) {
   adoptLightProxy(false);
-  if (!mesh_ || width <= 0 || height <= 0) return;
+  if (!mesh_ || width <= 0 || height <= 0) return {};
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.ran = {};
   times_.diffuseSource = -1;
-  lastOutput_ = OutputKey{scene, model, targetFbo, width, height, cache_.stateRevision()};
+  // One counter for every renderer in the process: a token is never handed out twice, so one
+  // renderer's token never matches another's frame either. 64 bits do not wrap.
+  static std::atomic<uint64_t> lastSerial{0};
+  const FrameToken frame(++lastSerial);
+  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision()};
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
     times_.ran[Pass::Floor] = true;
-    return;
+    return frame;
   }
   const bool marble = scene.render.mode == RenderMode::Marble;
   // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
@@ -295,6 +301,7 @@ void Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetF
                       glm::clamp(scene.render.background, 0.0f, 1.0f));
     times_.ran[Pass::Fxaa] = true;
   }
+  return frame;
 }
 
 const std::vector<ScreenRect>& Renderer::aaSpans(const glm::mat4& mvp, int width, int height, bool wholeFrame) {

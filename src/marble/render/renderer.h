@@ -83,8 +83,24 @@ public:
   void setEnvironmentMap(const PrefilteredEnvironment& environment);
   void clearEnvironmentMap();
 
-  // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size.
-  void render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
+  // Which frame a caller's target holds: what render() returned when it drew into it. Serials
+  // come from one process-wide counter and are never reused, unlike GL names (gl/borrowed.h): a
+  // new target that gets a deleted one's name still holds no token, so it is never current.
+  class FrameToken {
+  public:
+    FrameToken() = default;  // holds no frame: never current
+    bool operator==(const FrameToken&) const = default;
+
+  private:
+    friend class Renderer;
+    explicit FrameToken(uint64_t serial) : serial_(serial) {}
+    uint64_t serial_ = 0;
+  };
+
+  // Renders `scene` (its mesh must have been set) into `targetFbo` of the given size, and
+  // returns the token of the frame now in it (an empty token when nothing was drawn: no mesh,
+  // an empty size).
+  FrameToken render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
   // The last frame's linear HDR image (before tone mapping), top row first, with coverage as
   // alpha (1 on the object, 0 on the background). Not for `floor`. Re-runs the last frame's
@@ -96,17 +112,17 @@ public:
   // Bytes of GL textures and buffers the renderer allocated.
   size_t glBytes() const;
 
-  // Whether `targetFbo` still holds what render() would draw now: the last call drew this
-  // scene, model and size into it and nothing the frame depends on changed since (mesh,
-  // environment map, shaders, settings). A caller whose target keeps its content between
-  // frames (the viewer's view image, the benchmark's target) skips render() then: an unchanged
-  // frame runs no pass at all. (The renderer cannot know that by itself: a new target may get
-  // the name of a deleted one.) Call invalidateOutput() after drawing into the target by other means.
-  bool isCurrent(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height) const {
-    return lastOutput_ && *lastOutput_ == OutputKey{scene, model, targetFbo, width, height, cache_.stateRevision()} &&
+  // Whether a target that holds frame `shown` (render()'s token; the caller keeps it with its
+  // target) still holds what render() would draw now: `shown` is the last frame drawn, of this
+  // scene, model and size, and nothing the frame depends on changed since (mesh, environment
+  // map, shaders, settings). A caller whose target keeps its content between frames (the
+  // viewer's view image, the benchmark's target) skips render() then: an unchanged frame runs
+  // no pass at all. The caller drops its token (an empty one) when it makes a new target or
+  // draws into it by other means. The target's GL name is not compared: GL reuses names.
+  bool isCurrent(const Scene& scene, const glm::mat4& model, FrameToken shown, int width, int height) const {
+    return lastOutput_ && *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision()} &&
            !(lightProxyJob_ && lightProxyJob_->ready());
   }
-  void invalidateOutput() { lastOutput_.reset(); }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
   // antialiasing: for tests and tools.
   GLuint displayImageTexture() const { return displayImage_ ? displayImage_->texture() : 0; }
@@ -157,16 +173,16 @@ private:
   // What the post pass's stored diffuse part (`marble`) was made from: the generations of
   // kStoredDiffuseReads' passes when it was written.
   std::optional<PerPass<uint64_t>> storedDiffuse_;
-  // What the last frame drew, and where: a call with the same draws nothing.
+  // What the last frame drew: a caller holding its token, with the same inputs, draws nothing.
   struct OutputKey {
     Scene scene;
     glm::mat4 model{1.0f};
-    GLuint target = 0;
+    FrameToken frame;  // never empty here
     int width = 0, height = 0;
     uint64_t stateRevision = 0;  // PassCache::stateRevision
     bool operator==(const OutputKey&) const = default;
   };
-  std::optional<OutputKey> lastOutput_;  // empty: the target holds nothing known
+  std::optional<OutputKey> lastOutput_;  // empty: no frame is current
   // The last frame that ran the passes (not `floor`), for readHdr.
   std::optional<FrameInputs> lastFrame_;
   ScreenRect lastRect_{};

@@ -13,6 +13,7 @@
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
 #include "marble/scene/embedded_presets.h"
+#include "marble/scene/json_object_reader.h"
 #include "marble/scene/material_params.h"
 #include "marble/scene/material_scattering.h"
 
@@ -24,13 +25,8 @@ using json = nlohmann::json;
 constexpr int kMaxPresetDepth = 8;
 constexpr std::uintmax_t kMaxJsonBytes = 64u << 20;
 
-std::string describe(const json& v) { return std::string(v.type_name()) + " " + jsonExcerpt(v); }
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string describe(const json& v) { return JsonObjectReader::describe(v); }
+std::string fmt(double v) { return JsonObjectReader::bound(v); }
 
 // The shortest decimal that reads back as exactly `f` (through double, as nlohmann stores it).
 json floatJson(float f) {
@@ -43,75 +39,6 @@ json floatJson(float f) {
   return static_cast<double>(f);
 }
 
-// Applies one key; returns false for an unknown key. Throws InputError(file, place, ...).
-class KeySetter {
-public:
-  KeySetter(const json& v, const std::string& file, const std::string& place) : v_(v), file_(file), place_(place) {}
-
-  [[noreturn]] void fail(const std::string& problem) const { throw InputError(file_, place_, problem); }
-
-  float number(double lo, double hi) const {
-    if (!v_.is_number()) fail("expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + describe(v_));
-    const double d = v_.get<double>();
-    if (!std::isfinite(d) || d < lo || d > hi)
-      fail("expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(v_));
-    return static_cast<float>(d);
-  }
-
-  long long integer(long long lo, long long hi) const {
-    const std::string want = "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got ";
-    if (!v_.is_number()) fail(want + describe(v_));
-    if (v_.is_number_float()) {
-      const double d = v_.get<double>();
-      if (!std::isfinite(d) || d != std::floor(d) || d < static_cast<double>(lo) || d > static_cast<double>(hi))
-        fail(want + jsonExcerpt(v_));
-      return static_cast<long long>(d);
-    }
-    if (v_.is_number_unsigned()) {
-      const auto u = v_.get<unsigned long long>();
-      if (u > static_cast<unsigned long long>(hi) || static_cast<long long>(u) < lo) fail(want + jsonExcerpt(v_));
-      return static_cast<long long>(u);
-    }
-    const long long i = v_.get<long long>();
-    if (i < lo || i > hi) fail(want + jsonExcerpt(v_));
-    return i;
-  }
-
-  glm::vec3 color(double lo, double hi) const {
-    const std::string want = "expected an array of 3 numbers in [" + fmt(lo) + ", " + fmt(hi) + "], got ";
-    if (!v_.is_array() || v_.size() != 3) fail(want + describe(v_));
-    glm::vec3 r;
-    for (int i = 0; i < 3; ++i) {
-      const json& c = v_[static_cast<size_t>(i)];
-      if (!c.is_number()) fail(want + describe(v_));
-      const double d = c.get<double>();
-      if (!std::isfinite(d) || d < lo || d > hi) fail(want + jsonExcerpt(v_));
-      r[i] = static_cast<float>(d);
-    }
-    return r;
-  }
-
-  std::string string() const {
-    if (!v_.is_string()) fail("expected a string, got " + describe(v_));
-    return v_.get<std::string>();
-  }
-
-  int choice(std::span<const EnumChoice> table) const {
-    std::string names;
-    for (const auto& e : table) names += std::string(names.empty() ? "" : ", ") + "\"" + e.name + "\"";
-    if (!v_.is_string()) fail("expected one of " + names + ", got " + describe(v_));
-    const std::string s = v_.get<std::string>();
-    for (const auto& e : table)
-      if (s == e.name) return e.value;
-    fail("expected one of " + names + ", got " + jsonExcerpt(v_));
-  }
-
-private:
-  const json& v_;
-  const std::string& file_;
-  const std::string& place_;
-};
-
 const std::vector<std::string>& keyList() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;
@@ -121,16 +48,37 @@ const std::vector<std::string>& keyList() {
   return keys;
 }
 
-// The value of `v` for parameter `p`, checked against its type and range.
-ParamValue readValue(const ParamDesc& p, const KeySetter& s) {
+// The value of parameter `p`, read from the reader's object (where it is present), checked
+// against its type and range.
+ParamValue readValue(const ParamDesc& p, JsonObjectReader& r) {
   switch (p.type) {
-    case ParamType::Text: return s.string();
+    case ParamType::Text: {
+      std::string text;
+      r.string(p.key, text);
+      return text;
+    }
     case ParamType::UInt:
-    case ParamType::Int: return s.integer(static_cast<long long>(p.lo), static_cast<long long>(p.hi));
-    case ParamType::Float: return s.number(p.lo, p.hi);
+    case ParamType::Int: {
+      long long i = 0;
+      r.integer(p.key, i, static_cast<long long>(p.lo), static_cast<long long>(p.hi));
+      return i;
+    }
+    case ParamType::Float: {
+      float f = 0.0f;
+      r.number(p.key, f, p.lo, p.hi);
+      return f;
+    }
     case ParamType::Vec3:
-    case ParamType::Colour: return s.color(p.lo, p.hi);
-    case ParamType::Choice: return static_cast<long long>(s.choice(p.choices));
+    case ParamType::Colour: {
+      glm::vec3 c(0.0f);
+      r.vec3(p.key, c, p.lo, p.hi);
+      return c;
+    }
+    case ParamType::Choice: {
+      int c = 0;
+      r.choice(p.key, p.choices, c);
+      return static_cast<long long>(c);
+    }
   }
   return {};
 }
@@ -151,11 +99,18 @@ json toJson(const ParamDesc& p, const ParamValue& v) {
   return nullptr;
 }
 
-bool applyKey(Material& m, const std::string& key, const json& v, const std::string& file, const std::string& place) {
-  const ParamDesc* p = findParam(key);
-  if (!p) return false;
-  p->set(m, readValue(*p, KeySetter(v, file, place)));
-  return true;
+// Sets `key` of the reader's object (present there) in `m`; an unknown key is left alone, for
+// the reader's warnUnknown.
+void applyKey(Material& m, const std::string& key, JsonObjectReader& r) {
+  if (const ParamDesc* p = findParam(key)) p->set(m, readValue(*p, r));
+}
+
+// Every key of the reader's object `j` in the file's order (so the first bad key in it is the
+// one reported), then a warning for each unknown one.
+void applyKeys(Material& m, const json& j, JsonObjectReader& r, std::vector<std::string>& warnings) {
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "preset") applyKey(m, it.key(), r);
+  r.warnUnknown(warnings);
 }
 
 // Which scattering form an object of keys selects (material.h, "the same stone in Blender's
@@ -230,17 +185,14 @@ Material loadPresetImpl(const std::string& nameOrPath, const std::filesystem::pa
   Material m;
   std::filesystem::path dir = std::filesystem::path(file).parent_path();
   if (file.rfind("builtin:", 0) == 0) dir.clear();
+  JsonObjectReader r(j, file, "", JsonWording::Material);
   // "preset" inside a preset file: a base to start from.
-  if (auto it = j.find("preset"); it != j.end()) {
-    if (!it->is_string()) throw InputError(file, "preset", "expected a preset name or path, got " + describe(*it));
-    m = loadPresetImpl(it->get<std::string>(), dir, depth + 1, warnings);
+  if (const json* base = r.find("preset")) {
+    if (!base->is_string()) r.fail("preset", "expected a preset name or path, got " + describe(*base));
+    m = loadPresetImpl(base->get<std::string>(), dir, depth + 1, warnings);
   }
   selectScatteringForm(m, j, file, "");
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (it.key() == "preset") continue;
-    if (!applyKey(m, it.key(), it.value(), file, it.key()))
-      warnings.push_back(file + ": " + it.key() + ": unknown key '" + it.key() + "' (ignored)");
-  }
+  applyKeys(m, j, r, warnings);
   validateMaterial(m, file, "");
   resolveScattering(m);
   return m;
@@ -298,24 +250,20 @@ void applyMaterialJson(Material& m, const json& j, const std::string& file, cons
                        std::vector<std::string>& warnings) {
   if (!j.is_object()) throw InputError(file, placePrefix.empty() ? "" : placePrefix.substr(0, placePrefix.size() - 1),
                                        "expected an object, got " + describe(j));
-  if (auto it = j.find("preset"); it != j.end()) {
-    if (!it->is_string())
-      throw InputError(file, placePrefix + "preset", "expected a preset name or path, got " + describe(*it));
+  JsonObjectReader r(j, file, placePrefix, JsonWording::Material);
+  if (const json* base = r.find("preset")) {
+    if (!base->is_string()) r.fail("preset", "expected a preset name or path, got " + describe(*base));
     std::filesystem::path dir;
     std::error_code ec;
     if (std::filesystem::is_regular_file(file, ec)) dir = std::filesystem::path(file).parent_path();
     try {
-      m = loadPresetImpl(it->get<std::string>(), dir, 1, warnings);
+      m = loadPresetImpl(base->get<std::string>(), dir, 1, warnings);
     } catch (const InputError& e) {
-      throw InputError(file, placePrefix + "preset", e.what());
+      r.fail("preset", e.what());
     }
   }
   selectScatteringForm(m, j, file, placePrefix);
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (it.key() == "preset") continue;
-    if (!applyKey(m, it.key(), it.value(), file, placePrefix + it.key()))
-      warnings.push_back(file + ": " + placePrefix + it.key() + ": unknown key '" + it.key() + "' (ignored)");
-  }
+  applyKeys(m, j, r, warnings);
   validateMaterial(m, file, placePrefix);
   resolveScattering(m);
 }
@@ -370,7 +318,10 @@ void setMaterialKey(Material& m, const std::string& key, const std::string& valu
   }
   Material copy = m;
   selectScatteringForm(copy, false, key == "subsurface_radius_mm", key == "sigma_a_mm" || key == "sigma_s_mm", "--set", "");
-  applyKey(copy, key, v, "--set", key);
+  json one = json::object();
+  one[key] = v;
+  JsonObjectReader r(one, "--set", "", JsonWording::Material);
+  applyKey(copy, key, r);  // a known key (checked above)
   validateMaterial(copy, "--set", "");
   resolveScattering(copy);
   m = copy;

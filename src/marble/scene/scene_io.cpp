@@ -4,11 +4,9 @@
 // files relative to the scene's folder; loadSceneText(sceneToJsonText(s)) == s.
 #include "marble/scene/scene_io.h"
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +15,7 @@
 #include "marble/core/input_file.h"
 #include "marble/core/json_limits.h"
 #include "marble/scene/enum_choice.h"
+#include "marble/scene/json_object_reader.h"
 #include "marble/scene/material_io.h"
 
 namespace marble {
@@ -39,98 +38,6 @@ ojson number(float f) {
 }
 
 ojson vec3(const glm::vec3& v) { return ojson::array({number(v.x), number(v.y), number(v.z)}); }
-
-// Reads fields of one JSON object, checking types and ranges and remembering which keys
-// were used, so the leftovers can be reported as unknown.
-class ObjectReader {
-public:
-  ObjectReader(const json& obj, std::string file, std::string prefix)
-      : obj_(obj), file_(std::move(file)), prefix_(std::move(prefix)) {}
-
-  const json* find(const std::string& key) {
-    used_.push_back(key);
-    auto it = obj_.find(key);
-    return it == obj_.end() ? nullptr : &*it;
-  }
-
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-    throw InputError(file_, prefix_ + key, problem);
-  }
-
-  static std::string describe(const json& v) { return std::string(v.type_name()) + " " + jsonExcerpt(v); }
-
-  void number(const std::string& key, float& out, float lo, float hi) {
-    const json* v = find(key);
-    if (!v) return;
-    if (!v->is_number()) fail(key, "expected a number, got " + describe(*v));
-    const double d = v->get<double>();
-    if (!std::isfinite(d) || d < lo || d > hi)
-      fail(key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(*v));
-    out = static_cast<float>(d);
-  }
-
-  void integer(const std::string& key, int& out, int lo, int hi) {
-    const json* v = find(key);
-    if (!v) return;
-    if (!v->is_number_integer()) fail(key, "expected a whole number, got " + describe(*v));
-    const long long i = v->get<long long>();
-    if (i < lo || i > hi) fail(key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + jsonExcerpt(*v));
-    out = static_cast<int>(i);
-  }
-
-  void vec3(const std::string& key, glm::vec3& out, float lo, float hi) {
-    const json* v = find(key);
-    if (!v) return;
-    if (!v->is_array() || v->size() != 3) fail(key, "expected an array of 3 numbers, got " + describe(*v));
-    glm::vec3 r;
-    for (int i = 0; i < 3; ++i) {
-      const json& c = (*v)[static_cast<size_t>(i)];
-      if (!c.is_number()) fail(key, "expected an array of 3 numbers, got " + describe(*v));
-      const double d = c.get<double>();
-      if (!std::isfinite(d) || d < lo || d > hi)
-        fail(key, "component " + std::to_string(i) + " must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + jsonExcerpt(c));
-      r[i] = static_cast<float>(d);
-    }
-    out = r;
-  }
-
-  void boolean(const std::string& key, bool& out) {
-    const json* v = find(key);
-    if (!v) return;
-    if (!v->is_boolean()) fail(key, "expected true or false, got " + describe(*v));
-    out = v->get<bool>();
-  }
-
-  bool string(const std::string& key, std::string& out) {
-    const json* v = find(key);
-    if (!v) return false;
-    if (!v->is_string()) fail(key, "expected a string, got " + describe(*v));
-    out = v->get<std::string>();
-    return true;
-  }
-
-  const json* object(const std::string& key) {
-    const json* v = find(key);
-    if (v && !v->is_object()) fail(key, "expected an object, got " + describe(*v));
-    return v;
-  }
-
-  void warnUnknown(std::vector<std::string>& warnings) const {
-    for (auto it = obj_.begin(); it != obj_.end(); ++it)
-      if (std::find(used_.begin(), used_.end(), it.key()) == used_.end())
-        warnings.push_back(file_ + ": " + prefix_ + it.key() + ": unknown key (ignored)");
-  }
-
-private:
-  static std::string fmt(float v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-  const json& obj_;
-  std::string file_, prefix_;
-  std::vector<std::string> used_;
-};
 
 // ---- files named in a scene: relative to the scene's folder
 
@@ -157,7 +64,7 @@ std::string meshField(const std::string& mesh, const std::filesystem::path& scen
 // ---- camera
 
 void readCamera(const json& j, const std::string& file, Camera& cam, std::vector<std::string>& warnings) {
-  ObjectReader r(j, file, "camera.");
+  JsonObjectReader r(j, file, "camera.", JsonWording::Scene);
   r.vec3("position", cam.position, -1e4f, 1e4f);
   r.vec3("target", cam.target, -1e4f, 1e4f);
   r.vec3("up", cam.up, -1e4f, 1e4f);
@@ -179,7 +86,7 @@ ojson writeCamera(const Camera& cam) {
 // ---- light
 
 void readLight(const json& j, const std::string& file, Light& light, std::vector<std::string>& warnings) {
-  ObjectReader r(j, file, "light.");
+  JsonObjectReader r(j, file, "light.", JsonWording::Scene);
   std::string type;
   if (r.string("type", type)) {
     const EnumChoice* e = findChoice(lightTypeChoices(), type);
@@ -204,7 +111,7 @@ ojson writeLight(const Light& light) {
 
 void readRender(const json& j, const std::filesystem::path& scenePath, RenderSettings& rs,
                 std::vector<std::string>& warnings) {
-  ObjectReader r(j, scenePath.string(), "render.");
+  JsonObjectReader r(j, scenePath.string(), "render.", JsonWording::Scene);
   r.integer("width", rs.width, 1, kMaxRenderSize);
   r.integer("height", rs.height, 1, kMaxRenderSize);
   r.vec3("background", rs.background, 0.0f, 1.0f);
@@ -304,7 +211,7 @@ Scene loadSceneText(const std::string& text, const std::filesystem::path& path, 
   if (!root.is_object()) throw InputError(file, "", "expected a JSON object at the top level");
 
   Scene scene;
-  ObjectReader r(root, file, "");
+  JsonObjectReader r(root, file, "", JsonWording::Scene);
   std::string mesh;
   if (r.string("mesh", mesh)) {
     if (mesh.empty()) r.fail("mesh", "must not be empty");
@@ -319,10 +226,7 @@ Scene loadSceneText(const std::string& text, const std::filesystem::path& path, 
     }
   }
   r.number("crease_angle_deg", scene.crease_angle_deg, 0.0f, 180.0f);
-  if (const json* v = r.find("allow_outside")) {
-    if (!v->is_boolean()) r.fail("allow_outside", "expected true or false, got " + ObjectReader::describe(*v));
-    scene.allow_outside = v->get<bool>();
-  }
+  r.boolean("allow_outside", scene.allow_outside);
   r.number("mm_per_unit", scene.mm_per_unit, 1e-3f, 1e6f);
   if (const json* c = r.object("camera")) readCamera(*c, file, scene.camera, warnings);
   if (const json* l = r.object("light")) readLight(*l, file, scene.light, warnings);

@@ -3,6 +3,22 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace marble {
+namespace {
+
+// A mipmapped render target (all levels down to 1x1), filtered trilinearly, clamped.
+gl::Texture makeMipmapped(GLenum internalFormat, int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), levels, internalFormat, size, size);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
 
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
@@ -13,11 +29,18 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // RG: the distance, and the cosine at which the light enters there (light_depth.frag.glsl).
       distance_(gl::makeTexture2D(GL_RG32F, size, size, GL_NEAREST)),
       depth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_LINEAR)),
+      // 32-bit: w is a texel's area, ~1e-6 scene units^2, below half float's normal range.
+      bouncePosition_(makeMipmapped(GL_RGBA32F, size)),
+      bounceNormal_(makeMipmapped(GL_RGBA16F, size)),
       fbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, distance_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, bouncePosition_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT2, bounceNormal_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 }
 
@@ -29,6 +52,10 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, farValue);
+  // The reflective shadow map: nothing there, nothing re-emitted (w = 0).
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, zero);
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
@@ -39,6 +66,8 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   program_.set("u_light_directional", light.directional ? 1 : 0);
   glUseProgram(program_.id());
   mesh.draw();
+  glGenerateTextureMipmap(bouncePosition_.id());
+  glGenerateTextureMipmap(bounceNormal_.id());
   timer_.end();
 }
 

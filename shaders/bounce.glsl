@@ -35,8 +35,8 @@ const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
 const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 
-// Irradiance at P (normal N), per unit of the light's irradiance at normal incidence and of
-// albedo, from the emitters in the uv area dA around uv, read at the mipmap level of that area.
+// Irradiance at P (normal N) from the emitters in the uv area dA around uv, before their albedo,
+// read at the mipmap level of that area (bilinear within the level: continuous in uv).
 vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);  // off the map: no light
   float texels = dA * size * size;

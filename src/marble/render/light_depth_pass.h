@@ -16,7 +16,7 @@ public:
   GLuint distanceTexture() const { return distance_.id(); }
   GLuint depthTexture() const { return depth_.id(); }  // compare mode on, for sampler2DShadow
   // The reflective shadow map: world position x w, w (RGBA32F) and the unit normal (RGBA16F),
-  // mipmapped (trilinear): a level's texel is the w-weighted mean of the texels under it.
+  // mipmapped: a level's texel is the w-weighted mean of the texels under it.
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
   int size() const { return size_; }

@@ -6,15 +6,36 @@
 // enters the stone there (translucent shadow maps, Dachsbacher & Stamminger 2003, store the
 // entering irradiance with the depth; the lighting pass applies the Fresnel factor and the light's
 // falloff). |cos|: both faces are drawn, and files wound inward must still let light in.
+//
+// And a reflective shadow map (Dachsbacher & Stamminger 2005) for the `marble` mode's one
+// diffuse bounce (bounce.glsl): every texel's first surface is lit, so it re-emits, as a
+// Lambertian surface, flux = albedo x E(d) x w with w = (its area) x cos x principled_entry(cos):
+// the light that entered there and leaves again near where it entered (the blur's millimetres are
+// small against the bounce's distances). E(d), the light's falloff, and the albedo are applied
+// where the map is read, so the map depends on the mesh and the light's matrices only. Stored
+// weighted by w (position x w, w) so that the mipmaps (LightDepthPass) average the surface and
+// leave out the texels that saw nothing (w = 0); the normal faces the light.
+#include "principled_entry.glsl"
 in vec3 v_world_pos;
 in vec3 v_world_normal;
 uniform vec3 u_light_pos;       // point light: its position
 uniform vec3 u_light_dir;       // directional light: unit vector the light travels along
 uniform int u_light_directional;
 layout(location = 0) out vec2 o_distance_cos;  // distance, entry cosine
+layout(location = 1) out vec4 o_bounce_position;  // world position x w, w (scene units^2)
+layout(location = 2) out vec4 o_bounce_normal;    // unit normal toward the light
 
 void main() {
   vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
   float d = u_light_directional == 1 ? dot(v_world_pos, u_light_dir) : distance(v_world_pos, u_light_pos);
-  o_distance_cos = vec2(d, abs(dot(normalize(v_world_normal), toLight)));
+  vec3 n = normalize(v_world_normal);
+  float c = dot(n, toLight);
+  o_distance_cos = vec2(d, abs(c));
+  n = c < 0.0 ? -n : n;
+  // The surface area this texel covers: exact for a triangle's plane (the derivatives are the
+  // texel's edges on it).
+  float area = length(cross(dFdx(v_world_pos), dFdy(v_world_pos)));
+  float w = area * abs(c) * principled_entry(abs(c));
+  o_bounce_position = vec4(v_world_pos * w, w);
+  o_bounce_normal = vec4(n, 0.0);
 }

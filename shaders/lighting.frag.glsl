@@ -66,6 +66,7 @@ float thickness_at(vec3 p) {
 #include "marble_shading.glsl"
 #include "environment.glsl"
 #include "marble_light.glsl"
+#include "bounce.glsl"
 
 // The thickness the transmission uses: as thickness_at(), but the light's distance map is
 // interpolated bilinearly between the four texels around p instead of read at the nearest one.
@@ -122,7 +123,8 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity);
+  // Light bounced off the object's other lit parts (bounce.glsl).
+  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // through the surface's Fresnel transmittance, and crossed s millimetres of stone to leave

@@ -1,8 +1,27 @@
 #include "marble/render/light_depth_pass.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace marble {
+namespace {
+
+// A mipmapped render target (all levels down to 1x1), clamped; read bilinearly within the nearest
+// level (bounce.glsl picks a level per sample): trilinear cost the dragon's lighting pass ~1.5x.
+gl::Texture makeMipmapped(GLenum internalFormat, int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), levels, internalFormat, size, size);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
 
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
@@ -13,12 +32,27 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // RG: the distance, and the cosine at which the light enters there (light_depth.frag.glsl).
       distance_(gl::makeTexture2D(GL_RG32F, size, size, GL_NEAREST)),
       depth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_LINEAR)),
-      fbo_(gl::Framebuffer::create()) {
+      // The reflective shadow map at a quarter of the size, in a draw of its own: the bounce reads
+      // no level finer than 32 of the full map's texels (bounce.glsl), and its mipmaps then cost a
+      // sixteenth (docs/performance.md). 32-bit: w is a texel's area, ~1e-5 scene units^2, below
+      // half float's normal range.
+      bounceSize_(std::max(size / 4, 1)),
+      bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
+      bounceNormal_(makeMipmapped(GL_RGBA16F, bounceSize_)),
+      bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
+      fbo_(gl::Framebuffer::create()),
+      bounceFbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, distance_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  // The shader's outputs 1 and 2 go to the reflective shadow map's framebuffer only.
+  glNamedFramebufferTexture(bounceFbo_.id(), GL_COLOR_ATTACHMENT1, bouncePosition_.id(), 0);
+  glNamedFramebufferTexture(bounceFbo_.id(), GL_COLOR_ATTACHMENT2, bounceNormal_.id(), 0);
+  const GLenum bounceBuffers[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(bounceFbo_.id(), 3, bounceBuffers);
+  glNamedFramebufferTexture(bounceFbo_.id(), GL_DEPTH_ATTACHMENT, bounceDepth_.id(), 0);
 }
 
 void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
@@ -39,6 +73,16 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   program_.set("u_light_directional", light.directional ? 1 : 0);
   glUseProgram(program_.id());
   mesh.draw();
+  // The reflective shadow map: nothing there, nothing re-emitted (w = 0).
+  glBindFramebuffer(GL_FRAMEBUFFER, bounceFbo_.id());
+  glViewport(0, 0, bounceSize_, bounceSize_);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 2, zero);
+  glClearNamedFramebufferfv(bounceFbo_.id(), GL_DEPTH, 0, &one);
+  mesh.draw();
+  glGenerateTextureMipmap(bouncePosition_.id());
+  glGenerateTextureMipmap(bounceNormal_.id());
   timer_.end();
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Pass 1: the mesh seen from the light into a map of world-space distances (R32F) with its
-// own depth buffer. Read by the lighting pass for thickness (and later shadows).
+// own depth buffer. Read by the lighting pass for thickness and shadows; beside it a reflective
+// shadow map with mipmaps at a quarter of the size, drawn separately (light_depth.frag.glsl), for the
+// `marble` mode's diffuse bounce.
 #include "marble/gl/program.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/pass_timer.h"
@@ -14,15 +16,25 @@ public:
   void run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light);
   GLuint distanceTexture() const { return distance_.id(); }
   GLuint depthTexture() const { return depth_.id(); }  // compare mode on, for sampler2DShadow
+  // The reflective shadow map: world position x w, w (RGBA32F) and the unit normal (RGBA16F),
+  // mipmapped: a level's texel is the w-weighted mean of the texels under it.
+  GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
+  GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
   int size() const { return size_; }
-  size_t bytes() const { return static_cast<size_t>(size_) * size_ * 8; }
+  // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 8 (its
+  // mipmaps a third more) + depth 4 at its own size.
+  size_t bytes() const {
+    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 24 * 4 / 3);
+  }
   PassTimer& timer() { return timer_; }
 
 private:
   int size_;
   gl::Program program_;
   gl::Texture distance_, depth_;
-  gl::Framebuffer fbo_;
+  int bounceSize_;
+  gl::Texture bouncePosition_, bounceNormal_, bounceDepth_;
+  gl::Framebuffer fbo_, bounceFbo_;
   PassTimer timer_;
 };
 

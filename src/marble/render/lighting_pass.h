@@ -14,7 +14,7 @@
 namespace marble {
 
 struct LightingInputs {
-  GLuint albedo, normal, depth, lightDistance, lightDepth;
+  GLuint albedo, normal, depth, lightDistance, lightDepth, bouncePosition, bounceNormal;
 };
 
 class LightingPass {

@@ -241,7 +241,8 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
   if (stale(Pass::Lighting)) {
     const LightingInputs in{passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
                             passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
-                            passes_->lightDepth.depthTexture()};
+                            passes_->lightDepth.depthTexture(), passes_->lightDepth.bouncePositionTexture(),
+                            passes_->lightDepth.bounceNormalTexture()};
     passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(), passes_->blurDepth.depthTexture());
     passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect, environment());
     ran(Pass::Lighting);

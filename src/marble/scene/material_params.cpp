@@ -130,8 +130,8 @@ const ParamDesc kParams[] = {
     // --- colour ---
     {.key = "base_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "base", .tooltip = "Albedo of the stone between veins (linear RGB).",
-     .doc = "the stone between veins; also the `floor` mode's flat colour",
-     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit,
+     .doc = "the stone between veins; also the `floor` mode's flat colour and, in `marble`, the albedo of the light bounced inside the object",
+     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kLightingPassBit,
      .uniform = "u_pat_base_color", .choices = {}, .slider = {}, MARBLE_FIELD(ColourParams::base_color)},
     {.key = "vein_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "vein", .tooltip = "Albedo at the heart of a vein (linear RGB).",

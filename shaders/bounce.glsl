@@ -1,0 +1,81 @@
+// The `marble` mode's one diffuse bounce: light that entered the stone where the light hits it,
+// re-emerged and falls on another part of the same object (a crease, the inside of a coil).
+// Reflective shadow maps (Dachsbacher & Stamminger 2005): the light-depth pass's map holds, per
+// texel of the light's view, the lit surface's position, normal and w = area x cos x entry
+// (light_depth.frag.glsl); each texel is a small Lambertian emitter of flux
+// Phi = albedo x E(d) x w, and the irradiance it gives a point x with normal n is
+//   Phi cos_p cos_x / (pi (r^2 + A / pi)),
+// the point-emitter law (D&S 2005, eq. 1, with Lambert's 1/pi) with r^2 raised by the emitter's
+// area A over pi: the on-axis form of a Lambertian disk of area A (E = pi L a^2 / (r^2 + a^2)),
+// so a crease's near side tends to the emitter's radiosity instead of the point law's
+// singularity. Approximations, each stated:
+// - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
+//   between two parts that cannot see each other; the cosines already drop every emitter behind
+//   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
+//   receives none;
+// - the emitter's albedo is the stone's base colour (u_pat_base_color), not the pattern at the
+//   emitter: the veins vary at the millimetre scale the bounce averages over;
+// - one bounce only (Cycles follows every bounce: ~albedo^2 more on deep creases, ~0.7 of the
+//   first bounce's again for albedo 0.85 where the bounce is large);
+// - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
+//   projection in the light's view: a centre sample for the innermost disk and BOUNCE_RINGS rings,
+//   each twice the radius of the one inside it, of BOUNCE_ANGLES samples at even angles (each ring
+//   turned half a step from the last), each sample read at the mipmap level of the ring sector it
+//   stands for: the disk is covered without gaps, finely near the point (where the emitters that
+//   matter most are; D&S 2005 also sample densest there) and coarsely far away. The same pattern
+//   for every pixel, so the error is a smooth bias, not noise.
+// Needs from the includer: deferred_common.glsl (light_irradiance, light_distance_of,
+// u_light_view_proj) and PI.
+
+layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
+layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
+uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
+
+const int BOUNCE_RINGS = 4;
+const int BOUNCE_ANGLES = 8;
+const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
+
+// Irradiance at P (normal N) from the emitters in the uv area dA around uv, before their albedo,
+// read at the mipmap level of that area (bilinear within the level: continuous in uv).
+vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);  // off the map: no light
+  float texels = dA * size * size;
+  float lod = clamp(0.5 * log2(texels), 0.0, maxLod);
+  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
+  if (pw.w <= 0.0) return vec3(0.0);
+  vec3 xp = pw.xyz / pw.w;
+  vec3 np = textureLod(u_bounce_normal, uv, lod).xyz;
+  float nl = length(np);
+  if (nl < 1e-4) return vec3(0.0);
+  np /= nl;
+  float A = pw.w * texels;  // the w the sample stands for
+  vec3 d = P - xp;
+  float r2 = max(dot(d, d), 1e-12);
+  float cosP = dot(np, d);  // x |d|
+  float cosX = -dot(N, d);  // x |d|
+  if (cosP <= 0.0 || cosX <= 0.0) return vec3(0.0);
+  return light_irradiance(light_distance_of(xp)) * (A * cosP * cosX / (r2 * (PI * r2 + A)));
+}
+
+// Irradiance / PI that one bounce brings to P (normal N), before P's own albedo and entry.
+vec3 marble_bounce(vec3 P, vec3 N) {
+  vec4 clip = u_light_view_proj * vec4(P, 1.0);
+  vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
+  float size = float(textureSize(u_bounce_position, 0).x);
+  float maxLod = log2(size);
+  vec3 sum = vec3(0.0);
+  float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
+  sum += bounce_sample(P, N, centre, PI * inner * inner, size, maxLod);
+  for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
+    float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
+    float r = 0.5 * (r0 + r1);  // the sectors' middle
+    float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
+    for (int k = 0; k < BOUNCE_ANGLES; ++k) {
+      float phi = 2.0 * PI * (float(k) + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
+      sum += bounce_sample(P, N, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
+    }
+  }
+  // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light
+  // (the environment's 41/42, marble_light.glsl) and the pass stores irradiance / PI.
+  return u_pat_base_color * sum * (41.0 / 42.0) / PI;
+}

@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "gl_support.h"
+#include "image_probe.h"
 #include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
@@ -75,21 +76,6 @@ Scene cornerScene(float albedo, float h = kHeight) {
   return s;
 }
 
-// Linear RGB of the 3x3 pixels around where world point p lands, averaged.
-glm::vec3 radianceAt(const ImageRGBF& img, const Scene& s, glm::vec3 p) {
-  const CameraMatrices cam = cameraMatrices(s.camera, 1.0f);
-  const glm::vec4 clip = cam.viewProj * glm::vec4(p, 1.0f);
-  const int cx = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * img.width);
-  const int cy = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * img.height);
-  glm::vec3 sum(0.0f);
-  for (int y = cy - 1; y <= cy + 1; ++y)
-    for (int x = cx - 1; x <= cx + 1; ++x) {
-      const float* q = &img.pixels[(static_cast<size_t>(y) * img.width + x) * 3];
-      sum += glm::vec3(q[0], q[1], q[2]);
-    }
-  return sum / 9.0f;
-}
-
 // ∫ cosθ_p cosθ_x / (π r²) dA over the plate's top face (normal +y) seen from the probe (normal
 // +x) at height h: midpoint rule on a 400 x 800 grid, converged to 0.1 %.
 double viewFactorOfPlate(float h) {
@@ -117,9 +103,9 @@ struct Bounce : ::testing::Test {
     facing.setMesh(corner(true));
     away.setMesh(corner(false));
     renderImage(facing, s);
-    const glm::vec3 with = radianceAt(facing.readHdr(), s, probe(h));
+    const glm::vec3 with = linearRgbAround(facing.readHdr(), s, probe(h));
     renderImage(away, s);
-    const glm::vec3 without = radianceAt(away.readHdr(), s, probe(h));
+    const glm::vec3 without = linearRgbAround(away.readHdr(), s, probe(h));
     std::cout << "[          ] albedo " << albedo << ": plate facing " << with.g << ", away " << without.g << "\n";
     return with - without;
   }
@@ -163,9 +149,9 @@ TEST_F(Bounce, NoneWhereThePlateIsBehindTheFace) {
   alone.setMesh(wallOnly);
   away.setMesh(corner(false));
   renderImage(alone, s);
-  const glm::vec3 a = radianceAt(alone.readHdr(), s, probe(kHeight));
+  const glm::vec3 a = linearRgbAround(alone.readHdr(), s, probe(kHeight));
   renderImage(away, s);
-  const glm::vec3 b = radianceAt(away.readHdr(), s, probe(kHeight));
+  const glm::vec3 b = linearRgbAround(away.readHdr(), s, probe(kHeight));
   const double cornerBounce = 0.8 * 0.8 * (41.0 / 42.0) * viewFactorOfPlate(kHeight);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], a[c], 0.01 * cornerBounce) << "channel " << c;
 }

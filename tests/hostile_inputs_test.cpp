@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "error_text.h"
 #include "marble/core/error.h"
 #include "marble/core/json_limits.h"
 #include "marble/mesh/duplicate_triangles.h"
@@ -17,6 +18,7 @@
 #include "marble/scene/scene.h"
 
 using namespace marble;
+using marble::test::errorOf;
 namespace fs = std::filesystem;
 
 namespace {
@@ -31,16 +33,6 @@ struct HostileInputs : ::testing::Test {
     return p;
   }
 };
-
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 // One triangle: three float positions and the indices 0 1 2 (base64 of 42 bytes).
 const std::string kTriangleBuffer =

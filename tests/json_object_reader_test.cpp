@@ -5,22 +5,15 @@
 
 #include <functional>
 
+#include "error_text.h"
 #include "marble/core/error.h"
 #include "marble/scene/json_object_reader.h"
 
 using namespace marble;
+using marble::test::errorOf;
 using json = nlohmann::json;
 
 namespace {
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 // The message reading `key` of `obj` gives, as `read` reads it, in `wording`.
 std::string message(const json& obj, JsonWording wording, const std::function<void(JsonObjectReader&)>& read) {

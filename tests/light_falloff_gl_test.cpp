@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include "gl_support.h"
+#include "image_probe.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -40,17 +41,8 @@ Scene faceScene() {
 }
 
 // The mean linear green value of the 3x3 pixels around where world point p lands.
-float radianceAt(const ImageRGBF& img, const Scene& s, glm::vec3 p) {
-  const CameraMatrices cam = cameraMatrices(s.camera, 1.0f);
-  const glm::vec4 clip = cam.viewProj * glm::vec4(p, 1.0f);
-  const float px = (clip.x / clip.w * 0.5f + 0.5f) * img.width;
-  const float py = (0.5f - clip.y / clip.w * 0.5f) * img.height;  // row 0 is the top
-  const int cx = static_cast<int>(px), cy = static_cast<int>(py);
-  float sum = 0.0f;
-  for (int y = cy - 1; y <= cy + 1; ++y)
-    for (int x = cx - 1; x <= cx + 1; ++x) sum += img.pixels[(static_cast<size_t>(y) * img.width + x) * 3 + 1];
-  return sum / 9.0f;
-}
+// The green channel around p (image_probe.h).
+float radianceAt(const ImageRGBF& img, const Scene& s, glm::vec3 p) { return linearRgbAround(img, s, p).g; }
 
 // The closed form above, per unit intensity, for a point on the face seen head-on.
 float expectedRadiance(float irradianceOverPi, float cosTheta) {

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "error_text.h"
 #include "marble/core/error.h"
 #include "marble/scene/embedded_presets.h"
 #include "marble/scene/material_io.h"
@@ -18,6 +19,7 @@ namespace marble {
 namespace {
 
 using json = nlohmann::json;
+using marble::test::errorOf;
 
 uint32_t bits(float f) {
   uint32_t u;
@@ -38,15 +40,6 @@ void expectSame(const Material& a, const Material& b) {
     }
   }
   EXPECT_EQ(a, b);
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(MaterialIoTest, TheSixPresetsExistAndLoad) {

@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "gl_support.h"
+#include "image_probe.h"
 #include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
@@ -62,21 +63,6 @@ Scene slabScene() {
   return s;
 }
 
-// Linear RGB of the 3x3 pixels around where world point p lands, averaged.
-glm::vec3 radianceAt(const ImageRGBF& img, const Scene& s, glm::vec3 p) {
-  const CameraMatrices cam = cameraMatrices(s.camera, 1.0f);
-  const glm::vec4 clip = cam.viewProj * glm::vec4(p, 1.0f);
-  const int cx = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * img.width);
-  const int cy = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * img.height);
-  glm::vec3 sum(0.0f);
-  for (int y = cy - 1; y <= cy + 1; ++y)
-    for (int x = cx - 1; x <= cx + 1; ++x) {
-      const float* q = &img.pixels[(static_cast<size_t>(y) * img.width + x) * 3];
-      sum += glm::vec3(q[0], q[1], q[2]);
-    }
-  return sum / 9.0f;
-}
-
 // The stone the transmission crosses at the face's centre: the slab, less the exit point's inward
 // offset of two light-map texels (shaders/lighting.frag.glsl; the renderer's 1024² map spans the
 // bounding sphere's diameter), 0.34 mm here: 3-11 % more light through 10 mm, channel by channel.
@@ -114,7 +100,7 @@ struct TransmissionSlab : ::testing::Test {
 TEST_F(TransmissionSlab, WideSlabGivesTheDipolesClosedForm) {
   const Scene s = slabScene();
   const ImageRGBF img = render(s);
-  const glm::vec3 centre = radianceAt(img, s, {0, 0, kHalfThickness});
+  const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
   const glm::vec3 expected = s.material.base_color * slabTransport(s.material, crossedMm());
   for (int c = 0; c < 3; ++c) {
     EXPECT_GT(expected[c], 1e-4f) << "the slab must let some light through in channel " << c;
@@ -131,7 +117,7 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
   s.light.type = LightType::Point;
   s.light.position = {0, 0, -12};
   const ImageRGBF img = render(s);
-  const glm::vec3 centre = radianceAt(img, s, {0, 0, kHalfThickness});
+  const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
   const float falloff = (12.0f / (12.0f - kHalfThickness)) * (12.0f / (12.0f - kHalfThickness));
   const glm::vec3 expected =
       falloff * s.material.base_color * slabTransport(s.material, crossedMm());

@@ -44,7 +44,7 @@ glm::vec3 slabTransportAt(const SlabTransport& t, float sMm) {
   glm::vec3 out;
   for (int c = 0; c < 3; ++c) {
     const float tau = t.sigmaTMm[c] * std::max(sMm, 0.0f);
-    if (tau >= t.tauMax) {
+    if (!(tau < t.tauMax)) {  // also NaN: no index from it
       out[c] = 0.0f;
       continue;
     }

@@ -46,7 +46,6 @@ const int SLAB_NODES = 40;  // marble::kSlabTransportNodes
 uniform vec3 u_slab_ln_t[SLAB_NODES];
 uniform float u_slab_tau_max;
 uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
-uniform float u_ior;
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 // Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):
@@ -132,22 +131,23 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
-  // through the surface's Fresnel transmittance, and crossed s millimetres of stone to leave
+  // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
   // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
   // surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
   // The light's falloff is taken where it entered, s before the (offset) exit point.
-  // The entry keeps the Fresnel transmittance 1 - F(cos) rather than the direct light's
-  // principled_entry: at grazing entry (cos -> 0) the latter falls only linearly, and the light
-  // map, coarsest there, then leaves a faint seam on the torus's grazing-lit top
-  // (tests/transmission_seams_gl_test.cpp, 1.1x its threshold); against Cycles the two differ by at
-  // most 0.006 in SSIM and 0.002 in relative RMSE on the reference scenes (docs/quality.md).
+  // The entry is principled_entry, Cycles' coupling for light entering the walk, since session 8;
+  // before, the Fresnel transmittance 1 - F(cos), because with the dipole's transport the
+  // Principled one, falling only linearly at grazing entry, left a faint seam on the torus's
+  // grazing-lit top (1.1x the threshold of tests/transmission_seams_gl_test.cpp); with the random
+  // walk's transport the worst there is 0.74 of it, and against Cycles it raises SSIM in all ten
+  // reference scenes (by up to 0.006; docs/quality.md, "Transmission from a random walk").
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
   vec2 s_cos = transmission_thickness(P_in);
   float s = s_cos.x;
   float s_mm = s * u_mm_per_unit;
-  vec3 enters = s_cos.y * (1.0 - fresnel_schlick(f0_from_ior(u_ior), s_cos.y));
+  vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * away * away *
                         u_translucency;

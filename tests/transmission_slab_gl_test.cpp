@@ -7,8 +7,7 @@
 // boundary, dropped after 256 flights), run here by a small Monte Carlo of its own -- not
 // the table the renderer reads (tools/slab_walk_table.py) -- so the table, its cut to the
 // material, the shader's lookup and units are all checked. No direct light reaches that face, no
-// environment, and the light enters at normal incidence through the Fresnel transmittance
-// 1 - F0 = 0.96 (ior 1.5) that the transmission's entry keeps (marble_entering). A wrong normalization,
+// environment, and the Principled entry weight is 1 at normal incidence. A wrong normalization,
 // entry weight, falloff or unit (mm against scene units) would each miss it by far more than 6 %;
 // so does the dipole slab transport this replaced (1.3x in red at 10 mm).
 #include <gtest/gtest.h>
@@ -122,12 +121,6 @@ glm::vec3 slabTransport(const Material& m, float sMm) {
   return t;
 }
 
-// What enters at normal incidence: 1 - F0, F0 = ((n - 1) / (n + 1))^2.
-float entryTransmittance(const Material& m) {
-  const float r = (m.ior - 1.0f) / (m.ior + 1.0f);
-  return 1.0f - r * r;
-}
-
 struct TransmissionSlab : ::testing::Test {
   HeadlessContext& context = glContext();
   Renderer renderer;
@@ -144,7 +137,7 @@ TEST_F(TransmissionSlab, WideSlabGivesTheRandomWalksTransport) {
   const Scene s = slabScene();
   const ImageRGBF img = render(s);
   const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
-  const glm::vec3 expected = entryTransmittance(s.material) * s.material.base_color * slabTransport(s.material, crossedMm());
+  const glm::vec3 expected = s.material.base_color * slabTransport(s.material, crossedMm());
   for (int c = 0; c < 3; ++c) {
     EXPECT_GT(expected[c], 1e-4f) << "the slab must let some light through in channel " << c;
     EXPECT_NEAR(centre[c], expected[c], 0.06f * expected[c]) << "channel " << c;
@@ -163,6 +156,6 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
   const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
   const float falloff = (12.0f / (12.0f - kHalfThickness)) * (12.0f / (12.0f - kHalfThickness));
   const glm::vec3 expected =
-      falloff * entryTransmittance(s.material) * s.material.base_color * slabTransport(s.material, crossedMm());
+      falloff * s.material.base_color * slabTransport(s.material, crossedMm());
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], expected[c], 0.06f * expected[c]) << "channel " << c;
 }

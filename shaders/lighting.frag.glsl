@@ -40,10 +40,12 @@ uniform int u_mode;
 
 // Physically based marble (mode `marble`).
 uniform float u_mm_per_unit;     // millimetres per scene unit
-uniform vec3 u_sigma_tr_mm;      // effective transport coefficient per mm, sqrt(3 sigma_a sigma_t')
-uniform vec3 u_dipole_zr_mm;     // the dipole's real source depth 1 / sigma_t', per mm (Jensen et al. 2001)
-uniform vec3 u_dipole_zv_mm;     // and its virtual source height z_r (1 + 4A/3)
-uniform float u_ior;
+// The random walk's slab transport cut to the material (marble::SlabTransport): ln(T / R_inf) per
+// channel at optical thicknesses tau_i = u_slab_tau_max (i / (SLAB_NODES - 1))^2, tau = sigma_t s.
+const int SLAB_NODES = 40;  // marble::kSlabTransportNodes
+uniform vec3 u_slab_ln_t[SLAB_NODES];
+uniform float u_slab_tau_max;
+uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 // Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):
@@ -99,20 +101,22 @@ vec2 transmission_thickness(vec3 p) {
   return vec2(max(light_distance_of(p) - dot(w, entered) / weight, 0.0), dot(w, cosines) / weight);
 }
 
-// Diffuse transport through s mm of stone, relative to what the same stone reflects: the
-// dipole's exitance profile R_d(r) (Jensen et al. 2001, eq. 4) integrated over an entry plane s
-// away, lit uniformly (the translucent shadow map's filter, Dachsbacher & Stamminger 2003, done in
-// closed form for a locally flat entry). With d_r = sqrt(s^2 + z_r^2), d_v = sqrt(s^2 + z_v^2),
-//   int R_d(sqrt(s^2 + rho^2)) 2 pi rho drho = a'/2 (z_r e^(-sigma_tr d_r)/d_r + z_v e^(-sigma_tr d_v)/d_v),
-// which is Jensen's total diffuse reflectance at s = 0; divided by that value here because the
-// albedo multiplies the diffuse light later (post pass). It falls as e^(-sigma_tr s) / s for s
-// beyond a few mean free paths: exp(-sigma_tr s) alone let 3-10x too much through a 1-5 cm body.
-vec3 dipole_transport(float s_mm) {
-  vec3 dr = sqrt(s_mm * s_mm + u_dipole_zr_mm * u_dipole_zr_mm);
-  vec3 dv = sqrt(s_mm * s_mm + u_dipole_zv_mm * u_dipole_zv_mm);
-  vec3 through = u_dipole_zr_mm * exp(-u_sigma_tr_mm * dr) / dr + u_dipole_zv_mm * exp(-u_sigma_tr_mm * dv) / dv;
-  vec3 reflected = exp(-u_sigma_tr_mm * u_dipole_zr_mm) + exp(-u_sigma_tr_mm * u_dipole_zv_mm);
-  return through / max(reflected, vec3(1e-20));
+// Light carried through s mm of stone, relative to what the same stone reflects: Cycles' random
+// walk through a slab (isotropic scattering, no reflection inside the boundary, dropped after 256
+// flights), tabulated by tools/slab_walk_table.py (marble::slabTransportFor) and read here
+// linearly in ln T between nodes, 0 beyond the table (tau > 64: under 1e-5 of the reflected light;
+// the walk's cap makes it fall faster than any exponential there). Divided by R_inf because the
+// albedo multiplies the diffuse light later (post pass). Against Cycles' own slab renders of the
+// issue's stone it agrees within their noise at 2-20 mm; the dipole it replaced let 1.3-1.5x too
+// much red through (docs/quality.md, "Transmission from a random walk").
+vec3 slab_transport(float s_mm) {
+  vec3 tau = u_slab_sigma_t_mm * s_mm;
+  vec3 x = sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1);
+  ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
+  vec3 f = x - vec3(i);
+  vec3 lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
+  vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
+  return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
@@ -127,24 +131,25 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
   vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
-  // through the surface's Fresnel transmittance, and crossed s millimetres of stone to leave
-  // here, carried by the dipole's transport (dipole_transport). An inward offset keeps the
+  // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
+  // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
   // surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
   // The light's falloff is taken where it entered, s before the (offset) exit point.
-  // The entry keeps the Fresnel transmittance 1 - F(cos) rather than the direct light's
-  // principled_entry: at grazing entry (cos -> 0) the latter falls only linearly, and the light
-  // map, coarsest there, then leaves a faint seam on the torus's grazing-lit top
-  // (tests/transmission_seams_gl_test.cpp, 1.1x its threshold); against Cycles the two differ by at
-  // most 0.006 in SSIM and 0.002 in relative RMSE on the reference scenes (docs/quality.md).
+  // The entry is principled_entry, Cycles' coupling for light entering the walk, since session 8;
+  // before, the Fresnel transmittance 1 - F(cos), because with the dipole's transport the
+  // Principled one, falling only linearly at grazing entry, left a faint seam on the torus's
+  // grazing-lit top (1.1x the threshold of tests/transmission_seams_gl_test.cpp); with the random
+  // walk's transport the worst there is 0.74 of it, and against Cycles it raises SSIM in all ten
+  // reference scenes (by up to 0.006; docs/quality.md, "Transmission from a random walk").
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
   vec2 s_cos = transmission_thickness(P_in);
   float s = s_cos.x;
   float s_mm = s * u_mm_per_unit;
-  vec3 enters = s_cos.y * (1.0 - fresnel_schlick(f0_from_ior(u_ior), s_cos.y));
+  vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * dipole_transport(s_mm) * away * away *
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * away * away *
                         u_translucency;
 }
 

@@ -280,7 +280,7 @@ TEST(TransmissionSeamsControl, WithoutTheInwardOffsetThereAreSeams) {
                               "  vec2 s_cos = transmission_thickness(P_in);\n"
                               "  float s = s_cos.x;\n"
                               "  float s_mm = s * u_mm_per_unit;\n"
-                              "  vec3 enters = s_cos.y * (1.0 - fresnel_schlick(f0_from_ior(u_ior), s_cos.y));",
+                              "  vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));",
                               "vec3 P_in = P;\n"
                               "  vec2 s_cos = transmission_thickness(P_in);\n"
                               "  float s = s_cos.x;\n"

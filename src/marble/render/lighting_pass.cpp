@@ -3,7 +3,7 @@
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
-#include "marble/scene/material_scattering.h"
+#include "marble/scene/slab_transport.h"
 
 namespace marble {
 
@@ -80,11 +80,11 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
   uploadMaterialUniforms(p, m);
   p.set("u_mm_per_unit", scene.mm_per_unit);
-  // Derived from sigma_a_mm, sigma_s_mm (and ior): not parameters of their own.
-  p.set("u_sigma_tr_mm", transportCoefficientMm(m));
-  const DipoleDepths dipole = dipoleDepthsMm(m);
-  p.set("u_dipole_zr_mm", dipole.zr_mm);
-  p.set("u_dipole_zv_mm", dipole.zv_mm);
+  // Derived from sigma_a_mm, sigma_s_mm: not parameters of their own.
+  const SlabTransport slab = slabTransportFor(m);
+  glProgramUniform3fv(p.id(), p.location("u_slab_ln_t"), kSlabTransportNodes, &slab.lnT[0].x);
+  p.set("u_slab_tau_max", slab.tauMax);
+  p.set("u_slab_sigma_t_mm", slab.sigmaTMm);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());

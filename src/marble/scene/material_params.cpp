@@ -362,8 +362,8 @@ const ParamDesc kParams[] = {
      .active = &coefficientForm, .inactive = "in the radius form (scattering \"radius\") it is derived from base_color, subsurface_radius_mm and ior"},
     {.key = "ior", .group = ParamGroup::Scattering, .type = ParamType::Float, .lo = 1.0, .hi = 3.0, .atMost = nullptr,
      .unit = "", .label = "ior",
-     .tooltip = "Index of refraction: sets F0 = ((n-1)/(n+1))^2, the highlight's strength, and the light that enters\n"
-                "the stone from behind; light entering the lit side follows the Principled coupling, as in Blender.\n"
+     .tooltip = "Index of refraction: sets F0 = ((n-1)/(n+1))^2, the highlight's strength, and in the radius form the\n"
+                "stone's coefficients (Cycles' conversion); light entering the stone follows the Principled coupling, as in Blender.\n"
                 "Calcite is 1.49-1.66 (F0 about 0.04-0.06).",
      .doc = "index of refraction; F0 = ((n−1)/(n+1))²; calcite 1.486–1.658", .modes = kMarble,
      .passes = kLightingPassBit | kPostPassBit, .uniform = "u_ior", .choices = {}, .slider = {1.0f, 3.0f, false},

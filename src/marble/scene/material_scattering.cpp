@@ -68,11 +68,6 @@ ScatteringCoefficients coefficientsFromRadius(glm::vec3 albedo, glm::vec3 radius
   return c;
 }
 
-DipoleDepths dipoleDepthsMm(const Material& m) {
-  const glm::vec3 zr = 1.0f / glm::max(m.sigma_a_mm + m.sigma_s_mm, glm::vec3(1e-6f));
-  return {zr, zr * static_cast<float>(1.0 + fourThirdsA(clampedIor(m.ior)))};
-}
-
 void resolveScattering(Material& m) {
   if (m.scattering != ScatteringForm::Radius) return;
   const ScatteringCoefficients c = coefficientsFromRadius(m.base_color, m.subsurface_radius_mm, m.ior);

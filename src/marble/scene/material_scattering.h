@@ -37,15 +37,6 @@ struct ScatteringCoefficients {
 // sqrt(3 (1 - a')) (bssrdf_setup_radius), then sigma_t = 1 / radius.
 ScatteringCoefficients coefficientsFromRadius(glm::vec3 albedo, glm::vec3 radiusMm, float ior);
 
-// The dipole's source depths per mm for the material's coefficients (Jensen et al. 2001, eq. 4
-// and below): the real source at z_r = 1 / sigma_t' under the surface, the virtual one at
-// z_v = z_r (1 + 4A/3) above it, A from the same F_dr fit as dipoleReflectance. Used by the
-// `marble` mode's transmission (dipole_profile in shaders/lighting.frag.glsl).
-struct DipoleDepths {
-  glm::vec3 zr_mm, zv_mm;
-};
-DipoleDepths dipoleDepthsMm(const Material& m);
-
 // In the radius form (m.scattering == Radius), sets m.sigma_a_mm and m.sigma_s_mm from
 // m.base_color, m.subsurface_radius_mm and m.ior; in the coefficient form, leaves m as it is.
 // Every path that changes a material (files, --set, the viewer) calls it, so sigma_a_mm and

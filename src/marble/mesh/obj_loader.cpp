@@ -368,9 +368,7 @@ Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned ch
 
 Mesh loadObj(const std::string& file, std::string_view data) {
   rejectBinary(file, data, "OBJ");
-  // Below a few MB a thread's start and the join cost more than they save.
-  constexpr size_t kBytesPerChunk = 4u << 20;
-  const unsigned chunks = workerThreadCount(data.size(), kBytesPerChunk);
+  const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
   return chunks > 1 ? loadObjInChunks(file, data, chunks) : ObjParser(file, data).parse();
 }
 

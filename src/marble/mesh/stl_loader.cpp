@@ -5,12 +5,16 @@
 //
 // STL stores every triangle's corners separately; identical positions (bit-exact) are welded into
 // one vertex so that smooth normals see the neighbours. Facet normals are ignored.
+#include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <vector>
 
+#include "marble/core/parallel_for.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/weld_corners.h"
 
 namespace marble::mesh_detail {
 namespace {
@@ -103,32 +107,48 @@ uint32_t checkBinaryHeader(const std::string& file, std::string_view head, uint6
   return count;
 }
 
-Mesh loadBinary(const std::string& file, std::string_view data) {
+Mesh loadBinary(const std::string& file, std::string_view data, unsigned threads) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
   const uint32_t count = checkBinaryHeader(file, data, data.size());
   // Extra bytes after the last triangle are tolerated (some exporters pad).
-  Mesh mesh;
-  mesh.indices.reserve(3ull * count);
-  Welder welder(count / 2);
-  for (uint32_t t = 0; t < count; ++t) {
-    const unsigned char* tri = bytes + 84 + 50ull * t;
-    for (int k = 0; k < 3; ++k) {
-      const unsigned char* v = tri + 12 + 12 * k;
-      glm::vec3 p(loadFloatLE(v), loadFloatLE(v + 4), loadFloatLE(v + 8));
-      if (!finite(p))
-        throw InputError(file, byteAt(static_cast<size_t>(v - bytes)),
-                         "triangle " + std::to_string(t) + ": coordinate is NaN or infinite");
-      mesh.indices.push_back(welder.add(p, mesh));
+  // The corners decoded over threads; each range notes its first non-finite corner, and the
+  // first of those is the one the message names (the same as a front-to-back read would).
+  const size_t corners = 3ull * count;
+  std::vector<glm::vec3> soup(corners);
+  const size_t kNoBad = SIZE_MAX;
+  std::vector<size_t> firstBad(std::max(1u, threads), kNoBad);
+  const size_t parts = firstBad.size();
+  parallelFor(parts, 1, [&](size_t firstPart, size_t lastPart) {
+    for (size_t part = firstPart; part < lastPart; ++part) {
+      const size_t begin = corners * part / parts, end = corners * (part + 1) / parts;
+      for (size_t c = begin; c < end; ++c) {
+        const unsigned char* v = bytes + 84 + 50 * (c / 3) + 12 + 12 * (c % 3);
+        const glm::vec3 p(loadFloatLE(v), loadFloatLE(v + 4), loadFloatLE(v + 8));
+        if (!finite(p)) {
+          firstBad[part] = c;
+          break;
+        }
+        soup[c] = p;
+      }
     }
-  }
+  });
+  const size_t bad = *std::min_element(firstBad.begin(), firstBad.end());
+  if (bad != kNoBad)
+    throw InputError(file, byteAt(84 + 50 * (bad / 3) + 12 + 12 * (bad % 3)),
+                     "triangle " + std::to_string(bad / 3) + ": coordinate is NaN or infinite");
+  WeldedCorners welded = weldCorners(std::move(soup), threads);
+  Mesh mesh;
+  mesh.positions = std::move(welded.positions);
+  mesh.indices = std::move(welded.indices);
   return mesh;
 }
 
-Mesh loadAscii(const std::string& file, std::string_view data) {
-  rejectBinary(file, data, "ASCII STL");
+// The ASCII grammar, for the whole file or one chunk of it. `sink.vertex(p, line)` returns the id a
+// loop refers to (the welded vertex, or a chunk's corner number); triangles are appended to
+// `indices` as fans of those ids. Throws InputError at the first problem.
+template <class Sink>
+void scanAscii(const std::string& file, std::string_view data, Sink& sink, std::vector<uint32_t>& indices) {
   TextCursor c{data.data(), data.data() + data.size(), 1};
-  Mesh mesh;
-  Welder welder(data.size() / 512);  // ~250 bytes of text per facet; grows if needed
   std::vector<uint32_t> loop;
   bool inLoop = false;
   size_t loopLine = 0;
@@ -147,9 +167,7 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
         if (!std::isfinite(x)) throw InputError(file, lineAt(c.line), "coordinate is NaN or infinite");
         p[k] = x;
       }
-      if (mesh.positions.size() >= kMaxVertices)
-        throw InputError(file, lineAt(c.line), "more than " + withThousands(kMaxVertices) + " vertices (the limit)");
-      loop.push_back(welder.add(p, mesh));
+      loop.push_back(sink.vertex(p, c.line));
     } else if (equalsIgnoreCase(tok, "outer")) {
       c.token();  // "loop"
       inLoop = true;
@@ -158,12 +176,12 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
     } else if (equalsIgnoreCase(tok, "endloop")) {
       if (loop.size() < 3)
         throw InputError(file, lineAt(loopLine), "loop has " + std::to_string(loop.size()) + " vertices; a facet needs 3");
-      if (mesh.indices.size() / 3 + loop.size() - 2 > kMaxTriangles)
+      if (indices.size() / 3 + loop.size() - 2 > kMaxTriangles)
         throw InputError(file, lineAt(c.line), "more than " + withThousands(kMaxTriangles) + " triangles (the limit)");
       for (size_t k = 1; k + 1 < loop.size(); ++k) {
-        mesh.indices.push_back(loop[0]);
-        mesh.indices.push_back(loop[k]);
-        mesh.indices.push_back(loop[k + 1]);
+        indices.push_back(loop[0]);
+        indices.push_back(loop[k]);
+        indices.push_back(loop[k + 1]);
       }
       inLoop = false;
     } else if (equalsIgnoreCase(tok, "solid") || equalsIgnoreCase(tok, "endsolid")) {
@@ -177,8 +195,111 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
     }
   }
   if (inLoop) throw InputError(file, lineAt(loopLine), "file ends inside 'outer loop' (truncated)");
+}
+
+// The whole file in one pass, welding as it goes: the reference for every message.
+Mesh loadAsciiSequential(const std::string& file, std::string_view data) {
+  rejectBinary(file, data, "ASCII STL");
+  struct WeldingSink {
+    const std::string& file;
+    Mesh& mesh;
+    Welder welder;
+    uint32_t vertex(const glm::vec3& p, size_t line) {
+      if (mesh.positions.size() >= kMaxVertices)
+        throw InputError(file, lineAt(line), "more than " + withThousands(kMaxVertices) + " vertices (the limit)");
+      return welder.add(p, mesh);
+    }
+  };
+  Mesh mesh;
+  WeldingSink sink{file, mesh, Welder(data.size() / 512)};  // ~250 bytes of text per facet; grows if needed
+  scanAscii(file, data, sink, mesh.indices);
   return mesh;
 }
+
+// Chunk boundaries at the starts of lines whose first word is "facet", near equal sizes (fewer
+// chunks when the file has few such lines).
+std::vector<std::string_view> facetChunks(std::string_view data, unsigned chunks) {
+  std::vector<std::string_view> parts;
+  size_t begin = 0;
+  for (unsigned i = 1; i <= chunks && begin < data.size(); ++i) {
+    size_t end = data.size();
+    for (size_t at = std::max(begin, data.size() * i / chunks); i < chunks && at < data.size();) {
+      const size_t nl = data.find('\n', at);
+      if (nl == std::string_view::npos) break;
+      size_t word = nl + 1;
+      while (word < data.size() && isSpace(data[word])) ++word;
+      if (data.size() - word > 5 && equalsIgnoreCase(data.substr(word, 5), "facet") && isSpace(data[word + 5])) {
+        end = nl + 1;
+        break;
+      }
+      at = nl + 1;
+    }
+    parts.push_back(data.substr(begin, end - begin));
+    begin = end;
+  }
+  return parts;
+}
+
+}  // namespace
+
+Mesh loadStlAsciiInChunks(const std::string& file, std::string_view data, unsigned chunks, bool* joined) {
+  if (joined) *joined = false;
+  rejectBinary(file, data, "ASCII STL");
+  const std::vector<std::string_view> parts = facetChunks(data, chunks);
+  if (parts.size() > 1) {
+    // Each chunk numbers its corners (every 'vertex') and refers to them; after the join the
+    // corners are welded in file order, which numbers the vertices as the one-pass welder does.
+    // A chunk with any problem (or that ends inside a loop), or a total that could pass a limit,
+    // sends the whole file through the one-pass scan for its message.
+    struct CornerSink {
+      std::vector<glm::vec3> corners;
+      uint32_t vertex(const glm::vec3& p, size_t) {
+        corners.push_back(p);
+        return static_cast<uint32_t>(corners.size() - 1);
+      }
+    };
+    std::vector<CornerSink> sinks(parts.size());
+    std::vector<std::vector<uint32_t>> indices(parts.size());
+    std::vector<char> ok(parts.size(), 0);
+    parallelFor(parts.size(), 1, [&](size_t first, size_t last) {
+      for (size_t i = first; i < last; ++i) {
+        try {
+          sinks[i].corners.reserve(parts[i].size() / 80);
+          scanAscii(file, parts[i], sinks[i], indices[i]);
+          ok[i] = 1;
+        } catch (const InputError&) {
+        }
+      }
+    });
+    size_t corners = 0, corners3 = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      corners += sinks[i].corners.size();
+      corners3 += indices[i].size();
+    }
+    if (std::find(ok.begin(), ok.end(), 0) == ok.end() && corners <= kMaxVertices && corners3 / 3 <= kMaxTriangles) {
+      std::vector<glm::vec3> soup;
+      soup.reserve(corners);
+      std::vector<uint32_t> cornerIndices;
+      cornerIndices.reserve(corners3);
+      for (size_t i = 0; i < parts.size(); ++i) {
+        const auto base = static_cast<uint32_t>(soup.size());
+        for (uint32_t id : indices[i]) cornerIndices.push_back(base + id);
+        soup.insert(soup.end(), sinks[i].corners.begin(), sinks[i].corners.end());
+        std::vector<glm::vec3>().swap(sinks[i].corners);
+      }
+      const WeldedCorners welded = weldCorners(std::move(soup));
+      Mesh mesh;
+      mesh.positions = welded.positions;
+      mesh.indices.resize(cornerIndices.size());
+      for (size_t k = 0; k < cornerIndices.size(); ++k) mesh.indices[k] = welded.indices[cornerIndices[k]];
+      if (joined) *joined = true;
+      return mesh;
+    }
+  }
+  return loadAsciiSequential(file, data);
+}
+
+namespace {
 
 bool startsWithSolid(std::string_view data) {
   size_t i = 0;
@@ -207,8 +328,16 @@ uint64_t stlBytesToRead(const std::string& file, std::string_view head, uint64_t
   return 84 + 50ull * count;  // padding after the last triangle is not read
 }
 
+Mesh loadStlBinary(const std::string& file, std::string_view data, unsigned threads) {
+  return loadBinary(file, data, threads);
+}
+
 Mesh loadStl(const std::string& file, std::string_view data) {
-  return isAsciiStl(data.substr(0, kStlProbeBytes), data.size()) ? loadAscii(file, data) : loadBinary(file, data);
+  if (isAsciiStl(data.substr(0, kStlProbeBytes), data.size())) {
+    const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
+    return chunks > 1 ? loadStlAsciiInChunks(file, data, chunks) : loadAsciiSequential(file, data);
+  }
+  return loadBinary(file, data, workerThreadCount(data.size(), kTextBytesPerChunk));
 }
 
 }  // namespace marble::mesh_detail

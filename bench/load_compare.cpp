@@ -9,7 +9,7 @@
 //   marble parse  - the file read and parsed (mesh_detail::loadObj/Ply/Stl): the work assimp's
 //                   importer does, parallel where it pays (files >= 4 MB: one part per core)
 //   parse 1 part  - the same read front to back on one thread (loadObjInChunks(1),
-//                   loadPlyInParts(1), loadStlAsciiInChunks(1) / loadStlBinary(1)); before the
+//                   loadPlyInParts(1), loadStlAsciiInChunks(1); a binary STL is one pass anyway); before the
 //                   timed runs, each file's mesh from both is compared byte for byte
 //   marble load   - loadMesh: parse, duplicate triangles dropped, up axis, normalization,
 //                   angle-weighted normals with the 60-degree crease (what `marble` runs)
@@ -74,9 +74,10 @@ marble::Mesh parseInParts(const std::filesystem::path& path, unsigned parts) {
   namespace md = marble::mesh_detail;
   if (ext == ".obj") return parts == 0 ? md::loadObj(file, data) : md::loadObjInChunks(file, data, parts);
   if (ext == ".ply") return parts == 0 ? md::loadPly(file, data) : md::loadPlyInParts(file, data, parts);
-  if (parts == 0) return md::loadStl(file, data);
-  const bool ascii = data.size() != 84 + 50ull * (data.size() >= 84 ? *reinterpret_cast<const uint32_t*>(data.data() + 80) : 0);
-  return ascii ? md::loadStlAsciiInChunks(file, data, parts) : md::loadStlBinary(file, data, parts);
+  uint32_t count = 0;
+  if (data.size() >= 84) std::memcpy(&count, data.data() + 80, 4);
+  const bool binary = data.size() == 84 + 50ull * count;  // read in one pass either way
+  return parts == 0 || binary ? md::loadStl(file, data) : md::loadStlAsciiInChunks(file, data, parts);
 }
 
 bool sameMesh(const marble::Mesh& a, const marble::Mesh& b) {

@@ -1,7 +1,7 @@
 // The STL loader's parallel paths give the one-pass read's mesh, and on bad input its exact error
-// message, for any part count: an ASCII file cut into chunks at 'facet' lines (the corners welded
-// after the join), a binary one decoded and welded on several threads (loader_parts.h); and the
-// threaded weld equals inserting the corners one by one into a map.
+// message, for any chunk count: an ASCII file cut into chunks at 'facet' lines, the corners welded
+// after the join (loader_parts.h); and the weld of a whole soup (prefetching ahead) equals
+// inserting the corners one by one into a map.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -25,11 +25,6 @@ using loader_parts::Outcome;
 Mesh loadAsciiParts(const std::string& text, unsigned parts, bool* joined) {
   return mesh_detail::loadStlAsciiInChunks("parts.stl", text, parts, joined);
 }
-Mesh loadBinaryParts(const std::string& text, unsigned parts, bool* used) {
-  if (used) *used = true;  // no fallback: the threads' result is always the one returned
-  return mesh_detail::loadStlBinary("parts.stl", text, parts);
-}
-
 // A wavy grid's triangles, every corner written out as STL stores it (so neighbours share corners
 // only through welding), with -0 among the coordinates.
 std::vector<glm::vec3> gridCorners(int rows) {
@@ -61,18 +56,6 @@ std::vector<std::string> asciiLines(const std::vector<glm::vec3>& corners) {
 std::string joinLines(const std::vector<std::string>& lines) {
   std::string s;
   for (const std::string& l : lines) s += l;
-  return s;
-}
-
-std::string binaryStl(const std::vector<glm::vec3>& corners) {
-  std::string s(80, ' ');
-  const auto count = static_cast<uint32_t>(corners.size() / 3);
-  s.append(reinterpret_cast<const char*>(&count), 4);
-  for (size_t c = 0; c < corners.size(); c += 3) {
-    s.append(12, '\0');
-    s.append(reinterpret_cast<const char*>(&corners[c]), 36);
-    s.append(2, '\0');
-  }
   return s;
 }
 
@@ -120,22 +103,6 @@ TEST(MeshStlParts, AsciiChunksGiveTheOnePassError) {
   loader_parts::expectSameForEveryPartCount(loadAsciiParts, nul, "a NUL byte");
 }
 
-TEST(MeshStlParts, BinaryThreadsGiveTheOneThreadMeshAndError) {
-  const std::vector<glm::vec3> corners = gridCorners(40);
-  const std::string base = binaryStl(corners);
-  loader_parts::expectSameForEveryPartCount(loadBinaryParts, base, "grid", true);
-  // The first non-finite corner is the one named, whichever thread reads it.
-  for (double at : {0.1, 0.5, 0.9}) {
-    std::string bad = base;
-    const size_t c = static_cast<size_t>(at * static_cast<double>(corners.size()));
-    const float inf = std::numeric_limits<float>::infinity();
-    std::memcpy(&bad[84 + 50 * (c / 3) + 12 + 12 * (c % 3) + 4], &inf, 4);
-    loader_parts::expectSameForEveryPartCount(loadBinaryParts, bad, "infinite at " + std::to_string(at));
-    std::memcpy(&bad[84 + 50 * (c / 6) + 12], &inf, 4);
-    loader_parts::expectSameForEveryPartCount(loadBinaryParts, bad, "two infinite at " + std::to_string(at));
-  }
-}
-
 // The reference: corners inserted one by one into a map from bit patterns (-0 as +0).
 mesh_detail::WeldedCorners weldByMap(const std::vector<glm::vec3>& corners) {
   std::map<std::tuple<uint32_t, uint32_t, uint32_t>, uint32_t> seen;
@@ -156,17 +123,16 @@ bool sameWeld(const mesh_detail::WeldedCorners& a, const mesh_detail::WeldedCorn
          std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0;
 }
 
-TEST(MeshStlParts, ThreadedWeldEqualsOneByOneInsertion) {
+TEST(MeshStlParts, WeldEqualsOneByOneInsertion) {
   std::vector<glm::vec3> corners = gridCorners(30);
   // Many corners on few positions (long probe runs), and positions differing only in -0.
   for (int i = 0; i < 3000; ++i) corners.push_back(glm::vec3(static_cast<float>(i % 7), -0.0f, static_cast<float>(i % 5)));
   const mesh_detail::WeldedCorners reference = weldByMap(corners);
-  for (unsigned threads : {1u, 2u, 3u, 7u, 16u})
-    EXPECT_TRUE(sameWeld(reference, mesh_detail::weldCorners(corners, threads))) << threads << " threads";
+  EXPECT_TRUE(sameWeld(reference, mesh_detail::weldCorners(corners)));
   // Negative control: one corner moved changes the weld.
   std::vector<glm::vec3> moved = corners;
   moved[5].x += 1.0f;
-  EXPECT_FALSE(sameWeld(reference, mesh_detail::weldCorners(moved, 2)));
+  EXPECT_FALSE(sameWeld(reference, mesh_detail::weldCorners(moved)));
 }
 
 }  // namespace

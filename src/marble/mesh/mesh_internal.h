@@ -45,8 +45,8 @@ Mesh loadObj(const std::string& file, std::string_view data);
 // `joined` (optional) is set to whether the chunks' scans were used (false: the sequential scan ran).
 Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned chunks, bool* joined = nullptr);
 // Text formats are cut into one chunk per core from this size on (OBJ, ASCII PLY and STL): below a
-// few MB a thread's start and the join cost more than they save. Binary PLY and STL decode over
-// threads from the same size.
+// few MB a thread's start and the join cost more than they save. Binary PLY decodes over threads
+// from the same size.
 inline constexpr size_t kTextBytesPerChunk = 4u << 20;
 Mesh loadPly(const std::string& file, std::string_view data);
 // loadPly with the body's large elements read in `parts` parts (1: front to back, as the messages
@@ -54,11 +54,10 @@ Mesh loadPly(const std::string& file, std::string_view data);
 // `parallel` (optional) is set to whether the parts' reads were used for every large element.
 Mesh loadPlyInParts(const std::string& file, std::string_view data, unsigned parts, bool* parallel = nullptr);
 Mesh loadStl(const std::string& file, std::string_view data);
-// loadStl's paths with a given number of chunks or threads: an ASCII STL cut at 'facet' lines
-// (`joined` as for loadObjInChunks), a binary one decoded and welded on `threads` threads; the
-// same mesh and error as one chunk or thread (tested).
+// loadStl's parallel path for an ASCII STL, cut into `chunks` at 'facet' lines (`joined` as for
+// loadObjInChunks): the same mesh and error as one chunk (tested). A binary STL is read in one
+// pass (its cost is the weld's cache misses, which threads did not cut).
 Mesh loadStlAsciiInChunks(const std::string& file, std::string_view data, unsigned chunks, bool* joined = nullptr);
-Mesh loadStlBinary(const std::string& file, std::string_view data, unsigned threads);
 // glTF buffers are read only from inside `baseDir` unless `allowOutside` (docs/reliability.md).
 Mesh loadGltf(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside = false);
 Mesh loadGlb(const std::string& file, std::string_view data, const std::filesystem::path& baseDir, bool allowOutside = false);

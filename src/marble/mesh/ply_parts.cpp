@@ -41,7 +41,8 @@ struct LineCursor {
 
 // The starts of the lines that begin each part of `count` lines from `p` (starts[k], k < parts) and
 // the end of the last line (starts[parts]: after its '\n', or the data's end when the last line has
-// none); `newlines` = the '\n's passed. Empty when the data has fewer lines.
+// none); `newlines` = the '\n's passed. Empty when the data has fewer lines. (memchr line by line:
+// counting '\n's in blocks first, portable SWAR or std::count, cost 13-20 % more of the parse.)
 std::vector<const char*> partLines(const char* p, const char* end, uint64_t count, unsigned parts, uint64_t& newlines) {
   std::vector<const char*> starts{p};
   uint64_t line = 0;  // the line `p` starts
@@ -49,17 +50,6 @@ std::vector<const char*> partLines(const char* p, const char* end, uint64_t coun
   for (unsigned k = 1; k <= parts; ++k) {
     const uint64_t target = count * k / parts;
     while (line < target) {
-      // Whole blocks before the target line counted at once (vectorized), then '\n' by '\n'.
-      constexpr std::ptrdiff_t kBlock = 1 << 16;
-      if (end - p > kBlock) {
-        const auto inBlock = static_cast<uint64_t>(std::count(p, p + kBlock, '\n'));
-        if (line + inBlock < target) {
-          p += kBlock;
-          line += inBlock;
-          newlines += inBlock;
-          continue;
-        }
-      }
       if (const void* nl = std::memchr(p, '\n', static_cast<size_t>(end - p))) {
         p = static_cast<const char*>(nl) + 1;
         ++line;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "marble/mesh/mesh.h"
+#include "marble/mesh/mesh_internal.h"
 
 namespace marble::mesh_detail::ply {
 
@@ -144,6 +145,7 @@ inline bool asciiNumber(std::string_view tok, double& v) {
   const char* b = tok.data();
   const char* e = tok.data() + tok.size();
   if (b < e && *b == '+') ++b;
+  if (mesh_detail::parseShortDecimal(b, e, v) == e) return true;
   const auto r = std::from_chars(b, e, v);
   if (r.ec == std::errc::result_out_of_range) {
     v = HUGE_VAL;

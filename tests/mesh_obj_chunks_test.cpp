@@ -7,28 +7,21 @@
 #include <string>
 #include <variant>
 
+#include "loader_parts.h"
 #include "marble/core/error.h"
 #include "marble/mesh/mesh_internal.h"
 
 namespace marble {
 namespace {
 
-using Outcome = std::variant<Mesh, std::string>;  // the mesh, or the error's message
+using loader_parts::Outcome;
+using loader_parts::sameMesh;
+using loader_parts::withLineAt;
 
 Outcome load(const std::string& text, unsigned chunks, bool* joined = nullptr) {
-  try {
-    return mesh_detail::loadObjInChunks("chunks.obj", text, chunks, joined);
-  } catch (const InputError& e) {
-    return std::string(e.what());
-  }
-}
-
-bool sameMesh(const Mesh& a, const Mesh& b) {
-  auto same = [](const auto& x, const auto& y) {
-    return x.size() == y.size() && (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
-  };
-  return same(a.positions, b.positions) && same(a.normals, b.normals) && same(a.texcoords, b.texcoords) &&
-         a.indices == b.indices;
+  return loader_parts::load(
+      [](const std::string& t, unsigned n, bool* j) { return mesh_detail::loadObjInChunks("chunks.obj", t, n, j); }, text,
+      chunks, joined);
 }
 
 // A grid of quads (v, vt, vn, f with every corner form), comments and CRLF lines mixed in, about
@@ -54,29 +47,10 @@ std::string grid(int rows, bool withAttributes) {
   return s;
 }
 
-// `parallel`: the chunks' own scans must be the ones used (not the sequential fallback), so that
-// the comparison tests the parallel path.
 void expectSameForEveryChunking(const std::string& text, const std::string& what, bool parallel = false) {
-  const Outcome sequential = load(text, 1);
-  for (unsigned chunks : {2u, 3u, 7u}) {
-    bool joined = false;
-    const Outcome chunked = load(text, chunks, &joined);
-    if (parallel) {
-      EXPECT_TRUE(joined) << what << ", " << chunks << " chunks";
-    }
-    ASSERT_EQ(sequential.index(), chunked.index()) << what << ", " << chunks << " chunks";
-    if (const auto* message = std::get_if<std::string>(&sequential))
-      EXPECT_EQ(*message, std::get<std::string>(chunked)) << what << ", " << chunks << " chunks";
-    else
-      EXPECT_TRUE(sameMesh(std::get<Mesh>(sequential), std::get<Mesh>(chunked))) << what << ", " << chunks << " chunks";
-  }
-}
-
-// Inserts `line` (with its newline) at about `fraction` of the text, at a line start.
-std::string withLineAt(std::string text, double fraction, const std::string& line) {
-  size_t at = text.find('\n', static_cast<size_t>(static_cast<double>(text.size()) * fraction));
-  at = at == std::string::npos ? text.size() : at + 1;
-  return text.insert(at, line);
+  loader_parts::expectSameForEveryPartCount(
+      [](const std::string& t, unsigned n, bool* j) { return mesh_detail::loadObjInChunks("chunks.obj", t, n, j); }, text,
+      what, parallel);
 }
 
 TEST(MeshObjChunks, ValidFilesGiveTheSequentialMesh) {

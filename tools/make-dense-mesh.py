@@ -9,7 +9,8 @@ load). The output is benchmark data: write it to /tmp or out/, never into the re
 
 The output's extension picks the format: .obj (text), .ply (binary little-endian: float x y z,
 uchar-counted int vertex_indices) or .stl (binary: every triangle's own corners, as STL stores them),
-so that the loaders can be compared on the same mesh (bench/load_compare.cpp).
+so that the loaders can be compared on the same mesh (bench/load_compare.cpp). `--ascii` writes
+the .ply or .stl as text instead (one vertex or face per line; STL as "solid ... facet ... endsolid").
 
 (A midpoint split adds triangles but no shape: the new triangles lie in the old ones' planes,
 which a simplifier can undo almost without error -- a scan's noise would make that harder.)
@@ -54,17 +55,32 @@ def subdivide(verts, faces):
     return out
 
 
-def write_ply(path, verts, faces):
-    header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+def write_ply(path, verts, faces, ascii_text):
+    header = ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\n"
               "property float y\nproperty float z\nelement face %d\n"
-              "property list uchar int vertex_indices\nend_header\n" % (len(verts), len(faces)))
+              "property list uchar int vertex_indices\nend_header\n"
+              % ("ascii" if ascii_text else "binary_little_endian", len(verts), len(faces)))
+    if ascii_text:
+        with open(path, "w") as f:
+            f.write(header)
+            f.write("".join("%.7g %.7g %.7g\n" % v for v in verts))
+            f.write("".join("3 %d %d %d\n" % t for t in faces))
+        return
     with open(path, "wb") as f:
         f.write(header.encode("ascii"))
         f.write(b"".join(struct.pack("<3f", *v) for v in verts))
         f.write(b"".join(struct.pack("<B3i", 3, *t) for t in faces))
 
 
-def write_stl(path, verts, faces):
+def write_stl(path, verts, faces, ascii_text):
+    if ascii_text:
+        with open(path, "w") as f:
+            f.write("solid dense\n")
+            f.write("".join("facet normal 0 0 0\nouter loop\nvertex %.7g %.7g %.7g\nvertex %.7g %.7g %.7g\n"
+                            "vertex %.7g %.7g %.7g\nendloop\nendfacet\n" % (*verts[a], *verts[b], *verts[c])
+                            for a, b, c in faces))
+            f.write("endsolid dense\n")
+        return
     with open(path, "wb") as f:
         f.write(b"make-dense-mesh.py".ljust(80, b" "))
         f.write(struct.pack("<I", len(faces)))
@@ -77,6 +93,7 @@ def main():
     p.add_argument("input")
     p.add_argument("output")
     p.add_argument("--levels", type=int, default=2)
+    p.add_argument("--ascii", action="store_true", help=".ply and .stl as text")
     a = p.parse_args()
     if a.levels < 0 or a.levels > 4:
         sys.exit("--levels: expected 0 to 4")
@@ -84,9 +101,9 @@ def main():
     for _ in range(a.levels):
         faces = subdivide(verts, faces)
     if a.output.lower().endswith(".ply"):
-        write_ply(a.output, verts, faces)
+        write_ply(a.output, verts, faces, a.ascii)
     elif a.output.lower().endswith(".stl"):
-        write_stl(a.output, verts, faces)
+        write_stl(a.output, verts, faces, a.ascii)
     else:
         with open(a.output, "w") as f:
             f.write("".join("v %.7g %.7g %.7g\n" % v for v in verts))

@@ -15,16 +15,7 @@
 namespace {
 
 std::string outcome(std::string_view text, unsigned chunks) {
-  try {
-    const marble::Mesh m = marble::mesh_detail::loadObjInChunks("fuzz.obj", text, chunks);
-    std::string bytes(reinterpret_cast<const char*>(m.positions.data()), m.positions.size() * sizeof(glm::vec3));
-    bytes.append(reinterpret_cast<const char*>(m.texcoords.data()), m.texcoords.size() * sizeof(glm::vec2));
-    bytes.append(reinterpret_cast<const char*>(m.normals.data()), m.normals.size() * sizeof(glm::vec3));
-    bytes.append(reinterpret_cast<const char*>(m.indices.data()), m.indices.size() * sizeof(uint32_t));
-    return "mesh " + std::to_string(m.positions.size()) + " " + std::to_string(m.indices.size()) + " " + bytes;
-  } catch (const marble::InputError& e) {
-    return std::string("error ") + e.what();
-  }
+  return marble::fuzz::meshOutcome([&] { return marble::mesh_detail::loadObjInChunks("fuzz.obj", text, chunks); });
 }
 
 }  // namespace

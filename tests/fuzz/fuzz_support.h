@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <string>
 
+#include "marble/core/error.h"
+#include "marble/mesh/mesh.h"
+
 namespace marble::fuzz {
 
 class InputFile {
@@ -39,5 +42,21 @@ public:
 private:
   std::filesystem::path dir_, path_;
 };
+
+// A loader's outcome as bytes, for the differential checks (parallel path against the
+// front-to-back read): the mesh's arrays, or the error's message.
+template <class Load>
+std::string meshOutcome(Load&& load) {
+  try {
+    const Mesh m = load();
+    std::string bytes(reinterpret_cast<const char*>(m.positions.data()), m.positions.size() * sizeof(glm::vec3));
+    bytes.append(reinterpret_cast<const char*>(m.texcoords.data()), m.texcoords.size() * sizeof(glm::vec2));
+    bytes.append(reinterpret_cast<const char*>(m.normals.data()), m.normals.size() * sizeof(glm::vec3));
+    bytes.append(reinterpret_cast<const char*>(m.indices.data()), m.indices.size() * sizeof(uint32_t));
+    return "mesh " + std::to_string(m.positions.size()) + " " + std::to_string(m.indices.size()) + " " + bytes;
+  } catch (const InputError& e) {
+    return std::string("error ") + e.what();
+  }
+}
 
 }  // namespace marble::fuzz

@@ -100,6 +100,47 @@ public:
     allVn_ = allVn_ && next.allVn_;
   }
 
+  // The mesh from chunks scanned in file order, built without joining their arrays first, when no
+  // face uses texture coordinates or normals (then OBJ vertex i is render vertex i): each chunk's
+  // positions and corner indices are copied straight into place, on threads. (Joining first copied
+  // every later chunk's corners onto the first's, which meant a fresh allocation of all of them.)
+  // nullopt when the joined statements need the general build or are not clean (joinedIsClean).
+  static std::optional<Mesh> buildPositionsOnly(std::vector<std::optional<ObjParser>>& chunks) {
+    bool anyVt = false, anyVn = false, allVt = true, allVn = true;
+    size_t positions = 0, texcoords = 0, normals = 0, corners = 0;
+    uint64_t maxV = 0;
+    std::vector<size_t> positionAt, cornerAt;
+    for (const auto& c : chunks) {
+      anyVt = anyVt || c->anyVt_;
+      anyVn = anyVn || c->anyVn_;
+      allVt = allVt && c->allVt_;
+      allVn = allVn && c->allVn_;
+      positionAt.push_back(positions);
+      cornerAt.push_back(corners);
+      positions += c->positions_.size();
+      texcoords += c->texcoords_.size();
+      normals += c->normals_.size();
+      corners += c->corners_.size();
+      maxV = std::max(maxV, c->maxV_.index);
+    }
+    if ((anyVt && allVt) || (anyVn && allVn)) return std::nullopt;
+    if (positions > kMaxVertices || texcoords > kMaxVertices || normals > kMaxVertices || corners / 3 > kMaxTriangles ||
+        maxV > positions)
+      return std::nullopt;
+    Mesh mesh;
+    mesh.positions.resize(positions);
+    mesh.indices.resize(corners);
+    parallelFor(chunks.size(), 1, [&](size_t first, size_t last) {
+      for (size_t i = first; i < last; ++i) {
+        const ObjParser& c = *chunks[i];
+        std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
+        uint32_t* out = mesh.indices.data() + cornerAt[i];
+        for (const Corner& corner : c.corners_) *out++ = corner.v;
+      }
+    });
+    return mesh;
+  }
+
   // Whether the joined chunks are within every limit and every index in range; when not, the
   // sequential scan finds the first problem and its line.
   bool joinedIsClean() const {
@@ -115,28 +156,48 @@ private:
     throw InputError(file_, lineAt(line), problem);
   }
 
-  // Room for the positions and triangles of a large file before it is scanned: one quick pass over
-  // the line starts (≈ 1/20 of the scan's time) saves growing the arrays by doubling, whose copies
-  // and fresh pages cost ≈ 1/4 of it. Lines are counted as "v " and "f " (three corners: a
-  // polygon's extra corners grow the array as before); capped so a garbage file cannot ask for much.
+  // Room for the positions and triangles of a large file before it is scanned, which saves growing
+  // the arrays by doubling (their copies and fresh pages cost ≈ 1/4 of the scan). The counts are
+  // estimated from 32 windows of 32 KB spread over the data: lines starting "v " and "f " (three
+  // corners each: a polygon's extra corners grow the array as before), scaled to the whole and
+  // given 1/8 more; capped so a garbage file cannot ask for much. (Counting every line start cost
+  // ≈ 1/10 of the scan; an estimate that falls short only means one doubling.)
   void reserveForStatements() {
-    constexpr size_t kWorthIt = 1u << 20;
-    if (end_ - p_ < static_cast<std::ptrdiff_t>(kWorthIt)) return;
-    size_t vLines = 0, fLines = 0;
-    for (const char* q = p_; q + 1 < end_;) {
-      if (q[1] == ' ' || q[1] == '\t') {
-        vLines += q[0] == 'v';
-        fLines += q[0] == 'f';
+    constexpr size_t kWorthIt = 1u << 20, kWindows = 32, kWindow = 32u << 10;
+    const size_t size = static_cast<size_t>(end_ - p_);
+    if (size < kWorthIt) return;
+    size_t vLines = 0, fLines = 0, sampled = 0;
+    for (size_t w = 0; w < kWindows; ++w) {
+      const char* q = p_ + (size - kWindow) / (kWindows - 1) * w;
+      const char* windowEnd = q + kWindow;
+      sampled += kWindow;
+      // From the first line start in the window (the data's start counts as one).
+      if (q != p_) {
+        const void* nl = std::memchr(q, '\n', kWindow);
+        if (!nl) continue;
+        q = static_cast<const char*>(nl) + 1;
       }
-      const void* nl = std::memchr(q, '\n', static_cast<size_t>(end_ - q));
-      if (!nl) break;
-      q = static_cast<const char*>(nl) + 1;
+      while (q + 1 < windowEnd) {
+        if (q[1] == ' ' || q[1] == '\t') {
+          vLines += q[0] == 'v';
+          fLines += q[0] == 'f';
+        }
+        const void* nl = std::memchr(q, '\n', static_cast<size_t>(windowEnd - q));
+        if (!nl) break;
+        q = static_cast<const char*>(nl) + 1;
+      }
     }
-    positions_.reserve(std::min<size_t>(vLines, kMaxVertices));
-    corners_.reserve(3 * std::min<size_t>(fLines, kMaxTriangles));
+    const double scale = static_cast<double>(size) / static_cast<double>(sampled) * 1.125;
+    positions_.reserve(std::min<size_t>(static_cast<size_t>(static_cast<double>(vLines) * scale), kMaxVertices));
+    corners_.reserve(3 * std::min<size_t>(static_cast<size_t>(static_cast<double>(fLines) * scale), kMaxTriangles));
   }
 
   void skipLine() {
+    if (p_ < end_ && *p_ == '\n') {  // where a statement's scan usually stops
+      ++p_;
+      ++line_;
+      return;
+    }
     const void* nl = std::memchr(p_, '\n', static_cast<size_t>(end_ - p_));
     if (nl) {
       p_ = static_cast<const char*>(nl) + 1;
@@ -187,8 +248,25 @@ private:
     normals_.emplace_back(x, y, z);
   }
 
-  // One index of a face corner; returns it 0-based.
+  // One index of a face corner; returns it 0-based. The common case (1 to 10 digits, positive, no
+  // sign) in a few instructions with the position in a register; anything else is read again by
+  // indexInFull, which judges it and words the message.
   uint32_t index(size_t count, PendingMax& pending, const char* what, const char* plural) {
+    const char* q = p_;
+    const char* digitsEnd = q + std::min<std::ptrdiff_t>(end_ - q, 10);
+    uint64_t value = 0;
+    while (q < digitsEnd && isDigit(*q)) value = value * 10 + static_cast<uint64_t>(*q++ - '0');
+    if (value == 0 || value > 0xFFFFFFFEull || (q < end_ && isDigit(*q)))
+      return indexInFull(count, pending, what, plural);
+    p_ = q;
+    if (value > pending.index) {
+      pending.index = value;
+      pending.line = line_;
+    }
+    return static_cast<uint32_t>(value - 1);
+  }
+
+  [[gnu::noinline]] uint32_t indexInFull(size_t count, PendingMax& pending, const char* what, const char* plural) {
     bool negative = false;
     if (p_ < end_ && (*p_ == '-' || *p_ == '+')) {
       negative = *p_ == '-';
@@ -353,6 +431,10 @@ Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned ch
           parsers[i]->scan();
         }
       });
+      if (std::optional<Mesh> mesh = ObjParser::buildPositionsOnly(parsers)) {
+        if (joined) *joined = true;
+        return std::move(*mesh);
+      }
       for (size_t i = 1; i < parsers.size(); ++i) parsers[0]->join(std::move(*parsers[i]));
       if (parsers[0]->joinedIsClean()) {
         Mesh mesh = parsers[0]->build();
@@ -368,9 +450,7 @@ Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned ch
 
 Mesh loadObj(const std::string& file, std::string_view data) {
   rejectBinary(file, data, "OBJ");
-  // Below a few MB a thread's start and the join cost more than they save.
-  constexpr size_t kBytesPerChunk = 4u << 20;
-  const unsigned chunks = workerThreadCount(data.size(), kBytesPerChunk);
+  const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
   return chunks > 1 ? loadObjInChunks(file, data, chunks) : ObjParser(file, data).parse();
 }
 

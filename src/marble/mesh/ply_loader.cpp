@@ -13,99 +13,14 @@
 #include <vector>
 
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/ply_format.h"
+#include "marble/mesh/ply_parts.h"
+#include "marble/core/parallel_for.h"
 
 namespace marble::mesh_detail {
 namespace {
 
-enum class Type { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-std::optional<Type> parseType(std::string_view s) {
-  if (s == "char" || s == "int8") return Type::Int8;
-  if (s == "uchar" || s == "uint8") return Type::UInt8;
-  if (s == "short" || s == "int16") return Type::Int16;
-  if (s == "ushort" || s == "uint16") return Type::UInt16;
-  if (s == "int" || s == "int32") return Type::Int32;
-  if (s == "uint" || s == "uint32") return Type::UInt32;
-  if (s == "float" || s == "float32") return Type::Float32;
-  if (s == "double" || s == "float64") return Type::Float64;
-  return std::nullopt;
-}
-
-size_t typeSize(Type t) {
-  switch (t) {
-    case Type::Int8:
-    case Type::UInt8: return 1;
-    case Type::Int16:
-    case Type::UInt16: return 2;
-    case Type::Int32:
-    case Type::UInt32:
-    case Type::Float32: return 4;
-    case Type::Float64: return 8;
-  }
-  return 1;
-}
-
-bool isIntegral(Type t) { return t != Type::Float32 && t != Type::Float64; }
-
-struct Property {
-  std::string name;
-  Type type = Type::Float32;
-  bool isList = false;
-  Type countType = Type::UInt8;
-};
-
-struct Element {
-  std::string name;
-  uint64_t count = 0;
-  std::vector<Property> properties;
-  size_t headerLine = 0;
-};
-
-enum class Format { Ascii, BinaryLE, BinaryBE };
-
-// Roles of vertex properties.
-enum Role { kX, kY, kZ, kNX, kNY, kNZ, kU, kV, kNone };
-
-Role vertexRole(std::string_view n) {
-  if (n == "x") return kX;
-  if (n == "y") return kY;
-  if (n == "z") return kZ;
-  if (n == "nx") return kNX;
-  if (n == "ny") return kNY;
-  if (n == "nz") return kNZ;
-  if (n == "s" || n == "u" || n == "texture_u" || n == "texture_s") return kU;
-  if (n == "t" || n == "v" || n == "texture_v" || n == "texture_t") return kV;
-  return kNone;
-}
-
-template <typename T>
-T loadRaw(const unsigned char* p, bool swap) {
-  T v;
-  if constexpr (sizeof(T) == 1) {
-    std::memcpy(&v, p, 1);
-  } else {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, p, sizeof(T));
-    if (swap)
-      for (size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-    std::memcpy(&v, b, sizeof(T));
-  }
-  return v;
-}
-
-double loadValue(Type t, const unsigned char* p, bool swap) {
-  switch (t) {
-    case Type::Int8: return loadRaw<int8_t>(p, swap);
-    case Type::UInt8: return loadRaw<uint8_t>(p, swap);
-    case Type::Int16: return loadRaw<int16_t>(p, swap);
-    case Type::UInt16: return loadRaw<uint16_t>(p, swap);
-    case Type::Int32: return loadRaw<int32_t>(p, swap);
-    case Type::UInt32: return loadRaw<uint32_t>(p, swap);
-    case Type::Float32: return loadRaw<float>(p, swap);
-    case Type::Float64: return loadRaw<double>(p, swap);
-  }
-  return 0.0;
-}
+using namespace ply;
 
 // An index as the file gave it, for a message. Float properties can hold anything: a cast of
 // inf, nan or 1e30 to an integer is undefined (fuzz_ply found "inf" here), so those are printed
@@ -119,7 +34,13 @@ std::string indexText(double x) {
 
 class PlyParser {
 public:
-  PlyParser(const std::string& file, std::string_view data) : file_(file), data_(data) {}
+  // `parts` > 1: the vertex and face elements are first tried in that many parts (ply_parts.h);
+  // anything unusual there and the element is read front to back, which gives every message.
+  PlyParser(const std::string& file, std::string_view data, unsigned parts = 1)
+      : file_(file), data_(data), parts_(parts) {}
+
+  // Whether every vertex and face element was read in parts (tests).
+  bool allInParts() const { return inParts_ && partsTried_; }
 
   Mesh parse() {
     parseHeader();
@@ -272,15 +193,9 @@ private:
     if (tok.empty())
       bodyFail("file ends inside " + e.name + " " + std::to_string(index) + " of " + withThousands(e.count) + " (truncated)");
     double v = 0;
-    const char* b = tok.data();
-    if (*b == '+') ++b;
-    auto r = std::from_chars(b, tok.data() + tok.size(), v);
-    if (r.ec == std::errc::result_out_of_range) {
-      v = HUGE_VAL;  // reported as non-finite where it matters
-    } else if (r.ec != std::errc{} || r.ptr != tok.data() + tok.size()) {
+    if (!asciiNumber(tok, v))
       bodyFail("expected a number in " + e.name + " " + std::to_string(index) + ", found '" +
                std::string(tok.substr(0, 24)) + "'");
-    }
     return v;
   }
 
@@ -290,7 +205,7 @@ private:
 
   uint64_t listCount(const Property& p, const Element& e, uint64_t index) {
     double n = value(p.countType, e, index);
-    if (!(n >= 0) || n != std::floor(n) || n > 1e9)
+    if (!goodListCount(n))
       bodyFail("bad list length " + std::to_string(n) + " in " + e.name + " " + std::to_string(index));
     return static_cast<uint64_t>(n);
   }
@@ -336,20 +251,16 @@ private:
   }
 
   void readVertices(const Element& e) {
-    std::vector<Role> roles;
-    bool hasNormal[3] = {false, false, false}, hasUv[2] = {false, false};
-    for (const Property& p : e.properties) {
-      Role r = p.isList ? kNone : vertexRole(p.name);
-      roles.push_back(r);
-      if (r >= kNX && r <= kNZ) hasNormal[r - kNX] = true;
-      if (r == kU || r == kV) hasUv[r - kU] = true;
-    }
-    const bool normals = hasNormal[0] && hasNormal[1] && hasNormal[2];
-    const bool uvs = hasUv[0] && hasUv[1];
+    const VertexLayout layout = vertexLayout(e);
     const size_t n = static_cast<size_t>(e.count);
     mesh_.positions.resize(n);
-    if (normals) mesh_.normals.resize(n);
-    if (uvs) mesh_.texcoords.resize(n);
+    if (layout.normals) mesh_.normals.resize(n);
+    if (layout.uvs) mesh_.texcoords.resize(n);
+    if (tryInParts([&] {
+          return format_ == Format::Ascii ? readAsciiVerticesInParts(text_, e, layout, mesh_, parts_)
+                                          : readBinaryVerticesInParts(binaryBody(), e, layout, swap_, mesh_, parts_, pos_);
+        }))
+      return;
     for (size_t i = 0; i < n; ++i) {
       double v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
       for (size_t k = 0; k < e.properties.size(); ++k) {
@@ -359,16 +270,24 @@ private:
           continue;
         }
         double x = value(p.type, e, i);
-        if (roles[k] != kNone) v[roles[k]] = x;
+        if (layout.roles[k] != kNone) v[layout.roles[k]] = x;
       }
-      glm::vec3 pos(static_cast<float>(v[kX]), static_cast<float>(v[kY]), static_cast<float>(v[kZ]));
-      if (!std::isfinite(pos.x) || !std::isfinite(pos.y) || !std::isfinite(pos.z))
-        bodyFail("vertex " + std::to_string(i) + ": coordinate is NaN or infinite");
-      mesh_.positions[i] = pos;
-      if (normals)
-        mesh_.normals[i] = glm::vec3(static_cast<float>(v[kNX]), static_cast<float>(v[kNY]), static_cast<float>(v[kNZ]));
-      if (uvs) mesh_.texcoords[i] = glm::vec2(static_cast<float>(v[kU]), static_cast<float>(v[kV]));
+      if (!storeVertex(v, i, layout, mesh_)) bodyFail("vertex " + std::to_string(i) + ": coordinate is NaN or infinite");
     }
+  }
+
+  // The body from the read position on (binary).
+  std::string_view binaryBody() const { return data_.substr(pos_); }
+
+  // Runs a reader in parts when there are parts to use; true when it read the element (and moved
+  // the position past it), false when the element must be read front to back from where it starts.
+  template <class Read>
+  bool tryInParts(Read&& read) {
+    if (parts_ <= 1) return false;
+    partsTried_ = true;
+    const bool ok = read();
+    inParts_ = inParts_ && ok;
+    return ok;
   }
 
   void readFaces(const Element& e) {
@@ -381,6 +300,13 @@ private:
     if (listIndex < 0) headerFail(e.headerLine, "the face element has no 'vertex_indices' list");
     if (!isIntegral(e.properties[static_cast<size_t>(listIndex)].type))
       headerFail(e.headerLine, "face indices must be an integer type");
+    const auto list = static_cast<size_t>(listIndex);
+    if (tryInParts([&] {
+          return format_ == Format::Ascii ? readAsciiFacesInParts(text_, e, list, vertexCount_, mesh_.indices, parts_)
+                                          : readBinaryFacesInParts(binaryBody(), e, list, vertexCount_, swap_, mesh_.indices,
+                                                                   parts_, pos_);
+        }))
+      return;
     mesh_.indices.reserve(static_cast<size_t>(std::min<uint64_t>(e.count * 3, kMaxTriangles * 3)));
     std::vector<uint32_t> polygon;
     for (uint64_t i = 0; i < e.count; ++i) {
@@ -398,7 +324,7 @@ private:
         polygon.clear();
         for (uint64_t j = 0; j < n; ++j) {
           double x = value(p.type, e, i);
-          if (!(x >= 0) || x >= static_cast<double>(vertexCount_))
+          if (!goodIndex(x, vertexCount_))
             bodyFail("face " + std::to_string(i) + ": vertex index " + indexText(x) + " is out of range (the file has " +
                      withThousands(vertexCount_) + " vertices)");
           polygon.push_back(static_cast<uint32_t>(x));
@@ -423,11 +349,22 @@ private:
   size_t pos_ = 0;
   bool swap_ = false;
   bool sawFaces_ = false;
+  unsigned parts_ = 1;
+  bool partsTried_ = false, inParts_ = true;
   Mesh mesh_;
 };
 
 }  // namespace
 
-Mesh loadPly(const std::string& file, std::string_view data) { return PlyParser(file, data).parse(); }
+Mesh loadPlyInParts(const std::string& file, std::string_view data, unsigned parts, bool* parallel) {
+  PlyParser parser(file, data, parts);
+  Mesh mesh = parser.parse();
+  if (parallel) *parallel = parser.allInParts();
+  return mesh;
+}
+
+Mesh loadPly(const std::string& file, std::string_view data) {
+  return loadPlyInParts(file, data, workerThreadCount(data.size(), kTextBytesPerChunk));
+}
 
 }  // namespace marble::mesh_detail

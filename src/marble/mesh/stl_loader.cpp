@@ -5,75 +5,19 @@
 //
 // STL stores every triangle's corners separately; identical positions (bit-exact) are welded into
 // one vertex so that smooth normals see the neighbours. Facet normals are ignored.
+#include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <vector>
 
+#include "marble/core/parallel_for.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/weld_corners.h"
 
 namespace marble::mesh_detail {
 namespace {
-
-// Welds bit-identical positions (with -0 == +0) into shared vertices.
-class Welder {
-public:
-  // Starts small (a closed mesh has about half as many vertices as triangles) and doubles as
-  // needed, keeping the load factor <= 1/2.
-  explicit Welder(size_t expectedVertices) {
-    size_t capacity = 16;
-    while (capacity < expectedVertices * 2) capacity *= 2;
-    slots_.assign(capacity, kEmpty);
-    mask_ = capacity - 1;
-  }
-
-  uint32_t add(glm::vec3 p, Mesh& mesh) {
-    if (p.x == 0.0f) p.x = 0.0f;  // -0 -> +0
-    if (p.y == 0.0f) p.y = 0.0f;
-    if (p.z == 0.0f) p.z = 0.0f;
-    const uint32_t bx = std::bit_cast<uint32_t>(p.x), by = std::bit_cast<uint32_t>(p.y), bz = std::bit_cast<uint32_t>(p.z);
-    size_t slot = hash(p) & mask_;
-    for (;;) {
-      uint32_t v = slots_[slot];
-      if (v == kEmpty) {
-        if (mesh.positions.size() * 2 >= slots_.size()) grow(mesh);
-        return insertNew(p, mesh);
-      }
-      const glm::vec3& q = mesh.positions[v];
-      if (std::bit_cast<uint32_t>(q.x) == bx && std::bit_cast<uint32_t>(q.y) == by && std::bit_cast<uint32_t>(q.z) == bz)
-        return v;
-      slot = (slot + 1) & mask_;
-    }
-  }
-
-private:
-  static constexpr uint32_t kEmpty = 0xFFFFFFFFu;
-
-  static size_t hash(const glm::vec3& p) {
-    const uint64_t bx = std::bit_cast<uint32_t>(p.x), by = std::bit_cast<uint32_t>(p.y), bz = std::bit_cast<uint32_t>(p.z);
-    uint64_t h = bx * 0x9E3779B97F4A7C15ull ^ by * 0xC2B2AE3D27D4EB4Full ^ bz * 0x165667B19E3779F9ull;
-    return static_cast<size_t>(h ^ (h >> 31));
-  }
-  size_t slotFor(const glm::vec3& p) const {
-    size_t slot = hash(p) & mask_;
-    while (slots_[slot] != kEmpty) slot = (slot + 1) & mask_;
-    return slot;
-  }
-  uint32_t insertNew(const glm::vec3& p, Mesh& mesh) {
-    const uint32_t index = static_cast<uint32_t>(mesh.positions.size());
-    mesh.positions.push_back(p);
-    slots_[slotFor(p)] = index;
-    return index;
-  }
-  void grow(const Mesh& mesh) {
-    slots_.assign(slots_.size() * 2, kEmpty);
-    mask_ = slots_.size() - 1;
-    for (uint32_t i = 0; i < mesh.positions.size(); ++i) slots_[slotFor(mesh.positions[i])] = i;
-  }
-
-  std::vector<uint32_t> slots_;
-  size_t mask_ = 0;
-};
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -107,6 +51,10 @@ Mesh loadBinary(const std::string& file, std::string_view data) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
   const uint32_t count = checkBinaryHeader(file, data, data.size());
   // Extra bytes after the last triangle are tolerated (some exporters pad).
+  // One pass, welding as it reads: the weld's table probes (cache misses) are the cost. Tried and
+  // dropped (1.6 M triangles, ≈ 125 ms of CPU): decoding on threads into an array first (+45 ms:
+  // the array's 57 MB of fresh pages), a table per thread over a split of the hash space (2.7x
+  // the CPU: two tables' misses), prefetching the slot of the corner 8 ahead (no gain).
   Mesh mesh;
   mesh.indices.reserve(3ull * count);
   Welder welder(count / 2);
@@ -114,21 +62,22 @@ Mesh loadBinary(const std::string& file, std::string_view data) {
     const unsigned char* tri = bytes + 84 + 50ull * t;
     for (int k = 0; k < 3; ++k) {
       const unsigned char* v = tri + 12 + 12 * k;
-      glm::vec3 p(loadFloatLE(v), loadFloatLE(v + 4), loadFloatLE(v + 8));
+      const glm::vec3 p(loadFloatLE(v), loadFloatLE(v + 4), loadFloatLE(v + 8));
       if (!finite(p))
         throw InputError(file, byteAt(static_cast<size_t>(v - bytes)),
                          "triangle " + std::to_string(t) + ": coordinate is NaN or infinite");
-      mesh.indices.push_back(welder.add(p, mesh));
+      mesh.indices.push_back(welder.add(p, mesh.positions));
     }
   }
   return mesh;
 }
 
-Mesh loadAscii(const std::string& file, std::string_view data) {
-  rejectBinary(file, data, "ASCII STL");
+// The ASCII grammar, for the whole file or one chunk of it. `sink.vertex(p, line)` returns the id a
+// loop refers to (the welded vertex, or a chunk's corner number); triangles are appended to
+// `indices` as fans of those ids. Throws InputError at the first problem.
+template <class Sink>
+void scanAscii(const std::string& file, std::string_view data, Sink& sink, std::vector<uint32_t>& indices) {
   TextCursor c{data.data(), data.data() + data.size(), 1};
-  Mesh mesh;
-  Welder welder(data.size() / 512);  // ~250 bytes of text per facet; grows if needed
   std::vector<uint32_t> loop;
   bool inLoop = false;
   size_t loopLine = 0;
@@ -147,9 +96,7 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
         if (!std::isfinite(x)) throw InputError(file, lineAt(c.line), "coordinate is NaN or infinite");
         p[k] = x;
       }
-      if (mesh.positions.size() >= kMaxVertices)
-        throw InputError(file, lineAt(c.line), "more than " + withThousands(kMaxVertices) + " vertices (the limit)");
-      loop.push_back(welder.add(p, mesh));
+      loop.push_back(sink.vertex(p, c.line));
     } else if (equalsIgnoreCase(tok, "outer")) {
       c.token();  // "loop"
       inLoop = true;
@@ -158,12 +105,12 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
     } else if (equalsIgnoreCase(tok, "endloop")) {
       if (loop.size() < 3)
         throw InputError(file, lineAt(loopLine), "loop has " + std::to_string(loop.size()) + " vertices; a facet needs 3");
-      if (mesh.indices.size() / 3 + loop.size() - 2 > kMaxTriangles)
+      if (indices.size() / 3 + loop.size() - 2 > kMaxTriangles)
         throw InputError(file, lineAt(c.line), "more than " + withThousands(kMaxTriangles) + " triangles (the limit)");
       for (size_t k = 1; k + 1 < loop.size(); ++k) {
-        mesh.indices.push_back(loop[0]);
-        mesh.indices.push_back(loop[k]);
-        mesh.indices.push_back(loop[k + 1]);
+        indices.push_back(loop[0]);
+        indices.push_back(loop[k]);
+        indices.push_back(loop[k + 1]);
       }
       inLoop = false;
     } else if (equalsIgnoreCase(tok, "solid") || equalsIgnoreCase(tok, "endsolid")) {
@@ -177,8 +124,111 @@ Mesh loadAscii(const std::string& file, std::string_view data) {
     }
   }
   if (inLoop) throw InputError(file, lineAt(loopLine), "file ends inside 'outer loop' (truncated)");
+}
+
+// The whole file in one pass, welding as it goes: the reference for every message.
+Mesh loadAsciiSequential(const std::string& file, std::string_view data) {
+  rejectBinary(file, data, "ASCII STL");
+  struct WeldingSink {
+    const std::string& file;
+    Mesh& mesh;
+    Welder welder;
+    uint32_t vertex(const glm::vec3& p, size_t line) {
+      if (mesh.positions.size() >= kMaxVertices)
+        throw InputError(file, lineAt(line), "more than " + withThousands(kMaxVertices) + " vertices (the limit)");
+      return welder.add(p, mesh.positions);
+    }
+  };
+  Mesh mesh;
+  WeldingSink sink{file, mesh, Welder(data.size() / 512)};  // ~250 bytes of text per facet; grows if needed
+  scanAscii(file, data, sink, mesh.indices);
   return mesh;
 }
+
+// Chunk boundaries at the starts of lines whose first word is "facet", near equal sizes (fewer
+// chunks when the file has few such lines).
+std::vector<std::string_view> facetChunks(std::string_view data, unsigned chunks) {
+  std::vector<std::string_view> parts;
+  size_t begin = 0;
+  for (unsigned i = 1; i <= chunks && begin < data.size(); ++i) {
+    size_t end = data.size();
+    for (size_t at = std::max(begin, data.size() * i / chunks); i < chunks && at < data.size();) {
+      const size_t nl = data.find('\n', at);
+      if (nl == std::string_view::npos) break;
+      size_t word = nl + 1;
+      while (word < data.size() && isSpace(data[word])) ++word;
+      if (data.size() - word > 5 && equalsIgnoreCase(data.substr(word, 5), "facet") && isSpace(data[word + 5])) {
+        end = nl + 1;
+        break;
+      }
+      at = nl + 1;
+    }
+    parts.push_back(data.substr(begin, end - begin));
+    begin = end;
+  }
+  return parts;
+}
+
+}  // namespace
+
+Mesh loadStlAsciiInChunks(const std::string& file, std::string_view data, unsigned chunks, bool* joined) {
+  if (joined) *joined = false;
+  rejectBinary(file, data, "ASCII STL");
+  const std::vector<std::string_view> parts = facetChunks(data, chunks);
+  if (parts.size() > 1) {
+    // Each chunk numbers its corners (every 'vertex') and refers to them; after the join the
+    // corners are welded in file order, which numbers the vertices as the one-pass welder does.
+    // A chunk with any problem (or that ends inside a loop), or a total that could pass a limit,
+    // sends the whole file through the one-pass scan for its message.
+    struct CornerSink {
+      std::vector<glm::vec3> corners;
+      uint32_t vertex(const glm::vec3& p, size_t) {
+        corners.push_back(p);
+        return static_cast<uint32_t>(corners.size() - 1);
+      }
+    };
+    std::vector<CornerSink> sinks(parts.size());
+    std::vector<std::vector<uint32_t>> indices(parts.size());
+    std::vector<char> ok(parts.size(), 0);
+    parallelFor(parts.size(), 1, [&](size_t first, size_t last) {
+      for (size_t i = first; i < last; ++i) {
+        try {
+          sinks[i].corners.reserve(parts[i].size() / 80);
+          scanAscii(file, parts[i], sinks[i], indices[i]);
+          ok[i] = 1;
+        } catch (const InputError&) {
+        }
+      }
+    });
+    size_t corners = 0, corners3 = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      corners += sinks[i].corners.size();
+      corners3 += indices[i].size();
+    }
+    if (std::find(ok.begin(), ok.end(), 0) == ok.end() && corners <= kMaxVertices && corners3 / 3 <= kMaxTriangles) {
+      std::vector<glm::vec3> soup;
+      soup.reserve(corners);
+      std::vector<uint32_t> cornerIndices;
+      cornerIndices.reserve(corners3);
+      for (size_t i = 0; i < parts.size(); ++i) {
+        const auto base = static_cast<uint32_t>(soup.size());
+        for (uint32_t id : indices[i]) cornerIndices.push_back(base + id);
+        soup.insert(soup.end(), sinks[i].corners.begin(), sinks[i].corners.end());
+        std::vector<glm::vec3>().swap(sinks[i].corners);
+      }
+      const WeldedCorners welded = weldCorners(soup);
+      Mesh mesh;
+      mesh.positions = welded.positions;
+      mesh.indices.resize(cornerIndices.size());
+      for (size_t k = 0; k < cornerIndices.size(); ++k) mesh.indices[k] = welded.indices[cornerIndices[k]];
+      if (joined) *joined = true;
+      return mesh;
+    }
+  }
+  return loadAsciiSequential(file, data);
+}
+
+namespace {
 
 bool startsWithSolid(std::string_view data) {
   size_t i = 0;
@@ -208,7 +258,11 @@ uint64_t stlBytesToRead(const std::string& file, std::string_view head, uint64_t
 }
 
 Mesh loadStl(const std::string& file, std::string_view data) {
-  return isAsciiStl(data.substr(0, kStlProbeBytes), data.size()) ? loadAscii(file, data) : loadBinary(file, data);
+  if (isAsciiStl(data.substr(0, kStlProbeBytes), data.size())) {
+    const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
+    return chunks > 1 ? loadStlAsciiInChunks(file, data, chunks) : loadAsciiSequential(file, data);
+  }
+  return loadBinary(file, data);
 }
 
 }  // namespace marble::mesh_detail

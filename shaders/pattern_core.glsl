@@ -416,8 +416,8 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   vec3 v1 = pat_cell_offset(h1, cx, by, bz, f);
   float d0 = pat_sq(v0);
   float d1 = pat_sq(v1);
-  // The first two cells sorted (a squared distance is at most 3 * 1.9^2, below the search's
-  // initial 1e9, so the second is always kept).
+  // The first two cells sorted: what inserting them into an empty pair (distances 1e9) gives,
+  // as a squared distance here is at most 3 * 1.9^2 and the second is always kept.
   PatCells c;
   bool swap = d1 < d0;
   c.f1 = swap ? d1 : d0;

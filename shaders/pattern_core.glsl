@@ -357,6 +357,37 @@ struct PatCells {
   float edge;  // twice the distance to the face between the two nearest cells (cell units)
 };
 
+// The two nearest of a Voronoi search so far, updated with one more cell (squared distance d,
+// hash h, offset v from the point to its feature point): strict `<`, so of equal distances the
+// earlier cell stays first.
+PatCells pat_cells_insert(PatCells c, float d, uint h, vec3 v) {
+  if (d < c.f1) {
+    c.f2 = c.f1;
+    c.h2 = c.h1;
+    c.v2 = c.v1;
+    c.f1 = d;
+    c.h1 = h;
+    c.v1 = v;
+  } else if (d < c.f2) {
+    c.f2 = d;
+    c.h2 = h;
+    c.v2 = v;
+  }
+  return c;
+}
+
+// The offset from the point (at f in its cell) to the feature point of the cell at offset
+// (ox, oy, oz) with hash h: three 10-bit jitters in [0.1, 0.9).
+vec3 pat_cell_offset(uint h, float ox, float oy, float oz, vec3 f) {
+  float jx = 0.1f + 0.8f * float(h & 1023u) * (1.0f / 1024.0f);
+  float jy = 0.1f + 0.8f * float((h >> 10u) & 1023u) * (1.0f / 1024.0f);
+  float jz = 0.1f + 0.8f * float((h >> 20u) & 1023u) * (1.0f / 1024.0f);
+  return vec3(ox + jx - f.x, oy + jy - f.y, oz + jz - f.z);
+}
+
+// |v|^2 summed in the search's order.
+float pat_sq(vec3 v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
+
 // 3D Voronoi F1/F2 at p (cell units), feature points from the cell hash; `salt` picks the family.
 PatCells pat_voronoi(vec3 p, uint salt) {
   vec3 i = floor(p);
@@ -365,41 +396,54 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   float bx = f.x < 0.5f ? -1.0f : 0.0f;
   float by = f.y < 0.5f ? -1.0f : 0.0f;
   float bz = f.z < 0.5f ? -1.0f : 0.0f;
+  float cx = bx + 1.0f;
+  float cy = by + 1.0f;
+  float cz = bz + 1.0f;
+  // A cell's hash is lowbias32 of x*K1 + y*K2 + z*K3 + salt over its integer coordinates
+  // (offset by 2^20 so negative cells hash as distinct uints): the sum mod 2^32 is computed
+  // from one product per axis, the block's upper cell adding K (the coordinates are integers
+  // below 2^24, exact in float, so this is the per-cell product's value).
+  uint x0 = uint(i.x + bx + 1048576.0f) * 0x8da6b343u;
+  uint x1 = x0 + 0x8da6b343u;
+  uint y0 = uint(i.y + by + 1048576.0f) * 0xd8163841u;
+  uint y1 = y0 + 0xd8163841u;
+  uint z0 = uint(i.z + bz + 1048576.0f) * 0xcb1ab31fu + salt;
+  uint z1 = z0 + 0xcb1ab31fu;
+  // The eight cells in the order x fastest, then y, then z (which of equal distances wins).
+  uint h0 = pat_hash(x0 + y0 + z0);
+  vec3 v0 = pat_cell_offset(h0, bx, by, bz, f);
+  uint h1 = pat_hash(x1 + y0 + z0);
+  vec3 v1 = pat_cell_offset(h1, cx, by, bz, f);
+  float d0 = pat_sq(v0);
+  float d1 = pat_sq(v1);
+  // The first two cells sorted: what inserting them into an empty pair (distances 1e9) gives,
+  // as a squared distance here is at most 3 * 1.9^2 and the second is always kept.
   PatCells c;
-  c.f1 = 1e9f;
-  c.f2 = 1e9f;
-  c.h1 = 0u;
-  c.h2 = 0u;
-  c.v1 = vec3(0.0f);
-  c.v2 = vec3(0.0f);
-  for (int k = 0; k < 8; ++k) {
-    float ox = bx + float(k & 1);
-    float oy = by + float((k >> 1) & 1);
-    float oz = bz + float((k >> 2) & 1);
-    // Integer cell coordinates (offset by 2^20 so negative cells hash as distinct uints).
-    uint h = pat_hash(uint(i.x + ox + 1048576.0f) * 0x8da6b343u + uint(i.y + oy + 1048576.0f) * 0xd8163841u +
-                      uint(i.z + oz + 1048576.0f) * 0xcb1ab31fu + salt);
-    // Three 10-bit jitters in [0.1, 0.9).
-    float jx = 0.1f + 0.8f * float(h & 1023u) * (1.0f / 1024.0f);
-    float jy = 0.1f + 0.8f * float((h >> 10u) & 1023u) * (1.0f / 1024.0f);
-    float jz = 0.1f + 0.8f * float((h >> 20u) & 1023u) * (1.0f / 1024.0f);
-    float dx = ox + jx - f.x;
-    float dy = oy + jy - f.y;
-    float dz = oz + jz - f.z;
-    float d = dx * dx + dy * dy + dz * dz;
-    if (d < c.f1) {
-      c.f2 = c.f1;
-      c.h2 = c.h1;
-      c.v2 = c.v1;
-      c.f1 = d;
-      c.h1 = h;
-      c.v1 = vec3(dx, dy, dz);
-    } else if (d < c.f2) {
-      c.f2 = d;
-      c.h2 = h;
-      c.v2 = vec3(dx, dy, dz);
-    }
-  }
+  bool swap = d1 < d0;
+  c.f1 = swap ? d1 : d0;
+  c.h1 = swap ? h1 : h0;
+  c.v1 = swap ? v1 : v0;
+  c.f2 = swap ? d0 : d1;
+  c.h2 = swap ? h0 : h1;
+  c.v2 = swap ? v0 : v1;
+  uint h = pat_hash(x0 + y1 + z0);
+  vec3 v = pat_cell_offset(h, bx, cy, bz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
+  h = pat_hash(x1 + y1 + z0);
+  v = pat_cell_offset(h, cx, cy, bz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
+  h = pat_hash(x0 + y0 + z1);
+  v = pat_cell_offset(h, bx, by, cz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
+  h = pat_hash(x1 + y0 + z1);
+  v = pat_cell_offset(h, cx, by, cz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
+  h = pat_hash(x0 + y1 + z1);
+  v = pat_cell_offset(h, bx, cy, cz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
+  h = pat_hash(x1 + y1 + z1);
+  v = pat_cell_offset(h, cx, cy, cz, f);
+  c = pat_cells_insert(c, pat_sq(v), h, v);
   // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
   // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
   vec3 dv = c.v2 - c.v1;
@@ -408,6 +452,7 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   c.f2 = sqrt(c.f2);
   return c;
 }
+
 
 // 1 at the heart of a vein of full width w (object units) at e = twice the distance to its
 // crack (PatCells.edge, in object units), 0 outside, a smooth edge of relative width `soft`.

@@ -71,6 +71,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   const GLuint textures[] = {in.albedo,     in.normal,         in.depth,       in.lightDistance,
                              in.lightDepth, in.bouncePosition, in.bounceNormal};
   glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 7, textures);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, in.bounce);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));
@@ -86,6 +87,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_dipole_zr_mm", dipole.zr_mm);
   p.set("u_dipole_zv_mm", dipole.zv_mm);
   p.set("u_scale", marble ? enteringScale_ : 1);
+  p.set("u_bounce_scale", in.bounceScale);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();

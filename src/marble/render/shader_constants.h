@@ -31,8 +31,9 @@
   X(UNIT_LIGHTING_DEPTH, 2)                                                                             \
   X(UNIT_LIGHTING_LIGHT_DISTANCE, 3)                                                                    \
   X(UNIT_LIGHTING_LIGHT_SHADOW, 4)                                                                      \
-  X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, included by lighting.frag.glsl */                \
+  X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl: bounce_gather.frag.glsl, lighting.frag.glsl */        \
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
+  X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \
   X(UNIT_POST_BLURRED, 2)                                                                               \

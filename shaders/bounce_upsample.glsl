@@ -1,30 +1,35 @@
 // The lighting pass's bounce (`marble`): the bounce pass's coarse samples (bounce_gather.frag.glsl,
-// one per BOUNCE_SCALE x BOUNCE_SCALE lighting texels) brought to a lighting texel, weighted as a
-// bilateral upsample: bilinear in the coarse grid, times how well each sample's surface continues
-// the texel's own (both read from the G-buffer):
+// one per 4 x 4 lighting texels) brought to a lighting texel, weighted as a bilateral upsample:
+// bilinear in the coarse grid, times how well each sample's surface continues the texel's own
+// (both read from the G-buffer):
 //   - its normal: max(N.Ns, 0)^8 (1 for equal normals, 0.5 at 24 degrees, 0.1 at 45);
 //   - its distance from the texel's tangent plane against its distance from the texel: on one
 //     smooth surface a neighbour a few pixels away lies within a few degrees of the plane; across
-//     a depth step (one part in front of another) it lies far off it. Weight 1 - angle / 0.3 rad,
-//     clamped, the angle taken as |N.(Ps - P)| / |Ps - P|.
+//     a depth step it mostly does not. Weight 1 - angle / 0.3 rad, clamped, the angle taken as
+//     |N.(Ps - P)| / |Ps - P|;
+//   - its distance against how far one surface can reach over the pixels between them (a pixel's
+//     width at P over the cosine to the view, at most 1/0.2): 1 up to that, 0 from twice that. At
+//     grazing normals (a tube's edge in front of another part) the plane test alone lets the part
+//     behind through: the marble golden's knot showed 123-level errors along such edges.
 // Where the weights sum to less than BOUNCE_MIN_WEIGHT (no coarse sample around lies on this
-// surface: a part thinner than the coarse grid, a silhouette) the best-matching of the four is
-// taken whatever its bilinear weight, and none (0) where none faces the texel's way.
+// surface: a part thinner than the coarse grid) the best-matching of the four is taken whatever
+// its bilinear weight, and where none matches at all, the mean of the four (a part's neighbour's
+// bounce: better than none, which left dark specks along the marble golden's knot where one tube
+// crosses in front of another). Gathering in place there instead (bounce_gather) cost the dragon's
+// light frames ~8-10 ms on llvmpipe even where it ran for a few pixels (its shader evaluates a
+// branch under a lane mask): not kept.
 // Error (docs/quality.md, "One bounce gathered coarsely"): against the gather at every lighting
-// texel, relative RMSE 0.05 and SSIM 0.985 on the dragon lit from the side at 800² (SSIM within
+// texel, relative RMSE 0.05 and SSIM 0.98 on the dragon lit from the side at 800² (SSIM within
 // 0.003 of it against Cycles in the ten reference scenes): the bounce's finest emitters (1/32 of
 // the light map's width, ~15 pixels on an object filling 500) are a little finer than the coarse
 // grid, so it comes out a little smoother.
 // Needs from the includer: u_depth, u_normal (the G-buffer's), gbuffer.glsl, deferred_common.glsl.
-
-#include "bounce.glsl"
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;
 uniform int u_bounce_scale;     // full-resolution pixels per texel of the bounce pass
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
 
 const float BOUNCE_MIN_WEIGHT = 0.05;
-const float BOUNCE_MIN_MATCH = 0.05;
 
 // Irradiance / PI that one bounce brings to the surface at full-resolution pixel px (point P,
 // normal N), before P's own albedo and entry.
@@ -39,13 +44,15 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   vec2 uv = (vec2(px) + 0.5) / vec2(fullSize);
   float pixel = length(surface_point(uv + vec2(1.0 / float(fullSize.x), 0.0), texelFetch(u_depth, px, 0).r) - P);
   float reach = pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
-  vec3 sum = vec3(0.0), best = vec3(0.0);
-  float weight = 0.0, bestMatch = 0.0;
+  vec3 sum = vec3(0.0), best = vec3(0.0), any = vec3(0.0);
+  float weight = 0.0, bestMatch = 0.0, anyCount = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 ic = min(i0 + c, last);
     vec4 b = texelFetch(u_bounce, ic, 0);
     if (b.a <= 0.0) continue;  // the background
+    any += b.rgb;
+    anyCount += 1.0;
     ivec2 ps = ic * u_bounce_scale;
     vec3 Ps = surface_point((vec2(ps) + 0.5) / vec2(fullSize), texelFetch(u_depth, ps, 0).r);
     vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
@@ -67,5 +74,5 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
     }
   }
   if (weight >= BOUNCE_MIN_WEIGHT) return u_pat_base_color * sum / weight;
-  return u_pat_base_color * (bestMatch >= BOUNCE_MIN_MATCH ? best : bounce_gather(P, N));
+  return u_pat_base_color * (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
 }

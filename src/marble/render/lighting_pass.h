@@ -15,7 +15,6 @@ namespace marble {
 
 struct LightingInputs {
   GLuint albedo, normal, depth, lightDistance, lightDepth;
-  GLuint bouncePosition, bounceNormal;  // the reflective shadow map: the upsample gathers where it finds no sample
   GLuint bounce;    // `marble`: the bounce pass's gather (BouncePass)
   int bounceScale;  // and its full-resolution pixels per texel
 };

@@ -254,8 +254,6 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
                             passes_->geometry.depthTexture(),
                             passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture(),
-                            passes_->lightDepth.bouncePositionTexture(),
-                            passes_->lightDepth.bounceNormalTexture(),
                             passes_->bounce.bounceTexture(),
                             passes_->bounce.scale()};
     // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still

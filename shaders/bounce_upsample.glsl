@@ -10,14 +10,15 @@
 //   - its distance against how far one surface can reach over the pixels between them (a pixel's
 //     width at P over the cosine to the view, at most 1/0.2): 1 up to that, 0 from twice that. At
 //     grazing normals (a tube's edge in front of another part) the plane test alone lets the part
-//     behind through: the marble golden's knot showed 123-level errors along such edges.
+//     behind through.
 // Where the weights sum to less than BOUNCE_MIN_WEIGHT (no coarse sample around lies on this
 // surface: a part thinner than the coarse grid) the best-matching of the four is taken whatever
-// its bilinear weight, and where none matches at all, the mean of the four (a part's neighbour's
-// bounce: better than none, which left dark specks along the marble golden's knot where one tube
-// crosses in front of another). Gathering in place there instead (bounce_gather) cost the dragon's
-// light frames ~8-10 ms on llvmpipe even where it ran for a few pixels (its shader evaluates a
-// branch under a lane mask): not kept.
+// its bilinear weight, and where none matches at all, the mean of the four (a neighbour's bounce,
+// rather than none). Such a part, in front of another, takes a wrong bounce: the marble golden's
+// knot (a 12-pixel tube at 160²) is darker by up to 123 levels in a few pixels along the edges
+// where one tube crosses another (docs/quality.md). Gathering in place there instead
+// (bounce_gather) cost the dragon's light frames ~8-10 ms on llvmpipe even where it ran for a few
+// pixels (its shader evaluates a branch under a lane mask): not kept.
 // Error (docs/quality.md, "One bounce gathered coarsely"): against the gather at every lighting
 // texel, relative RMSE 0.05 and SSIM 0.98 on the dragon lit from the side at 800² (SSIM within
 // 0.003 of it against Cycles in the ten reference scenes): the bounce's finest emitters (1/32 of

@@ -13,8 +13,8 @@
 //   between two parts that cannot see each other; the cosines already drop every emitter behind
 //   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
 //   receives none;
-// - the emitter's albedo is the stone's base colour (u_pat_base_color), not the pattern at the
-//   emitter: the veins vary at the millimetre scale the bounce averages over;
+// - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
+//   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce only (Cycles follows every bounce: ~albedo^2 more on deep creases, ~0.7 of the
 //   first bounce's again for albedo 0.85 where the bounce is large);
 // - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
@@ -24,12 +24,13 @@
 //   stands for: the disk is covered without gaps, finely near the point (where the emitters that
 //   matter most are; D&S 2005 also sample densest there) and coarsely far away. The same pattern
 //   for every pixel, so the error is a smooth bias, not noise.
+// Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
+// pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_irradiance, light_distance_of,
 // u_light_view_proj) and PI.
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
 
 const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
@@ -57,8 +58,10 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   return light_irradiance(light_distance_of(xp)) * (A * cosP * cosX / (r2 * (PI * r2 + A)));
 }
 
-// Irradiance / PI that one bounce brings to P (normal N), before P's own albedo and entry.
-vec3 marble_bounce(vec3 P, vec3 N) {
+// Irradiance / PI that one bounce brings to P (normal N), before P's own albedo and entry, and
+// before the emitters' albedo (the base colour, which the lighting pass applies: the gather
+// then reads no material parameter, and a colour change re-runs only the lighting pass).
+vec3 bounce_gather(vec3 P, vec3 N) {
   vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
   float size = float(textureSize(u_bounce_position, 0).x);
@@ -77,5 +80,5 @@ vec3 marble_bounce(vec3 P, vec3 N) {
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light
   // (the environment's 41/42, marble_light.glsl) and the pass stores irradiance / PI.
-  return u_pat_base_color * sum * (41.0 / 42.0) / PI;
+  return sum * (41.0 / 42.0) / PI;
 }

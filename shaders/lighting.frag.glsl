@@ -68,7 +68,7 @@ float thickness_at(vec3 p) {
 #include "marble_shading.glsl"
 #include "environment.glsl"
 #include "marble_light.glsl"
-#include "bounce.glsl"
+#include "bounce_upsample.glsl"
 
 // The thickness the transmission uses: as thickness_at(), but the light's distance map is
 // interpolated bilinearly between the four texels around p instead of read at the nearest one.
@@ -123,12 +123,12 @@ vec3 slab_transport(float s_mm) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L) {
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  // Light bounced off the object's other lit parts (bounce.glsl).
-  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N);
+  // Light bounced off the object's other lit parts (bounce.glsl, gathered by the bounce pass).
+  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N, px);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
@@ -187,7 +187,7 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L), linear_depth(depth, u_camera_near_far));
+    o_diffuse = vec4(marble_entering(P, N, V, L, px), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

@@ -62,13 +62,15 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
 TEST(CliBench, MotionsRunThePassesTheyChange) {
   struct Case {
     const char* motion;
-    int lightDepth, geometry, pattern, lighting, blurDepth, storedDiffuse;
+    int lightDepth, geometry, pattern, lighting, blurDepth, storedDiffuse, bounce;
   };
   // `marble` evaluates the pattern in the post pass (no albedo pass), and reuses the stored
-  // diffuse part when neither the light nor the albedo changed.
-  for (const Case& c : {Case{"none", 0, 0, 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3, 3, 0}, Case{"light", 3, 0, 0, 3, 0, 0},
-                        Case{"both", 3, 3, 3, 3, 3, 0}, Case{"params", 0, 0, 0, 0, 0, 3},
-                        Case{"scattering", 0, 0, 0, 3, 0, 0}, Case{"pattern", 0, 0, 3, 0, 0, 0}}) {
+  // diffuse part when neither the light nor the albedo changed. The bounce follows the view and
+  // the light, never the material.
+  for (const Case& c : {Case{"none", 0, 0, 0, 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3, 3, 0, 3},
+                        Case{"light", 3, 0, 0, 3, 0, 0, 3}, Case{"both", 3, 3, 3, 3, 3, 0, 3},
+                        Case{"params", 0, 0, 0, 0, 0, 3, 0}, Case{"scattering", 0, 0, 0, 3, 0, 0, 0},
+                        Case{"pattern", 0, 0, 3, 0, 0, 0, 0}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;
     EXPECT_EQ(j.value("motion", ""), c.motion);
@@ -79,6 +81,7 @@ TEST(CliBench, MotionsRunThePassesTheyChange) {
     EXPECT_EQ(j["post_diffuse_sources"].value("stored", -1), c.storedDiffuse) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("lighting", -1), c.lighting) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("blur_depth", -1), c.blurDepth) << c.motion << ": the blur's depth follows the view only";
+    EXPECT_EQ(j["pass_runs"].value("bounce", -1), c.bounce) << c.motion;
     EXPECT_EQ(j["pass_runs"].value("post", -1), std::string(c.motion) == "none" ? 0 : 3)
         << c.motion << ": an unchanged frame draws nothing";
     if (c.geometry == 0) {

@@ -69,11 +69,11 @@ TEST(PassList, TheFrameHasThePassesItsSettingsAskFor) {
     return list;
   };
   Scene s = sceneIn(RenderMode::Marble);
-  EXPECT_EQ(inFrame(s), "light_depth geometry blur_depth lighting subsurface_blur post fxaa");
+  EXPECT_EQ(inFrame(s), "light_depth geometry blur_depth bounce lighting subsurface_blur post fxaa");
   s.render.subsurface_resolution = SubsurfaceResolution::Full;
   s.render.antialias = Antialias::None;
   s.render.backdrop = true;
-  EXPECT_EQ(inFrame(s), "light_depth geometry lighting subsurface_blur post stage");
+  EXPECT_EQ(inFrame(s), "light_depth geometry bounce lighting subsurface_blur post stage");
   EXPECT_EQ(inFrame(sceneIn(RenderMode::Paper)), "light_depth geometry albedo lighting post fxaa");
   EXPECT_EQ(inFrame(sceneIn(RenderMode::Normal)), "light_depth geometry lighting post fxaa");
   EXPECT_EQ(inFrame(sceneIn(RenderMode::Floor)), "floor");
@@ -81,6 +81,26 @@ TEST(PassList, TheFrameHasThePassesItsSettingsAskFor) {
   EXPECT_NE(passReads(Pass::Lighting, sceneIn(RenderMode::Paper)) & passBit(Pass::Albedo), 0u);
   EXPECT_EQ(passReads(Pass::Lighting, sceneIn(RenderMode::Marble)) & passBit(Pass::Albedo), 0u);
   EXPECT_NE(passReads(Pass::Lighting, sceneIn(RenderMode::Marble)) & passBit(Pass::BlurDepth), 0u);
+  // `marble`'s bounce: gathered from the light's map for the G-buffer's points, upsampled by the lighting.
+  EXPECT_EQ(passReads(Pass::Bounce, sceneIn(RenderMode::Marble)), passBit(Pass::LightDepth) | passBit(Pass::Geometry));
+  EXPECT_NE(passReads(Pass::Lighting, sceneIn(RenderMode::Marble)) & passBit(Pass::Bounce), 0u);
+  EXPECT_EQ(passReads(Pass::Lighting, sceneIn(RenderMode::Paper)) & passBit(Pass::Bounce), 0u);
+}
+
+// The bounce's emitters have the stone's base colour, which the lighting pass applies: `marble`'s
+// lighting reads the base colour and not the rest of the ramp (a vein colour must not re-run it,
+// nor the blur after it), and the bounce pass reads no material parameter at all.
+TEST(PassList, MarbleLightingReadsTheBaseColourAloneOfTheColours) {
+  const GroupSet lighting = passGroups(Pass::Lighting, RenderMode::Marble);
+  EXPECT_NE(lighting & groupBit(ParamGroup::BaseColour), 0u);
+  EXPECT_EQ(lighting & groupBit(ParamGroup::Colour), 0u);
+  EXPECT_EQ(passGroups(Pass::Bounce, RenderMode::Marble), 0u);
+  EXPECT_NE(passGroups(Pass::Post, RenderMode::Marble) & groupBit(ParamGroup::Colour), 0u) << "the pattern's ramp";
+  // And the base colour is alone in its group: the groups are what the cache compares.
+  int inGroup = 0;
+  for (const ParamDesc& p : materialParams()) inGroup += p.group == ParamGroup::BaseColour ? 1 : 0;
+  EXPECT_EQ(inGroup, 1);
+  EXPECT_EQ(findParam("base_color")->group, ParamGroup::BaseColour);
 }
 
 TEST(PassList, TheTooltipSaysWhatMakesAPassReRun) {

@@ -121,11 +121,11 @@ TEST_F(PassFixture, PatternChangeReRunsOnlyThePatternAndMatchesAFreshRender) {
   EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
 }
 
-// The colours are another matter since the bounce (shaders/bounce.glsl): the light bounced inside
-// the object comes off the stone with its base colour, so the lighting pass reads the colour group
-// (the cache compares whole groups: a vein colour re-runs it too), and the frame still equals a
-// fresh one.
-TEST_F(PassFixture, ColourChangeReRunsTheLightingAndMatchesAFreshRender) {
+// The base colour is another matter since the bounce (shaders/bounce.glsl): the light bounced
+// inside the object comes off the stone with its base colour, which the lighting pass applies to
+// the bounce pass's gather; so a base colour re-runs the lighting (not the gather), and the frame
+// still equals a fresh one.
+TEST_F(PassFixture, BaseColourChangeReRunsTheLightingNotTheBounceAndMatchesAFreshRender) {
   renderer.setMesh(builtinMesh("sphere"));
   Scene s = marbleScene("sphere", 64);
   renderImage(renderer, s);
@@ -134,7 +134,26 @@ TEST_F(PassFixture, ColourChangeReRunsTheLightingAndMatchesAFreshRender) {
   const PassTimes t = renderer.passTimes(true);
   EXPECT_FALSE(t.ran[Pass::Geometry]);
   EXPECT_FALSE(t.ran[Pass::LightDepth]);
+  EXPECT_FALSE(t.ran[Pass::Bounce]) << "the gather reads no material parameter";
   EXPECT_TRUE(t.ran[Pass::Lighting]) << "the bounce's emitters have the base colour";
+  EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
+}
+
+// The rest of the ramp (vein colours, sharpness) is the pattern's alone: in `marble` it re-runs
+// neither the lighting nor the blur (it did while the lighting read the whole colour group for
+// the bounce's base colour), and the frame still equals a fresh one.
+TEST_F(PassFixture, VeinColourChangeReRunsNeitherTheLightingNorTheBlur) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 64);
+  renderImage(renderer, s);
+  s.material.vein_color = glm::vec3(0.1f, 0.3f, 0.6f);
+  s.material.vein2_color = glm::vec3(0.2f, 0.2f, 0.5f);
+  const ImageRGBA8 cached = renderImage(renderer, s);
+  const PassTimes t = renderer.passTimes(true);
+  EXPECT_FALSE(t.ran[Pass::Lighting]);
+  EXPECT_FALSE(t.ran[Pass::SubsurfaceBlur]);
+  EXPECT_FALSE(t.ran[Pass::Bounce]);
+  EXPECT_EQ(t.diffuseSource, static_cast<int>(DiffuseSource::Pattern)) << "the pattern is evaluated anew";
   EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
 }
 

@@ -32,11 +32,13 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // RG: the distance, and the cosine at which the light enters there (light_depth.frag.glsl).
       distance_(gl::makeTexture2D(GL_RG32F, size, size, GL_NEAREST)),
       depth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_LINEAR)),
-      // The reflective shadow map at a quarter of the size, in a draw of its own: the bounce reads
-      // no level finer than 32 of the full map's texels (bounce.glsl), and its mipmaps then cost a
-      // sixteenth (docs/performance.md). 32-bit: w is a texel's area, ~1e-5 scene units^2, below
-      // half float's normal range.
-      bounceSize_(std::max(size / 4, 1)),
+      // The reflective shadow map at an eighth of the size, in a draw of its own: the bounce's
+      // finest read (its centre sample, a disk of 1/32 of the map's width, bounce.glsl) is level 3
+      // here, level 4 of session 7's 256² map: texels 64 of the full map's wide either way, so the
+      // levels it reads are the same to within how the rasterizer covers a texel, and the draw
+      // and its mipmaps cost less (docs/performance.md, "The bounce gathered coarsely"). 32-bit:
+      // w is a texel's area, ~1e-5 scene units^2, below half float's normal range.
+      bounceSize_(std::max(size / 8, 1)),
       bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceNormal_(makeMipmapped(GL_RGBA16F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),

@@ -1,7 +1,7 @@
 #pragma once
 // Pass 1: the mesh seen from the light into a map of world-space distances (R32F) with its
 // own depth buffer. Read by the lighting pass for thickness and shadows; beside it a reflective
-// shadow map with mipmaps at a quarter of the size, drawn separately (light_depth.frag.glsl), for the
+// shadow map with mipmaps at an eighth of the size, drawn separately (light_depth.frag.glsl), for the
 // `marble` mode's diffuse bounce.
 #include "marble/gl/program.h"
 #include "marble/render/gpu_mesh.h"

@@ -68,9 +68,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     scissorTo(scaledDown(rect, enteringScale_));
   else if (!wholeFrame)
     scissorTo(rect);
-  const GLuint textures[] = {in.albedo,     in.normal,         in.depth,       in.lightDistance,
-                             in.lightDepth, in.bouncePosition, in.bounceNormal};
-  glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 7, textures);
+  const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
+  glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 5, textures);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, in.bounce);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));
@@ -86,6 +86,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_slab_tau_max", slab.tauMax);
   p.set("u_slab_sigma_t_mm", slab.sigmaTMm);
   p.set("u_scale", marble ? enteringScale_ : 1);
+  p.set("u_bounce_scale", in.bounceScale);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();

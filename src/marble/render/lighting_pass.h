@@ -14,7 +14,9 @@
 namespace marble {
 
 struct LightingInputs {
-  GLuint albedo, normal, depth, lightDistance, lightDepth, bouncePosition, bounceNormal;
+  GLuint albedo, normal, depth, lightDistance, lightDepth;
+  GLuint bounce;    // `marble`: the bounce pass's gather (BouncePass)
+  int bounceScale;  // and its full-resolution pixels per texel
 };
 
 class LightingPass {

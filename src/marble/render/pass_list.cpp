@@ -24,12 +24,18 @@ constexpr PassDecl kPasses[] = {
     {Pass::BlurDepth, "blur_depth", "blur depth",
      "The depth at the blur's half resolution, so that the lighting and the blur shade only the object.",
      in(I::FrameSize) | in(I::SubsurfaceResolution), 0, 0, of(Pass::Geometry), false},
+    {Pass::Bounce, "bounce", "bounce",
+     "Marble mode: light bounced inside the object (from the light's reflective shadow map), gathered at a quarter "
+     "of the lighting pass's texels; the lighting pass upsamples it.",
+     in(I::Light) | in(I::LightMatrices) | in(I::CameraMatrices) | in(I::FrameSize) | in(I::SubsurfaceResolution), 0,
+     0, of(Pass::LightDepth) | of(Pass::Geometry), false},
     {Pass::Lighting, "lighting", "lighting",
      "Screen-space shading of the object's pixels; marble mode: the light entering the stone, at the blur's "
      "resolution.",
      in(I::Light) | in(I::LightMatrices) | in(I::Camera) | in(I::CameraMatrices) | in(I::Mode) | in(I::Environment) |
          in(I::EnvironmentMap) | in(I::SubsurfaceResolution) | in(I::ObjectSize),
-     kLightingPassBit, 0, of(Pass::LightDepth) | of(Pass::Geometry) | of(Pass::Albedo) | of(Pass::BlurDepth), false},
+     kLightingPassBit, 0,
+     of(Pass::LightDepth) | of(Pass::Geometry) | of(Pass::Albedo) | of(Pass::BlurDepth) | of(Pass::Bounce), false},
     {Pass::SubsurfaceBlur, "subsurface_blur", "subsurface blur",
      "Screen-space diffusion of the light under the surface (marble mode; half or full resolution).",
      in(I::Camera) | in(I::CameraMatrices) | in(I::SubsurfaceResolution) | in(I::ObjectSize), kBlurPassBit, 0,
@@ -88,6 +94,7 @@ bool passInFrame(Pass p, const Scene& scene) {
   switch (p) {
     case Pass::Albedo: return !marble && modeShowsAlbedo(r.mode);
     case Pass::BlurDepth: return marble && r.subsurface_resolution == SubsurfaceResolution::Half;
+    case Pass::Bounce: return marble;
     case Pass::SubsurfaceBlur: return marble;
     case Pass::Stage: return sceneHasStage(scene);
     case Pass::Fxaa: return r.antialias == Antialias::Fxaa;

@@ -21,6 +21,7 @@ enum class Pass : uint8_t {
   Geometry,        // the G-buffer: the mesh from the camera
   Albedo,          // the pattern per pixel (not `marble`: its post pass evaluates it)
   BlurDepth,       // `marble` at half resolution: the depth at the blur's resolution
+  Bounce,          // `marble`: the one diffuse bounce, gathered at a quarter of the lighting's texels
   Lighting,        // the mode's picture, or `marble`'s light entering the stone
   SubsurfaceBlur,  // `marble`: diffusion of that light
   Post,            // composition, tone mapping
@@ -28,7 +29,7 @@ enum class Pass : uint8_t {
   Fxaa,            // antialiasing into the target
   Floor,           // `floor`: the whole frame
 };
-inline constexpr size_t kPassCount = 10;
+inline constexpr size_t kPassCount = 11;
 
 using PassSet = uint32_t;  // bit 1 << Pass
 constexpr PassSet passBit(Pass p) { return 1u << static_cast<unsigned>(p); }

@@ -12,11 +12,12 @@ namespace marble {
 
 struct Renderer::Passes {
   explicit Passes(const ShaderLibrary& s)
-      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), lighting(s), blur(s), post(s), floor(s), fxaa(s), stage(s) {}
+      : lightDepth(s), geometry(s), albedo(s), blurDepth(s), bounce(s), lighting(s), blur(s), post(s), floor(s), fxaa(s), stage(s) {}
   LightDepthPass lightDepth;
   GeometryPass geometry;
   AlbedoPass albedo;
   BlurDepthPass blurDepth;
+  BouncePass bounce;
   LightingPass lighting;
   SubsurfaceBlurPass blur;
   PostPass post;
@@ -238,12 +239,27 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
       ran(Pass::BlurDepth);
     }
   }
+  if (marble) {
+    passes_->bounce.resize(width, height, scale);
+    if (stale(Pass::Bounce)) {
+      passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
+                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture()},
+                          camera, light, scene.light, lightTexelWorld, rect);
+      ran(Pass::Bounce);
+    }
+  }
   if (stale(Pass::Lighting)) {
-    const LightingInputs in{passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
-                            passes_->geometry.depthTexture(), passes_->lightDepth.distanceTexture(),
-                            passes_->lightDepth.depthTexture(), passes_->lightDepth.bouncePositionTexture(),
-                            passes_->lightDepth.bounceNormalTexture()};
-    passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(), passes_->blurDepth.depthTexture());
+    const LightingInputs in{passes_->albedo.albedoTexture(),
+                            passes_->geometry.normalTexture(),
+                            passes_->geometry.depthTexture(),
+                            passes_->lightDepth.distanceTexture(),
+                            passes_->lightDepth.depthTexture(),
+                            passes_->bounce.bounceTexture(),
+                            passes_->bounce.scale()};
+    // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still
+    // name the G-buffer depth of an earlier frame size, deleted since (0 detaches).
+    passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(),
+                             marble ? passes_->blurDepth.depthTexture() : 0);
     passes_->lighting.run(in, camera, light, scene.light, scene.material, scene, lightTexelWorld, rect, environment());
     ran(Pass::Lighting);
   }
@@ -337,6 +353,7 @@ PassTimer& Renderer::timerOf(Pass p) {
     case Pass::Geometry: return passes_->geometry.timer();
     case Pass::Albedo: return passes_->albedo.timer();
     case Pass::BlurDepth: return passes_->blurDepth.timer();
+    case Pass::Bounce: return passes_->bounce.timer();
     case Pass::Lighting: return passes_->lighting.timer();
     case Pass::SubsurfaceBlur: return passes_->blur.timer();
     case Pass::Post: return passes_->post.timer();
@@ -357,7 +374,7 @@ PassTimes Renderer::passTimes(bool wait) {
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
-         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
+         passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
          (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
 }

@@ -11,6 +11,7 @@
 #include "marble/mesh/background_simplify.h"
 #include "marble/render/albedo_pass.h"
 #include "marble/render/blur_depth_pass.h"
+#include "marble/render/bounce_pass.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/floor_pass.h"
 #include "marble/render/fxaa_pass.h"

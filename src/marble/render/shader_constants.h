@@ -31,8 +31,9 @@
   X(UNIT_LIGHTING_DEPTH, 2)                                                                             \
   X(UNIT_LIGHTING_LIGHT_DISTANCE, 3)                                                                    \
   X(UNIT_LIGHTING_LIGHT_SHADOW, 4)                                                                      \
-  X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, included by lighting.frag.glsl */                \
+  X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, in bounce_gather.frag.glsl (its units 1, 2 above) */  \
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
+  X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \
   X(UNIT_POST_BLURRED, 2)                                                                               \
@@ -54,9 +55,7 @@ enum : int { MARBLE_SHADER_CONSTANTS(MARBLE_SHADER_CONSTANT_ENUM) };
 static_assert(UNIT_ALBEDO_NORMAL == UNIT_ALBEDO_DEPTH + 1);
 static_assert(UNIT_LIGHTING_NORMAL == UNIT_LIGHTING_ALBEDO + 1 && UNIT_LIGHTING_DEPTH == UNIT_LIGHTING_ALBEDO + 2 &&
               UNIT_LIGHTING_LIGHT_DISTANCE == UNIT_LIGHTING_ALBEDO + 3 &&
-              UNIT_LIGHTING_LIGHT_SHADOW == UNIT_LIGHTING_ALBEDO + 4 &&
-              UNIT_LIGHTING_BOUNCE_POSITION == UNIT_LIGHTING_ALBEDO + 5 &&
-              UNIT_LIGHTING_BOUNCE_NORMAL == UNIT_LIGHTING_ALBEDO + 6);
+              UNIT_LIGHTING_LIGHT_SHADOW == UNIT_LIGHTING_ALBEDO + 4);
 static_assert(UNIT_SURFACE_DEPTH == UNIT_POST_HDR + 1 && UNIT_POST_BLURRED == UNIT_POST_HDR + 2 &&
               UNIT_POST_DIFFUSE == UNIT_POST_HDR + 3 && UNIT_POST_ALBEDO == UNIT_POST_HDR + 4 &&
               UNIT_POST_NORMAL == UNIT_POST_HDR + 5 && UNIT_POST_LIGHT_SHADOW == UNIT_POST_HDR + 6);

@@ -45,9 +45,16 @@ struct PatternParams {
   bool operator==(const PatternParams&) const = default;
 };
 
-// The colour ramp over the pattern: read with it.
-struct ColourParams {
+// The stone between veins: the colour ramp's end (read with the pattern), `floor`'s flat colour,
+// and in `marble` also read by the lighting pass (the bounce's emitters, shaders/bounce_upsample.glsl;
+// the radius form's albedo): a group of its own, so that the vein colours below do not re-run it.
+struct BaseColourParams {
   glm::vec3 base_color{0.93f, 0.89f, 0.80f};
+  bool operator==(const BaseColourParams&) const = default;
+};
+
+// The rest of the colour ramp over the pattern: read with it.
+struct ColourParams {
   glm::vec3 vein_color{0.52f, 0.3f, 0.09f};
   glm::vec3 vein2_color{0.74f, 0.56f, 0.3f};
   float vein_sharpness = 1.0f;
@@ -123,7 +130,7 @@ struct GlossParams {
   bool operator==(const GlossParams&) const = default;
 };
 
-struct Material : PatternParams, ColourParams, VeinModelParams, PaperModelParams, ComparisonParams, ScatteringParams,
+struct Material : PatternParams, BaseColourParams, ColourParams, VeinModelParams, PaperModelParams, ComparisonParams, ScatteringParams,
                   GlossParams {
   std::string name = "paper";
   // The defaults are presets/paper.json, the paper's Figure 10 (MaterialIoTest.DefaultIsThePaperPreset).

@@ -128,11 +128,11 @@ const ParamDesc kParams[] = {
      MARBLE_FIELD(PatternParams::pattern_scale)},
 
     // --- colour ---
-    {.key = "base_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
+    {.key = "base_color", .group = ParamGroup::BaseColour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "base", .tooltip = "Albedo of the stone between veins (linear RGB).",
      .doc = "the stone between veins; also the `floor` mode's flat colour and, in `marble`, the albedo of the light bounced inside the object",
      .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kLightingPassBit,
-     .uniform = "u_pat_base_color", .choices = {}, .slider = {}, MARBLE_FIELD(ColourParams::base_color)},
+     .uniform = "u_pat_base_color", .choices = {}, .slider = {}, MARBLE_FIELD(BaseColourParams::base_color)},
     {.key = "vein_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "vein", .tooltip = "Albedo at the heart of a vein (linear RGB).",
      .doc = "the heart of the veins", .modes = kShadingModes, .passes = kPattern, .uniform = "u_pat_vein_color",
@@ -418,6 +418,9 @@ const ParamGroupDesc kGroups[] = {
      &assignIdentity},
     {ParamGroup::Pattern, "Pattern (paper 3.1)", "the pattern's evaluation: the albedo pass, or `marble`'s post pass",
      &equalGroup<PatternParams>, &assignGroup<PatternParams>},
+    {ParamGroup::BaseColour, "Base colour",
+     "with the pattern; `floor`; `marble`'s lighting pass (the bounce's emitters, the radius form's albedo)",
+     &equalGroup<BaseColourParams>, &assignGroup<BaseColourParams>},
     {ParamGroup::Colour, "Colour", "with the pattern", &equalGroup<ColourParams>, &assignGroup<ColourParams>},
     {ParamGroup::VeinModel, "Vein model", "with the pattern, when vein_model is network or breccia",
      &equalGroup<VeinModelParams>, &assignGroup<VeinModelParams>},
@@ -437,6 +440,7 @@ const char* groupKey(ParamGroup g) {
   switch (g) {
     case ParamGroup::Identity: return "identity";
     case ParamGroup::Pattern: return "pattern";
+    case ParamGroup::BaseColour: return "base-colour";
     case ParamGroup::Colour: return "colour";
     case ParamGroup::VeinModel: return "veins";
     case ParamGroup::PaperModel: return "paper";

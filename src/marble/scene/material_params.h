@@ -22,8 +22,8 @@
 namespace marble {
 
 // The groups, by what consumes them (material.h has one struct per group).
-enum class ParamGroup { Identity, Pattern, Colour, VeinModel, PaperModel, Comparison, Scattering, Gloss };
-inline constexpr int kParamGroupCount = 8;
+enum class ParamGroup { Identity, Pattern, BaseColour, Colour, VeinModel, PaperModel, Comparison, Scattering, Gloss };
+inline constexpr int kParamGroupCount = 9;
 using GroupSet = uint32_t;  // bit 1 << ParamGroup
 constexpr GroupSet groupBit(ParamGroup g) { return 1u << static_cast<unsigned>(g); }
 

@@ -1,0 +1,37 @@
+#version 450 core
+// The bounce pass (`marble` only): the one diffuse bounce (bounce.glsl) gathered at a sixteenth
+// of the lighting pass's texels (a quarter of its resolution each way; an eighth of the frame's at
+// the blur's default half). Texel i stands for full-resolution pixel i * u_scale, as the lighting
+// pass's texel h stands for pixel h * its scale, so that the upsample (bounce_upsample.glsl) can
+// read the surface point and normal each sample was gathered for from the G-buffer itself.
+// The bounce is smooth over many pixels (its emitters are a disk of half the light map's width
+// around the point, finest near it at 1/32 of it: tens of pixels on an object that fills the
+// frame), so coarser samples lose little where they lie on the receiver's surface.
+#include "gbuffer.glsl"
+#include "paper_shading.glsl"
+#include "deferred_common.glsl"
+#include "bounce.glsl"
+
+layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
+uniform int u_scale;  // full-resolution pixels per texel of this pass
+// rgb: the gathered bounce (irradiance / PI before any albedo); a: 1 where a surface was gathered
+// for, 0 on the background.
+layout(location = 0) out vec4 o_bounce;
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
+  ivec2 size = textureSize(u_depth, 0);
+  if (any(greaterThanEqual(px, size))) {
+    o_bounce = vec4(0.0);
+    return;
+  }
+  float depth = texelFetch(u_depth, px, 0).r;
+  if (depth >= 1.0) {
+    o_bounce = vec4(0.0);
+    return;
+  }
+  vec3 P = surface_point((vec2(px) + 0.5) / vec2(size), depth);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  o_bounce = vec4(bounce_gather(P, N), 1.0);
+}

@@ -187,3 +187,26 @@ TEST_F(RendererFixture, CachedPassesAreSkippedWhenTheirInputsDoNotChange) {
   renderImage(renderer, s);
   EXPECT_TRUE(renderer.passTimes(true).ran[Pass::LightDepth]);
 }
+
+// A context made and dropped while another is in use (marble::render makes one per call inside a
+// program that may hold its own) leaves the other current and its display alive. Before contexts
+// nested, dropping the second made nothing current and terminated the shared EGL display: every GL
+// call after it failed (epoxy reported version 0), which is what this test saw.
+TEST(RendererGl, ASecondContextDroppedLeavesTheFirstCurrentAndWorking) {
+  glContext();
+  Renderer before;
+  const Scene s = smallScene(RenderMode::Marble, "builtin:sphere", 48);
+  before.setMesh(builtinMesh("sphere"));
+  const ImageRGBA8 reference = renderImage(before, s);
+  {
+    HeadlessContext second;
+    EXPECT_GE(epoxy_gl_version(), 45);
+    Renderer inSecond;
+    inSecond.setMesh(builtinMesh("sphere"));
+    const ImageRGBA8 there = renderImage(inSecond, s);
+    EXPECT_EQ(meanAbsDiff(there, reference), 0.0);
+  }  // the second context's renderer went first, in its own context; then the context itself
+  EXPECT_GE(epoxy_gl_version(), 45);
+  const ImageRGBA8 again = renderImage(before, s);  // the first context's objects are still there
+  EXPECT_EQ(meanAbsDiff(again, reference), 0.0);
+}

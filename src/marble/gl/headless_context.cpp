@@ -4,6 +4,8 @@
 #include <epoxy/gl.h>
 
 #include <cstdlib>
+#include <map>
+#include <mutex>
 #include <cstring>
 #include <string>
 #include <tuple>
@@ -22,6 +24,8 @@
 
 namespace marble {
 namespace {
+
+using detail::CurrentEgl;
 
 bool hasExtension(const char* list, const char* name) {
   if (!list) return false;
@@ -56,13 +60,43 @@ std::vector<EGLDisplay> candidateDisplays() {
   return out;
 }
 
-// Gives back what a display and context hold, in reverse order of acquisition; either may be
-// null (a display initialized but no context made yet).
-void releaseEgl(EGLDisplay display, EGLContext context) {
-  if (!display) return;
-  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (context) eglDestroyContext(display, context);
+// eglInitialize on a display that is already initialized does nothing, and one eglTerminate
+// ends every context on it; eglGetPlatformDisplay hands the same EGLDisplay to everyone in the
+// process who asks for the same platform. So a display is terminated only when the last
+// HeadlessContext that initialized it goes: a context made and dropped (marble::render in
+// marble.cpp makes one per call) must not end another one's, nor an embedding program's.
+std::mutex gDisplayUsersMutex;
+std::map<EGLDisplay, int> gDisplayUsers;
+
+bool initializeDisplay(EGLDisplay display) {
+  std::lock_guard lock(gDisplayUsersMutex);
+  EGLint major = 0, minor = 0;
+  if (!eglInitialize(display, &major, &minor)) return false;
+  ++gDisplayUsers[display];
+  return true;
+}
+
+void terminateDisplay(EGLDisplay display) {
+  std::lock_guard lock(gDisplayUsersMutex);
+  const auto it = gDisplayUsers.find(display);
+  if (it == gDisplayUsers.end() || --it->second > 0) return;
+  gDisplayUsers.erase(it);
   eglTerminate(display);
+}
+
+// Gives back what a display and context hold, in reverse order of acquisition; either may be
+// null (a display initialized but no context made yet). If the context is current, whatever was
+// current before it was made is made current again (a context made and dropped inside another's
+// use leaves that one working); if that fails, nothing is current.
+void releaseEgl(EGLDisplay display, EGLContext context, const CurrentEgl& previous) {
+  if (!display) return;
+  if (context && eglGetCurrentContext() == context) {
+    const bool restored = previous.context != EGL_NO_CONTEXT &&
+                          eglMakeCurrent(previous.display, previous.draw, previous.read, previous.context);
+    if (!restored) eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+  if (context) eglDestroyContext(display, context);
+  terminateDisplay(display);
 }
 
 // What one candidate display has acquired so far. Whatever a failed attempt holds is released
@@ -70,18 +104,19 @@ void releaseEgl(EGLDisplay display, EGLContext context) {
 // release(), after which it owns nothing.
 class EglAttempt {
 public:
-  EglAttempt() = default;
-  ~EglAttempt() { releaseEgl(display_, context_); }
+  explicit EglAttempt(const CurrentEgl& previous) : previous_(previous) {}
+  ~EglAttempt() { releaseEgl(display_, context_, previous_); }
   EglAttempt(const EglAttempt&) = delete;
   EglAttempt& operator=(const EglAttempt&) = delete;
 
-  void ownDisplay(EGLDisplay d) { display_ = d; }   // after eglInitialize succeeded
+  void ownDisplay(EGLDisplay d) { display_ = d; }   // after initializeDisplay succeeded
   void ownContext(EGLContext c) { context_ = c; }
   std::pair<EGLDisplay, EGLContext> release() {
     return {std::exchange(display_, nullptr), std::exchange(context_, nullptr)};
   }
 
 private:
+  const CurrentEgl& previous_;
   EGLDisplay display_ = nullptr;
   EGLContext context_ = nullptr;
 };
@@ -92,14 +127,15 @@ HeadlessContext::HeadlessContext() {
   // Mesa prints multi-line warnings of its own while probing; our one line says what failed.
   setenv("EGL_LOG_LEVEL", "fatal", 0);
   std::string lastProblem = "no EGL display available (is libegl-mesa0 installed?)";
+  previous_ = {eglGetCurrentDisplay(), eglGetCurrentSurface(EGL_DRAW), eglGetCurrentSurface(EGL_READ),
+               eglGetCurrentContext()};
   for (EGLDisplay display : candidateDisplays()) {
-    EGLint major = 0, minor = 0;
-    if (!eglInitialize(display, &major, &minor)) {
+    if (!initializeDisplay(display)) {
       // Keep an earlier, more telling reason (e.g. "no OpenGL 4.5 core context").
       if (lastProblem.rfind("no EGL display", 0) == 0) lastProblem = "eglInitialize failed";
       continue;
     }
-    EglAttempt attempt;
+    EglAttempt attempt(previous_);
     attempt.ownDisplay(display);
     if (!eglBindAPI(EGL_OPENGL_API)) {
       lastProblem = "EGL has no desktop OpenGL API";
@@ -133,7 +169,7 @@ HeadlessContext::HeadlessContext() {
   throw EnvironmentError("headless OpenGL: " + lastProblem);
 }
 
-HeadlessContext::~HeadlessContext() { releaseEgl(display_, context_); }
+HeadlessContext::~HeadlessContext() { releaseEgl(display_, context_, previous_); }
 
 std::string HeadlessContext::renderer() const {
   const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

@@ -1,5 +1,6 @@
 #include "marble/noise/marble_pattern.h"
 
+#include "marble/noise/lanes.h"
 #include "marble/noise/turbulence_grid.h"
 
 #include <bit>
@@ -58,6 +59,11 @@ float pat_value3(vec3 p, float period, uint seedHash) {
   return pat_value3_direct(p, period, seedHash);
 }
 }  // namespace marble::patglsl
+
+// The same file compiled over 8-point lanes (noise/vein_lanes.inc): the rows' SIMD path.
+namespace marble::patlanes {
+#include "vein_lanes.inc"
+}  // namespace marble::patlanes
 
 namespace marble {
 namespace {
@@ -143,19 +149,44 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 }
 
 // The vein model's colour and value at the row's points origin + i * step (the expression the
-// per-point callers use), the four turbulence samples from samples(i, p, t). Inlined whole, so
-// what depends on the parameters alone can leave the point loop.
+// per-point callers use), the four turbulence samples from samples(i, p, t). Eight points at a
+// time through the lane build (vein_lanes.inc); a batch whose lanes branch differently, and the
+// row's last points, one at a time (inlined whole, so what depends on the parameters alone can
+// leave the point loop).
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
   RowMemoScope memo;
-  for (int i = 0; i < count; ++i) {
+  constexpr int N = simd::kLanes;
+  const patlanes::PatParams lanes = patlanes::broadcast(P);
+  auto put = [&](int i, const glm::vec4& shade) {
+    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
+    if (valueOut) valueOut[i] = shade.w;
+  };
+  int i = 0;
+  for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
+    patlanes::Batch b;
+    glm::vec3 ps[N];
+    float ts[N][4];
+    for (int j = 0; j < N; ++j) {
+      ps[j] = origin + static_cast<float>(i + j) * step;
+      samples(i + j, ps[j], ts[j]);
+      b.px[j] = ps[j].x;
+      b.py[j] = ps[j].y;
+      b.pz[j] = ps[j].z;
+      for (int k = 0; k < 4; ++k) b.t[k][j] = ts[j][k];
+    }
+    if (patlanes::shadeBatch(lanes, b)) {
+      for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
+    } else {
+      for (int j = 0; j < N; ++j) put(i + j, shadeInlined(P, ps[j], ts[j]));
+    }
+  }
+  for (; i < count; ++i) {
     const glm::vec3 p = origin + static_cast<float>(i) * step;
     float t[4];
     samples(i, p, t);
-    const glm::vec4 shade = shadeInlined(P, p, t);  // colour and value at once
-    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
-    if (valueOut) valueOut[i] = shade.w;
+    put(i, shadeInlined(P, p, t));  // colour and value at once
   }
 }
 

@@ -14,8 +14,12 @@
 // the same in every lane; the rows' y and z). Where they disagree the conversion records it
 // (divergedLanes()) and the caller recomputes those points one at a time: the lanes never
 // silently follow another lane's branch.
+#include <climits>
 #include <cmath>
 #include <cstdint>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>  // the AVX2 gather (vein_lanes.inc)
+#endif
 
 namespace marble::simd {
 

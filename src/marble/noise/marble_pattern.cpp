@@ -3,6 +3,7 @@
 #include "marble/noise/lanes.h"
 #include "marble/noise/turbulence_grid.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -360,7 +361,7 @@ void AlbedoSampler::veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::ve
 namespace {
 
 template <typename ColumnFn>
-void accumulateOctave(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column) {
+void accumulateOctaveWalk(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column) {
   using patglsl::pat_lerp;
   using patglsl::pat_wrap;
   float cell = 0.0f, c0 = 0.0f, c1 = 0.0f, w0 = 0.0f, w1 = 0.0f;
@@ -383,6 +384,74 @@ void accumulateOctave(const float* xs, int count, float size, float inv, float p
       have = true;
     }
     acc[i] += pat_lerp(c0, c1, fx) * size;
+  }
+}
+
+// The same octave in three passes that the compiler vectorizes where it can: every point's cell
+// and fraction (patglsl::floor's integer arithmetic), the columns of the cells the row spans in
+// a table (each once: the lattice index of cell c + 1 is pat_next of cell c's, as in the walk
+// above), then each point's lerp from the table. The same operations on the same operands as
+// the walk, so the same bits. Rows that skip most of the cells they span (a step of several
+// cells) take the walk, which computes only the columns it meets. columns(w, n, out) fills
+// out[j] = column(w[j]) for the n lattice indices w; on AVX2 the table's columns and the lerps
+// go 8 at a time (vein_lanes.inc).
+// Every point's cell and fraction in an octave (patglsl::floor's integer arithmetic), and the
+// lowest and highest cell (vein_lanes.inc's octaveCells, one at a time).
+void scalarCells(const float* __restrict xs, int count, float inv, int32_t* __restrict cells,
+                 float* __restrict fractions, int32_t* lo, int32_t* hi) {
+  for (int i = 0; i < count; ++i) {
+    const float px = xs[i] * inv;
+    const int32_t n = static_cast<int32_t>(px);
+    const int32_t c = n - static_cast<int32_t>(px < static_cast<float>(n));
+    cells[i] = c;
+    fractions[i] = px - static_cast<float>(c);
+  }
+  *lo = *hi = cells[0];
+  for (int i = 1; i < count; ++i) {
+    *lo = std::min(*lo, cells[i]);
+    *hi = std::max(*hi, cells[i]);
+  }
+}
+
+template <typename ColumnFn, typename ColumnsFn>
+void accumulateOctave(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column,
+                      ColumnsFn columns) {
+  if (count <= 0) return;
+  thread_local std::vector<int32_t> cellBuffer;
+  thread_local std::vector<float> fractionBuffer, table;
+  cellBuffer.resize(static_cast<size_t>(count));
+  fractionBuffer.resize(static_cast<size_t>(count));
+  int32_t* __restrict cells = cellBuffer.data();
+  float* __restrict fractions = fractionBuffer.data();
+  int32_t lo = 0, hi = 0;
+  if (patlanes::lanesAvailable()) {
+    patlanes::octaveCells(xs, count, inv, cells, fractions, &lo, &hi);
+  } else {
+    scalarCells(xs, count, inv, cells, fractions, &lo, &hi);
+  }
+  const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
+  if (span > 2 * static_cast<int64_t>(count) + 16) {
+    accumulateOctaveWalk(xs, count, size, inv, period, acc, column);
+    return;
+  }
+  thread_local std::vector<float> lattice;
+  table.resize(static_cast<size_t>(span));
+  lattice.resize(static_cast<size_t>(span));
+  float w = patglsl::pat_wrap(static_cast<float>(lo), period);
+  for (int64_t j = 0; j < span; ++j) {
+    lattice[static_cast<size_t>(j)] = w;
+    w = patglsl::pat_next(w, period);
+  }
+  columns(lattice.data(), static_cast<int>(span), table.data());
+  if (patlanes::lanesAvailable()) {
+    patlanes::lerpOctave(cells, fractions, count, lo, table.data(), size, acc);
+    return;
+  }
+  const float* __restrict t = table.data();
+  float* __restrict a = acc;
+  for (int i = 0; i < count; ++i) {
+    const int32_t j = cells[i] - lo;
+    a[i] += patglsl::pat_lerp(t[j], t[j + 1], fractions[i]) * size;
   }
 }
 
@@ -421,8 +490,10 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
     const float fy = py - iy;
     const uint32_t h0 = patglsl::pat_hash_y(patglsl::pat_wrap(iy, period), sh);
     const uint32_t h1 = patglsl::pat_hash_y(patglsl::pat_next(patglsl::pat_wrap(iy, period), period), sh);
-    accumulateOctave(xs, count, size, inv, period, sum.data(),
-                     [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); });
+    auto column = [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); };
+    accumulateOctave(xs, count, size, inv, period, sum.data(), column, [&](const float* w, int n, float* out) {
+      for (int j = 0; j < n; ++j) out[j] = column(w[j]);
+    });
   }
   finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
 }
@@ -443,8 +514,14 @@ float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float 
     const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
     const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
     const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    accumulateOctave(xs, count, size, inv, period, sum,
-                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
+    auto column = [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); };
+    accumulateOctave(xs, count, size, inv, period, sum, column, [&](const float* w, int n, float* out) {
+      if (patlanes::lanesAvailable()) {
+        patlanes::value3Columns(w, n, h00, h10, h01, h11, fy, fz, out);
+        return;
+      }
+      for (int j = 0; j < n; ++j) out[j] = column(w[j]);
+    });
     weight += size;
   }
   return weight;

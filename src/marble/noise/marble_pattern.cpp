@@ -154,6 +154,8 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 // time through the lane build (vein_lanes.inc); a batch whose lanes branch differently, and the
 // row's last points, one at a time (inlined whole, so what depends on the parameters alone can
 // leave the point loop).
+thread_local VeinRowCounts threadVeinRowCounts;
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
@@ -165,6 +167,7 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     if (valueOut) valueOut[i] = shade.w;
   };
   int i = 0;
+  VeinRowCounts& counts = threadVeinRowCounts;
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
     glm::vec3 ps[N];
@@ -177,9 +180,11 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
       b.pz[j] = ps[j].z;
       for (int k = 0; k < 4; ++k) b.t[k][j] = ts[j][k];
     }
+    ++counts.laneBatches;
     if (patlanes::shadeBatch(lanes, b)) {
       for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
     } else {
+      ++counts.divergedBatches;
       for (int j = 0; j < N; ++j) put(i + j, shadeInlined(P, ps[j], ts[j]));
     }
   }
@@ -188,10 +193,14 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     float t[4];
     samples(i, p, t);
     put(i, shadeInlined(P, p, t));  // colour and value at once
+    ++counts.singlePoints;
   }
 }
 
 }  // namespace
+
+bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
+VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);

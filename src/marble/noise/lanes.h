@@ -53,8 +53,8 @@ struct LaneU;
 struct LaneF {
   F8 v;
   LaneF() = default;
-  LaneF(float s) : v(F8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor): literals as in GLSL
-  explicit LaneF(F8 x) : v(x) {}
+  constexpr LaneF(float s) : v(F8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor): literals as in GLSL
+  constexpr explicit LaneF(F8 x) : v(x) {}
   explicit LaneF(LaneU u);
   explicit LaneF(Mask m) : v(__builtin_convertvector(m.v & 1, F8)) {}  // float(bool): 1 or 0
   LaneF& operator+=(LaneF b) { v += b.v; return *this; }
@@ -66,8 +66,8 @@ struct LaneF {
 struct LaneU {
   U8 v;
   LaneU() = default;
-  LaneU(uint32_t s) : v(U8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor)
-  explicit LaneU(U8 x) : v(x) {}
+  constexpr LaneU(uint32_t s) : v(U8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor)
+  constexpr explicit LaneU(U8 x) : v(x) {}
   // uint(f) for 0 <= f < 2^31 (cell and lattice indices; the scalar cast's range too).
   explicit LaneU(LaneF f) : v(reinterpret_cast<U8>(__builtin_convertvector(f.v, I8))) {}
   LaneU& operator^=(LaneU b) { v ^= b.v; return *this; }

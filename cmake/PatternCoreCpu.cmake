@@ -30,15 +30,16 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/generated/pattern_core_cpu.glsl.inc CON
 #   * GLSL's `float` is a C++ keyword, so it is spelled `lane_float` (a type vein_lanes.inc
 #     defines); uint and vecN are plain names there already. The regex takes whole words only
 #     (comments change too, harmlessly), twice because adjacent matches share a delimiter;
-#   * the definitions of pat_family_cover and pat_wrap are renamed NAME_direct: their early
-#     returns depend on the point (a face's fill; a lattice index already in range), so
+#   * the definitions of pat_family_cover, pat_wrap and pat_next are renamed NAME_direct: their
+#     early returns or choices depend on the point (a face's fill; a lattice index in range or
+#     at the lattice's end), so
 #     vein_lanes.inc declares NAME before the file and defines it after, as the same arithmetic
 #     with those returns as per-lane selects. Only the name is matched, not the parameters.
 set(_lanes "${_text}")
 foreach(_pass 1 2)
   string(REGEX REPLACE "([^A-Za-z0-9_])float([^A-Za-z0-9_])" "\\1lane_float\\2" _lanes "${_lanes}")
 endforeach()
-foreach(_name IN ITEMS pat_family_cover pat_wrap)
+foreach(_name IN ITEMS pat_family_cover pat_wrap pat_next)
   set(_definition "lane_float ${_name}(")
   string(FIND "${_lanes}" "${_definition}" _at)
   string(FIND "${_lanes}" "${_definition}" _last REVERSE)

@@ -161,7 +161,8 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
                                        glm::vec3* out, float* valueOut, Samples samples) {
   RowMemoScope memo;
   constexpr int N = simd::kLanes;
-  const patlanes::PatParams lanes = patlanes::broadcast(P);
+  patlanes::PatParams lanes;  // trivially constructed: filled (AVX2 code) only where it runs
+  if (patlanes::lanesAvailable()) patlanes::broadcast(P, &lanes);
   auto put = [&](int i, const glm::vec4& shade) {
     if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
     if (valueOut) valueOut[i] = shade.w;

@@ -127,6 +127,17 @@ void BM_Marble_Pattern3D_Rows_Value(benchmark::State& state) {
   });
 }
 
+// How the vein rows shaded their points on this thread (threads:1 only: the counts are per
+// thread): the share of 8-point batches whose lanes branched differently and were recomputed
+// one point at a time, and whether the 8-lane (AVX2) path ran at all.
+void reportLanes(benchmark::State& state, const marble::VeinRowCounts& before) {
+  const marble::VeinRowCounts after = marble::veinRowCounts();
+  const double batches = static_cast<double>(after.laneBatches - before.laneBatches);
+  state.counters["lanes"] = marble::veinRowsUseLanes() ? 8 : 1;
+  if (state.range(0) == 1 && batches > 0)
+    state.counters["diverged"] = static_cast<double>(after.divergedBatches - before.divergedBatches) / batches;
+}
+
 // The vein model (issue 16), a row at a time: the Carrara preset's colour at the same grid of
 // points (object space: texel / 128 - 1, so the 256 x 256 points span the object), four
 // turbulence samples by rows plus three Voronoi families per point: what `marble texture`
@@ -134,10 +145,12 @@ void BM_Marble_Pattern3D_Rows_Value(benchmark::State& state) {
 void BM_Marble_Veins3D_Rows(benchmark::State& state) {
   const Material m = marble::loadPreset("carrara");
   std::vector<glm::vec3> colours(kGrid);
+  const marble::VeinRowCounts before = marble::veinRowCounts();
   runGrid(state, [&](int y, float* out) {
     const glm::vec3 origin(-1.0f, static_cast<float>(y) / 128.0f - 1.0f, kZ / 128.0f - 1.0f);
     marble::veinAlbedoRow(m, origin, glm::vec3(1.0f / 128.0f, 0.0f, 0.0f), kGrid, colours.data(), out);
   });
+  reportLanes(state, before);
 }
 
 // The same rows with the four turbulence samples read from the vein grid on the CPU
@@ -147,10 +160,12 @@ void BM_Marble_Veins3D_Rows_Grid(benchmark::State& state) {
   const Material m = marble::loadPreset("carrara");
   static const marble::AlbedoSampler sampler(m, 1e12);  // points enough to pay for the grid
   std::vector<glm::vec3> colours(kGrid);
+  const marble::VeinRowCounts before = marble::veinRowCounts();
   runGrid(state, [&](int y, float* out) {
     const glm::vec3 origin(-1.0f, static_cast<float>(y) / 128.0f - 1.0f, kZ / 128.0f - 1.0f);
     sampler.veinRow(origin, glm::vec3(1.0f / 128.0f, 0.0f, 0.0f), kGrid, colours.data(), out);
   });
+  reportLanes(state, before);
 }
 
 // Baking that grid (128^3 texels x 4 samples for carrara: W = 256), on all cores.

@@ -24,3 +24,33 @@ foreach(_hook IN ITEMS "PatCells|pat_voronoi|vec3 p, uint salt" "float|pat_value
   string(REPLACE "${_definition}" "${_type} ${_name}(${_args}); ${_type} ${_name}_direct(${_args}) {" _text "${_text}")
 endforeach()
 file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/generated/pattern_core_cpu.glsl.inc CONTENT "${_text}")
+
+# The lane copy (src/marble/noise/vein_lanes.inc compiles the pattern a second time with each
+# value an 8-point lane: the batched rows' SIMD path). From the copy above, three more changes:
+#   * GLSL's `float` is a C++ keyword, so it is spelled `lane_float` (a type vein_lanes.inc
+#     defines); uint and vecN are plain names there already. The regex takes whole words only
+#     (comments change too, harmlessly), twice because adjacent matches share a delimiter;
+#   * the definitions of pat_family_cover, pat_wrap and pat_next are renamed NAME_direct: their
+#     early returns or choices depend on the point (a face's fill; a lattice index in range or
+#     at the lattice's end), so
+#     vein_lanes.inc declares NAME before the file and defines it after, as the same arithmetic
+#     with those returns as per-lane selects. Only the name is matched, not the parameters.
+set(_lanes "${_text}")
+foreach(_pass 1 2)
+  string(REGEX REPLACE "([^A-Za-z0-9_])float([^A-Za-z0-9_])" "\\1lane_float\\2" _lanes "${_lanes}")
+endforeach()
+foreach(_name IN ITEMS pat_family_cover pat_wrap pat_next)
+  set(_definition "lane_float ${_name}(")
+  string(FIND "${_lanes}" "${_definition}" _at)
+  string(FIND "${_lanes}" "${_definition}" _last REVERSE)
+  if(_at EQUAL -1 OR NOT _at EQUAL _last)
+    message(FATAL_ERROR "cmake/PatternCoreCpu.cmake: expected exactly one 'float ${_name}(' in ${_core} "
+                        "(the CPU's SIMD rows hook it; update this list and src/marble/noise/vein_lanes.inc)")
+  endif()
+  string(REPLACE "${_definition}" "lane_float ${_name}_direct(" _lanes "${_lanes}")
+endforeach()
+# GLSL passes the parameter block by value (a copy per call; its lanes are 6 KB here): a const
+# reference is the same in C++ for a parameter the pattern never assigns (one that did would stop
+# the build).
+string(REGEX REPLACE "PatParams P([,)])" "const PatParams& P\\1" _lanes "${_lanes}")
+file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/generated/pattern_core_lanes.glsl.inc CONTENT "${_lanes}")

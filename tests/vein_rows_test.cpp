@@ -1,5 +1,6 @@
 // The vein model's batched rows (the fast CPU path: marble_pattern.cpp's row memo,
-// noise/row_memo.inc) against the per-point reference on random rows of every stone preset:
+// noise/row_memo.inc, and on AVX2 the 8-lane build, noise/vein_lanes.inc) against the
+// per-point reference on random rows of every stone preset:
 // veinAlbedoRow equals veinAlbedo bit for bit, and AlbedoSampler::veinRow (turbulence from the
 // baked grid) equals the sampler at each point bit for bit. Negative controls: another seed's
 // rows, or another seed's grid, are told apart at most points.
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "marble/noise/lanes.h"
 #include "marble/noise/marble_pattern.h"
 #include "marble/scene/embedded_presets.h"
 #include "marble/scene/material_io.h"
@@ -212,6 +214,51 @@ TEST(VeinRows, GridRowsWithoutAGridAreTheEvaluatedRows) {
   float v;
   EXPECT_THROW(AlbedoSampler(paper, 1e12).veinRow(glm::vec3(0.0f), glm::vec3(0.1f, 0.0f, 0.0f), 1, &c, &v),
                std::logic_error);
+}
+
+// The lanes' branch check (noise/lanes.h), which keeps the 8-lane rows exact: a comparison
+// whose lanes agree converts to bool silently; one whose lanes disagree is recorded.
+TEST(VeinRows, LanesRecordABranchTheirLanesTakeDifferently) {
+  const float values[simd::kLanes] = {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f};
+  simd::LaneF x;
+  std::memcpy(&x.v, values, sizeof values);
+  simd::laneDivergence = false;
+  EXPECT_TRUE(static_cast<bool>(x >= 0.0f));
+  EXPECT_FALSE(static_cast<bool>(x > 7.0f));
+  EXPECT_FALSE(simd::laneDivergence);
+  static_cast<void>(static_cast<bool>(x < 4.0f));  // no right answer for all lanes...
+  EXPECT_TRUE(simd::laneDivergence);                // ...so the disagreement is recorded
+  simd::laneDivergence = false;
+}
+
+// The equality tests above mean something for the lanes only where the lanes ran: on an AVX2
+// CPU a network stone's rows go through them (its point-dependent branches are selects, so
+// few batches fall back), and a breccia's branches on its fragments make some batches diverge
+// (recomputed one point at a time: its equality above covers that path). Without AVX2 every
+// point is shaded one at a time.
+TEST(VeinRows, RowsRunThroughTheLanesWhereTheCpuHasThem) {
+  auto shadeRows = [](const Material& m) {
+    const VeinRowCounts before = veinRowCounts();
+    std::vector<glm::vec3> colours(256);
+    std::vector<float> values(256);
+    for (int r = 0; r < 32; ++r)
+      veinAlbedoRow(m, glm::vec3(-1.0f, static_cast<float>(r) / 16.0f - 1.0f, 0.3f), glm::vec3(1.0f / 128.0f, 0.0f, 0.0f),
+                    256, colours.data(), values.data());
+    const VeinRowCounts after = veinRowCounts();
+    return VeinRowCounts{after.laneBatches - before.laneBatches, after.divergedBatches - before.divergedBatches,
+                         after.singlePoints - before.singlePoints};
+  };
+  const VeinRowCounts network = shadeRows(loadPreset("carrara"));
+  const VeinRowCounts breccia = shadeRows(loadPreset("breccia-pernice"));
+  if (veinRowsUseLanes()) {
+    EXPECT_EQ(network.laneBatches, 32 * 256 / simd::kLanes);
+    EXPECT_EQ(network.singlePoints, 0);
+    EXPECT_LT(network.divergedBatches, network.laneBatches / 20);
+    EXPECT_GT(breccia.divergedBatches, 0);
+  } else {
+    EXPECT_EQ(network.laneBatches, 0);
+    EXPECT_EQ(network.singlePoints, 32 * 256);
+  }
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "marble/noise/marble_pattern.h"
 
+#include "marble/noise/lanes.h"
 #include "marble/noise/turbulence_grid.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -58,6 +60,11 @@ float pat_value3(vec3 p, float period, uint seedHash) {
   return pat_value3_direct(p, period, seedHash);
 }
 }  // namespace marble::patglsl
+
+// The same file compiled over 8-point lanes (noise/vein_lanes.inc): the rows' SIMD path.
+namespace marble::patlanes {
+#include "vein_lanes.inc"
+}  // namespace marble::patlanes
 
 namespace marble {
 namespace {
@@ -143,23 +150,58 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 }
 
 // The vein model's colour and value at the row's points origin + i * step (the expression the
-// per-point callers use), the four turbulence samples from samples(i, p, t). Inlined whole, so
-// what depends on the parameters alone can leave the point loop.
+// per-point callers use), the four turbulence samples from samples(i, p, t). Eight points at a
+// time through the lane build (vein_lanes.inc); a batch whose lanes branch differently, and the
+// row's last points, one at a time (inlined whole, so what depends on the parameters alone can
+// leave the point loop).
+thread_local VeinRowCounts threadVeinRowCounts;
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
   RowMemoScope memo;
-  for (int i = 0; i < count; ++i) {
+  constexpr int N = simd::kLanes;
+  patlanes::PatParams lanes;  // trivially constructed: filled (AVX2 code) only where it runs
+  if (patlanes::lanesAvailable()) patlanes::broadcast(P, &lanes);
+  auto put = [&](int i, const glm::vec4& shade) {
+    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
+    if (valueOut) valueOut[i] = shade.w;
+  };
+  int i = 0;
+  VeinRowCounts& counts = threadVeinRowCounts;
+  for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
+    patlanes::Batch b;
+    glm::vec3 ps[N];
+    float ts[N][4];
+    for (int j = 0; j < N; ++j) {
+      ps[j] = origin + static_cast<float>(i + j) * step;
+      samples(i + j, ps[j], ts[j]);
+      b.px[j] = ps[j].x;
+      b.py[j] = ps[j].y;
+      b.pz[j] = ps[j].z;
+      for (int k = 0; k < 4; ++k) b.t[k][j] = ts[j][k];
+    }
+    ++counts.laneBatches;
+    if (patlanes::shadeBatch(lanes, b)) {
+      for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
+    } else {
+      ++counts.divergedBatches;
+      for (int j = 0; j < N; ++j) put(i + j, shadeInlined(P, ps[j], ts[j]));
+    }
+  }
+  for (; i < count; ++i) {
     const glm::vec3 p = origin + static_cast<float>(i) * step;
     float t[4];
     samples(i, p, t);
-    const glm::vec4 shade = shadeInlined(P, p, t);  // colour and value at once
-    if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
-    if (valueOut) valueOut[i] = shade.w;
+    put(i, shadeInlined(P, p, t));  // colour and value at once
+    ++counts.singlePoints;
   }
 }
 
 }  // namespace
+
+bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
+VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);
@@ -303,7 +345,49 @@ void AlbedoSampler::veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::ve
     return;
   }
   // Along x, every point has the row's y and z (origin.y + i * 0 is origin.y): the grid
-  // columns (four channels each) are interpolated once per grid texel the row crosses.
+  // columns (four channels each) are interpolated once per grid texel the row crosses. First as
+  // a table: each point's grid cell and fraction, the columns of the cells the row spans (the
+  // column after cell c is that of cell c + 1, as gridAxes's x1), then each point's four samples
+  // from the table in loops the compiler vectorizes -- gridTurbulence's operations on the same
+  // operands. A row that skips most of the cells it spans takes the walk below.
+  if (count > 0) {
+    thread_local std::vector<int32_t> cells;
+    thread_local std::vector<float> fractions, table;
+    cells.resize(static_cast<size_t>(count));
+    fractions.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      const float gx = gridPoint(origin + static_cast<float>(i) * step).x;
+      const float f0 = patglsl::floor(gx);
+      cells[static_cast<size_t>(i)] = static_cast<int32_t>(f0);
+      fractions[static_cast<size_t>(i)] = gx - f0;
+    }
+    const auto [lo, hi] = std::minmax_element(cells.begin(), cells.end());
+    const int32_t first = *lo;
+    const int64_t span = static_cast<int64_t>(*hi) - first + 2;
+    if (span <= 2 * static_cast<int64_t>(count) + 16) {
+      const GridAxes a = gridAxes(gridPoint(origin));  // the row's y and z
+      const int w = resolution_;
+      const size_t n = static_cast<size_t>(span);
+      table.resize(4 * n);
+      for (size_t j = 0; j < n; ++j) {
+        const int x = (first + static_cast<int32_t>(j)) % w;
+        for (int k = 0; k < 4; ++k) table[static_cast<size_t>(k) * n + j] = gridColumn(a, x < 0 ? x + w : x, k);
+      }
+      std::vector<float> samples(4 * static_cast<size_t>(count));
+      for (int k = 0; k < 4; ++k) {
+        const float* __restrict t = table.data() + static_cast<size_t>(k) * n;
+        float* __restrict s = samples.data() + static_cast<size_t>(k) * static_cast<size_t>(count);
+        for (int i = 0; i < count; ++i) {
+          const int32_t j = cells[static_cast<size_t>(i)] - first;
+          s[i] = patglsl::pat_lerp(t[j], t[j + 1], fractions[static_cast<size_t>(i)]) * (1.0f / 65535.0f);
+        }
+      }
+      shadeRow(P, origin, step, count, out, valueOut, [&](int i, glm::vec3, float* t) {
+        for (int k = 0; k < 4; ++k) t[k] = samples[static_cast<size_t>(k) * static_cast<size_t>(count) + static_cast<size_t>(i)];
+      });
+      return;
+    }
+  }
   int have0 = -1, have1 = -1;
   float c0[4] = {}, c1[4] = {};
   shadeRow(P, origin, step, count, out, valueOut, [&](int, glm::vec3 p, float* t) {
@@ -329,7 +413,7 @@ void AlbedoSampler::veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::ve
 namespace {
 
 template <typename ColumnFn>
-void accumulateOctave(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column) {
+void accumulateOctaveWalk(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column) {
   using patglsl::pat_lerp;
   using patglsl::pat_wrap;
   float cell = 0.0f, c0 = 0.0f, c1 = 0.0f, w0 = 0.0f, w1 = 0.0f;
@@ -352,6 +436,74 @@ void accumulateOctave(const float* xs, int count, float size, float inv, float p
       have = true;
     }
     acc[i] += pat_lerp(c0, c1, fx) * size;
+  }
+}
+
+// The same octave in three passes that the compiler vectorizes where it can: every point's cell
+// and fraction (patglsl::floor's integer arithmetic), the columns of the cells the row spans in
+// a table (each once: the lattice index of cell c + 1 is pat_next of cell c's, as in the walk
+// above), then each point's lerp from the table. The same operations on the same operands as
+// the walk, so the same bits. Rows that skip most of the cells they span (a step of several
+// cells) take the walk, which computes only the columns it meets. columns(w, n, out) fills
+// out[j] = column(w[j]) for the n lattice indices w; on AVX2 the table's columns and the lerps
+// go 8 at a time (vein_lanes.inc).
+// Every point's cell and fraction in an octave (patglsl::floor's integer arithmetic), and the
+// lowest and highest cell (vein_lanes.inc's octaveCells, one at a time).
+void scalarCells(const float* __restrict xs, int count, float inv, int32_t* __restrict cells,
+                 float* __restrict fractions, int32_t* lo, int32_t* hi) {
+  for (int i = 0; i < count; ++i) {
+    const float px = xs[i] * inv;
+    const int32_t n = static_cast<int32_t>(px);
+    const int32_t c = n - static_cast<int32_t>(px < static_cast<float>(n));
+    cells[i] = c;
+    fractions[i] = px - static_cast<float>(c);
+  }
+  *lo = *hi = cells[0];
+  for (int i = 1; i < count; ++i) {
+    *lo = std::min(*lo, cells[i]);
+    *hi = std::max(*hi, cells[i]);
+  }
+}
+
+template <typename ColumnFn, typename ColumnsFn>
+void accumulateOctave(const float* xs, int count, float size, float inv, float period, float* acc, ColumnFn column,
+                      ColumnsFn columns) {
+  if (count <= 0) return;
+  thread_local std::vector<int32_t> cellBuffer;
+  thread_local std::vector<float> fractionBuffer, table;
+  cellBuffer.resize(static_cast<size_t>(count));
+  fractionBuffer.resize(static_cast<size_t>(count));
+  int32_t* __restrict cells = cellBuffer.data();
+  float* __restrict fractions = fractionBuffer.data();
+  int32_t lo = 0, hi = 0;
+  if (patlanes::lanesAvailable()) {
+    patlanes::octaveCells(xs, count, inv, cells, fractions, &lo, &hi);
+  } else {
+    scalarCells(xs, count, inv, cells, fractions, &lo, &hi);
+  }
+  const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
+  if (span > 2 * static_cast<int64_t>(count) + 16) {
+    accumulateOctaveWalk(xs, count, size, inv, period, acc, column);
+    return;
+  }
+  thread_local std::vector<float> lattice;
+  table.resize(static_cast<size_t>(span));
+  lattice.resize(static_cast<size_t>(span));
+  float w = patglsl::pat_wrap(static_cast<float>(lo), period);
+  for (int64_t j = 0; j < span; ++j) {
+    lattice[static_cast<size_t>(j)] = w;
+    w = patglsl::pat_next(w, period);
+  }
+  columns(lattice.data(), static_cast<int>(span), table.data());
+  if (patlanes::lanesAvailable()) {
+    patlanes::lerpOctave(cells, fractions, count, lo, table.data(), size, acc);
+    return;
+  }
+  const float* __restrict t = table.data();
+  float* __restrict a = acc;
+  for (int i = 0; i < count; ++i) {
+    const int32_t j = cells[i] - lo;
+    a[i] += patglsl::pat_lerp(t[j], t[j + 1], fractions[i]) * size;
   }
 }
 
@@ -390,8 +542,10 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
     const float fy = py - iy;
     const uint32_t h0 = patglsl::pat_hash_y(patglsl::pat_wrap(iy, period), sh);
     const uint32_t h1 = patglsl::pat_hash_y(patglsl::pat_next(patglsl::pat_wrap(iy, period), period), sh);
-    accumulateOctave(xs, count, size, inv, period, sum.data(),
-                     [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); });
+    auto column = [&](float x) { return patglsl::pat_value2_column(x, h0, h1, fy); };
+    accumulateOctave(xs, count, size, inv, period, sum.data(), column, [&](const float* w, int n, float* out) {
+      for (int j = 0; j < n; ++j) out[j] = column(w[j]);
+    });
   }
   finishRow(P, xs, y * P.period.y, count, sum.data(), turbOut, valueOut);
 }
@@ -412,8 +566,14 @@ float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float 
     const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
     const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
     const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    accumulateOctave(xs, count, size, inv, period, sum,
-                     [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); });
+    auto column = [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); };
+    accumulateOctave(xs, count, size, inv, period, sum, column, [&](const float* w, int n, float* out) {
+      if (patlanes::lanesAvailable()) {
+        patlanes::value3Columns(w, n, h00, h10, h01, h11, fy, fz, out);
+        return;
+      }
+      for (int j = 0; j < n; ++j) out[j] = column(w[j]);
+    });
     weight += size;
   }
   return weight;

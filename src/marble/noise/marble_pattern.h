@@ -65,8 +65,21 @@ glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, f
 // A row of object-space points origin + i * step, i < count, the colour and value of each (the
 // fast path of `marble texture`: along x the four turbulence samples by rows; then the model
 // per point with each Voronoi block and grain column computed once per row, marble_pattern.cpp
-// "row memo"). Bit-identical to veinAlbedo / veinPatternValue at the same points (tested).
+// "row memo"; on AVX2 CPUs 8 points at a time, vein_lanes.inc). Bit-identical to veinAlbedo /
+// veinPatternValue at the same points (tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
+// Whether this CPU shades the vein rows 8 points at a time (AVX2), and how this thread's rows
+// (veinAlbedoRow, AlbedoSampler::veinRow) have shaded their points so far: batches of 8 by the
+// lanes, batches recomputed one point at a time because their lanes branched differently, and
+// points shaded one at a time (rows' last points; every point without AVX2). For tests and
+// benchmarks: the equality tests mean something for the lanes only where they ran.
+struct VeinRowCounts {
+  long long laneBatches = 0;
+  long long divergedBatches = 0;
+  long long singlePoints = 0;
+};
+bool veinRowsUseLanes();
+VeinRowCounts veinRowCounts();
 
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
 // pat_vein_turbulence3) at the texel points (xs[i], y, z), by rows as patternRow3; bit-identical

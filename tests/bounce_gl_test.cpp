@@ -15,6 +15,7 @@
 
 #include "gl_support.h"
 #include "image_probe.h"
+#include "principled_stone.h"
 #include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
@@ -66,13 +67,7 @@ Scene cornerScene(float albedo, float h = kHeight) {
   s.light.type = LightType::Directional;
   s.light.position = {0, 1, 0};  // from above: the light travels along -y
   s.light.intensity = 1.0f;
-  Material& m = s.material;
-  m.base_color = m.vein_color = m.vein2_color = glm::vec3(albedo);
-  m.subsurface_radius_mm = {17.0f, 12.0f, 8.0f};
-  m.scattering = ScatteringForm::Radius;
-  m.ior = 1.5f;
-  m.roughness = 0.15f;
-  resolveScattering(m);
+  s.material = test::principledStone(glm::vec3(albedo));
   return s;
 }
 

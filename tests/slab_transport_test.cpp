@@ -14,19 +14,12 @@
 
 #include "marble/scene/material_scattering.h"
 #include "marble/scene/slab_transport.h"
+#include "principled_stone.h"
 
 namespace marble {
 namespace {
 
-Material issueStone() {
-  Material m;
-  m.base_color = m.vein_color = m.vein2_color = glm::vec3(0.87f, 0.85f, 0.8f);
-  m.subsurface_radius_mm = {17.0f, 12.0f, 8.0f};
-  m.scattering = ScatteringForm::Radius;
-  m.ior = 1.5f;
-  resolveScattering(m);
-  return m;
-}
+Material issueStone() { return test::principledStone(); }
 
 struct CyclesSlab {
   float mm;

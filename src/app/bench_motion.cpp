@@ -59,8 +59,13 @@ void moveScattering(Material& m, int frame) {
 }
 
 void movePattern(Material& m, int frame) {
-  // The veins' turbulence: the albedo in the G-buffer changes.
-  m.turb_power = std::max(0.0f, m.turb_power * (1.0f + 0.3f * wave(frame)));
+  // What bends the veins of the material's own model, so every pixel's pattern changes: the
+  // paper's |sin| reads turb_power, the network and breccia models the domain warp (they never
+  // read turb_power; moving it there would measure a pattern that does not change).
+  if (m.vein_model == VeinModel::Paper)
+    m.turb_power = std::max(0.0f, m.turb_power * (1.0f + 0.3f * wave(frame)));
+  else
+    m.vein_warp = std::max(0.0f, m.vein_warp * (1.0f + 0.3f * wave(frame)));
 }
 
 }  // namespace

@@ -10,7 +10,8 @@ namespace marble {
 
 // params: the gloss (k_schlick, roughness) -- the post pass re-shades;
 // scattering: sigma_s_mm -- the lighting and the subsurface blur re-run;
-// pattern: turb_power -- the geometry pass re-runs (the albedo).
+// pattern: what bends the veins of the material's model (turb_power for the paper's, vein_warp
+// for network and breccia) -- the pass that evaluates the pattern re-runs.
 enum class BenchMotion { None, Camera, Light, Both, Params, Scattering, Pattern };
 
 // "none", "camera", "light", "both", "params"; throws InputError naming --motion otherwise.

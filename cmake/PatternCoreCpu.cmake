@@ -8,20 +8,28 @@
 # time when the file changes; a hooked definition that is no longer found stops the build.
 set(_core ${CMAKE_SOURCE_DIR}/shaders/pattern_core.glsl)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_core})
+
+# In the variable named TEXT, replaces the one occurrence of FROM by TO; stops the configure
+# step, naming WHO hooks it, if FROM is missing or occurs more than once.
+function(_pattern_core_replace_once TEXT FROM TO WHO)
+  string(FIND "${${TEXT}}" "${FROM}" _at)
+  string(FIND "${${TEXT}}" "${FROM}" _last REVERSE)
+  if(_at EQUAL -1 OR NOT _at EQUAL _last)
+    message(FATAL_ERROR "cmake/PatternCoreCpu.cmake: expected exactly one '${FROM}' in ${_core} (${WHO})")
+  endif()
+  string(REPLACE "${FROM}" "${TO}" _replaced "${${TEXT}}")
+  set(${TEXT} "${_replaced}" PARENT_SCOPE)
+endfunction()
+
 file(READ ${_core} _text)
 foreach(_hook IN ITEMS "PatCells|pat_voronoi|vec3 p, uint salt" "float|pat_value3|vec3 p, float period, uint seedHash")
   string(REPLACE "|" ";" _parts "${_hook}")
   list(GET _parts 0 _type)
   list(GET _parts 1 _name)
   list(GET _parts 2 _args)
-  set(_definition "${_type} ${_name}(${_args}) {")
-  string(FIND "${_text}" "${_definition}" _at)
-  string(FIND "${_text}" "${_definition}" _last REVERSE)
-  if(_at EQUAL -1 OR NOT _at EQUAL _last)
-    message(FATAL_ERROR "cmake/PatternCoreCpu.cmake: expected exactly one '${_definition}' in ${_core} "
-                        "(the CPU's batched rows hook it; update this list and src/marble/noise/row_memo.inc)")
-  endif()
-  string(REPLACE "${_definition}" "${_type} ${_name}(${_args}); ${_type} ${_name}_direct(${_args}) {" _text "${_text}")
+  _pattern_core_replace_once(_text "${_type} ${_name}(${_args}) {"
+                             "${_type} ${_name}(${_args}); ${_type} ${_name}_direct(${_args}) {"
+                             "the CPU's batched rows hook it; update this list and src/marble/noise/row_memo.inc")
 endforeach()
 file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/generated/pattern_core_cpu.glsl.inc CONTENT "${_text}")
 
@@ -40,14 +48,8 @@ foreach(_pass 1 2)
   string(REGEX REPLACE "([^A-Za-z0-9_])float([^A-Za-z0-9_])" "\\1lane_float\\2" _lanes "${_lanes}")
 endforeach()
 foreach(_name IN ITEMS pat_family_cover pat_wrap pat_next)
-  set(_definition "lane_float ${_name}(")
-  string(FIND "${_lanes}" "${_definition}" _at)
-  string(FIND "${_lanes}" "${_definition}" _last REVERSE)
-  if(_at EQUAL -1 OR NOT _at EQUAL _last)
-    message(FATAL_ERROR "cmake/PatternCoreCpu.cmake: expected exactly one 'float ${_name}(' in ${_core} "
-                        "(the CPU's SIMD rows hook it; update this list and src/marble/noise/vein_lanes.inc)")
-  endif()
-  string(REPLACE "${_definition}" "lane_float ${_name}_direct(" _lanes "${_lanes}")
+  _pattern_core_replace_once(_lanes "lane_float ${_name}(" "lane_float ${_name}_direct("
+                             "'float ${_name}(': the CPU's SIMD rows hook it; update this list and src/marble/noise/vein_lanes.inc")
 endforeach()
 # GLSL passes the parameter block by value (a copy per call; its lanes are 6 KB here): a const
 # reference is the same in C++ for a parameter the pattern never assigns (one that did would stop

@@ -128,6 +128,26 @@ struct TransmissionSlab : ::testing::Test {
 
 }  // namespace
 
+// The lighting pass keeps the walk's table cut for the material between frames; another stone
+// (other coefficients) must get its own table: the cached renderer's second frame equals a fresh
+// renderer's, and differs from the first (a stale table would leave it as it was).
+TEST_F(TransmissionSlab, AnotherStoneGetsItsOwnTransportAndMatchesAFreshRender) {
+  Scene s = slabScene();
+  const ImageRGBF first = render(s);
+  s.material.subsurface_radius_mm = {8.0f, 5.0f, 3.0f};
+  resolveScattering(s.material);
+  const ImageRGBF cached = render(s);
+  Renderer fresh;
+  fresh.setMesh(slab());
+  renderImage(fresh, s);
+  const ImageRGBF expected = fresh.readHdr();
+  ASSERT_EQ(cached.pixels.size(), expected.pixels.size());
+  EXPECT_TRUE(cached.pixels == expected.pixels) << "the cached renderer used a stale transport table";
+  const glm::vec3 before = linearRgbAround(first, s, {0, 0, kHalfThickness});
+  const glm::vec3 after = linearRgbAround(cached, s, {0, 0, kHalfThickness});
+  EXPECT_LT(after.r, 0.8f * before.r) << "a shorter radius lets less light through the slab";
+}
+
 TEST_F(TransmissionSlab, WideSlabGivesTheRandomWalksTransport) {
   const Scene s = slabScene();
   const ImageRGBF img = render(s);

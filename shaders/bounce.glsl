@@ -22,10 +22,11 @@
 // - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
 //   projection in the light's view: a centre sample for the innermost disk and BOUNCE_RINGS rings,
 //   each twice the radius of the one inside it, of BOUNCE_ANGLES samples at even angles (each ring
-//   turned half a step from the last), each sample read at the mipmap level of the ring sector it
-//   stands for: the disk is covered without gaps, finely near the point (where the emitters that
-//   matter most are; D&S 2005 also sample densest there) and coarsely far away. The same pattern
-//   for every pixel, so the error is a smooth bias, not noise.
+//   turned half a step from the last), each sample standing for its ring sector (read
+//   BOUNCE_LOD_FINER levels finer than the level of the sector's size, since session 9): the disk
+//   is covered without gaps, finely near the point (where the emitters that matter most are; D&S
+//   2005 also sample densest there) and coarsely far away. The same pattern for every pixel, so
+//   the error is a fixed pattern that moves with the light, not noise.
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_irradiance, light_distance_of,
@@ -58,8 +59,8 @@ const float BOUNCE_GLOSS = 4.0;
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
 // y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
-// depends on the material). Read at the mipmap level of that area (bilinear within the level:
-// continuous in uv).
+// depends on the material). Read BOUNCE_LOD_FINER levels finer than the level of that area
+// (bilinear within the level: continuous in uv).
 vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);  // off the map: no light
   float texels = dA * size * size;

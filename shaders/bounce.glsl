@@ -29,7 +29,7 @@
 //   the error is a fixed pattern that moves with the light, not noise.
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
-// Needs from the includer: deferred_common.glsl (light_irradiance, light_distance_of,
+// Needs from the includer: deferred_common.glsl (light_falloff, light_vector, light_distance_of,
 // u_light_view_proj) and PI.
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
@@ -43,7 +43,7 @@ const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // for the sector, rather than the mean position and normal over it, which mixes parts at different
 // depths wherever the light's view has an edge (a coil in front of another: their mean lies between
 // them, in the air or inside the stone, and faces neither). Measured against Cycles (docs/quality.md,
-// session 9): dragon-back SSIM 0.530 -> 0.623, the body's grey interreflection appears; bunny-side
+// session 9): dragon-back SSIM 0.529 -> 0.623 (with the glossy emitters), the body's grey interreflection appears; bunny-side
 // -0.026 (its front paws take light through the chest: no visibility).
 const float BOUNCE_LOD_FINER = 3.0;
 

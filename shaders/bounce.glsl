@@ -43,8 +43,9 @@ const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // for the sector, rather than the mean position and normal over it, which mixes parts at different
 // depths wherever the light's view has an edge (a coil in front of another: their mean lies between
 // them, in the air or inside the stone, and faces neither). Measured against Cycles (docs/quality.md,
-// session 9): dragon-back SSIM 0.529 -> 0.623 (with the glossy emitters), the body's grey interreflection appears; bunny-side
-// -0.026 (its front paws take light through the chest: no visibility).
+// session 9; with the glossy emitters): dragon-back SSIM 0.529 -> 0.623, the body's grey
+// interreflection appears; bunny-side -0.026 (its front paws take light through the chest: no
+// visibility).
 const float BOUNCE_LOD_FINER = 3.0;
 
 // The glossy emitters' lobe: the light a sample reflects off its surface (Fresnel F of the entry

@@ -15,8 +15,9 @@
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 uniform int u_scale;  // full-resolution pixels per texel of this pass
-// rgb: the gathered bounce (irradiance / PI before any albedo); a: 1 where a surface was gathered
-// for, 0 on the background.
+// rgb: the gathered bounce per unit of the light's radiance (irradiance / PI: diffuse before the
+// emitters' albedo, glossy in two parts before the Fresnel factor; bounce.glsl); a: 1 where a
+// surface was gathered for, 0 on the background.
 layout(location = 0) out vec4 o_bounce;
 
 void main() {

@@ -24,11 +24,13 @@
 // 0.003 of it against Cycles in the ten reference scenes): the bounce's finest emitters (1/32 of
 // the light map's width, ~15 pixels on an object filling 500) are a little finer than the coarse
 // grid, so it comes out a little smoother.
-// Needs from the includer: u_depth, u_normal (the G-buffer's), gbuffer.glsl, deferred_common.glsl.
+// Needs from the includer: u_depth, u_normal (the G-buffer's), gbuffer.glsl, deferred_common.glsl,
+// marble_shading.glsl (f0_from_ior).
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;
 uniform int u_bounce_scale;     // full-resolution pixels per texel of the bounce pass
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
+uniform float u_ior;            // the emitters' Fresnel F0 (their glossy reflection)
 
 const float BOUNCE_MIN_WEIGHT = 0.05;
 
@@ -74,6 +76,8 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
       best = b.rgb;
     }
   }
-  if (weight >= BOUNCE_MIN_WEIGHT) return u_pat_base_color * sum / weight;
-  return u_pat_base_color * (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
+  vec3 b = weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
+  // The gather's scalars (bounce.glsl): diffuse x albedo, glossy x Schlick's F split by F0.
+  float F0 = f0_from_ior(u_ior).x;
+  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z);
 }

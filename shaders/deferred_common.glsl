@@ -32,8 +32,11 @@ float light_distance_of(vec3 p) {
 // reflects I, as in the paper's modes, and a scene keeps its exposure); a point light falls
 // off by the inverse-square law around it, E = PI I (d0 / d)^2, exactly as Cycles' point light
 // of power 4 PI^2 d0^2 I does (tools/cycles_reference.py). A directional light has no falloff.
-vec3 light_irradiance(float d) {
-  if (u_light_directional == 1) return u_light_radiance * PI;
+// light_falloff: the same per unit of u_light_radiance (the bounce gathers scalars and colours
+// them once, bounce_upsample.glsl).
+float light_falloff(float d) {
+  if (u_light_directional == 1) return PI;
   float r = u_light_ref_distance / max(d, 1e-4);
-  return u_light_radiance * PI * r * r;
+  return PI * r * r;
 }
+vec3 light_irradiance(float d) { return u_light_radiance * light_falloff(d); }

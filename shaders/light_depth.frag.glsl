@@ -14,7 +14,10 @@
 // small against the bounce's distances). E(d), the light's falloff, and the albedo are applied
 // where the map is read, so the map depends on the mesh and the light's matrices only. Stored
 // weighted by w (position x w, w) so that the mipmaps (LightDepthPass) average the surface and
-// leave out the texels that saw nothing (w = 0); the normal faces the light.
+// leave out the texels that saw nothing (w = 0); the normal faces the light. Beside the normal,
+// a = (its area) x cos x (1 - cos)^5, Schlick's grazing term of the light the surface reflects
+// (bounce.glsl: the glossy emitters; area x cos = w + a / 2, so the gather forms the Fresnel
+// factor F0 + (1 - F0)(1 - cos)^5 from w and a with the stone's F0).
 #include "principled_entry.glsl"
 in vec3 v_world_pos;
 in vec3 v_world_normal;
@@ -23,7 +26,7 @@ uniform vec3 u_light_dir;       // directional light: unit vector the light trav
 uniform int u_light_directional;
 layout(location = 0) out vec2 o_distance_cos;  // distance, entry cosine
 layout(location = 1) out vec4 o_bounce_position;  // world position x w, w (scene units^2)
-layout(location = 2) out vec4 o_bounce_normal;    // unit normal toward the light
+layout(location = 2) out vec4 o_bounce_normal;    // unit normal toward the light, a (scene units^2)
 
 void main() {
   vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
@@ -36,6 +39,7 @@ void main() {
   // texel's edges on it).
   float area = length(cross(dFdx(v_world_pos), dFdy(v_world_pos)));
   float w = area * abs(c) * principled_entry(abs(c));
+  float m = 1.0 - abs(c), m2 = m * m;
   o_bounce_position = vec4(v_world_pos * w, w);
-  o_bounce_normal = vec4(n, 0.0);
+  o_bounce_normal = vec4(n, area * abs(c) * (m2 * m2 * m));
 }

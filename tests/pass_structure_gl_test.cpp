@@ -250,7 +250,11 @@ TEST_F(PassFixture, HalfResolutionBlurIsCloseToFullResolution) {
   EXPECT_TRUE(renderer.passTimes(true).ran[Pass::Lighting]) << "the resolution is an input of the blur";
   const double diff = meanAbsDiff(full, half);
   EXPECT_GT(diff, 0.0) << "they are different computations";
-  EXPECT_LT(diff, 1.0) << "mean difference in 8-bit levels";
+  // 1.0 until session 9; the bounce read at points of the light's map (bounce.glsl,
+  // BOUNCE_LOD_FINER) varies more between the gather's points, which follow the lighting
+  // resolution (one per 4 x 4 lighting texels): 1.012 here since (`marble compare` of the two at
+  // 128²: relative RMSE 0.093 on main, 0.095 after).
+  EXPECT_LT(diff, 1.1) << "mean difference in 8-bit levels";
   // Silhouettes: no rim of pixels turns dark or light where the half-resolution blur has no
   // coverage (the outline alone is about 800 pixels here); isolated pixels at shadow edges
   // and depth jumps may differ.

@@ -37,10 +37,11 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // here, level 4 of session 7's 256² map: texels 64 of the full map's wide either way, so the
       // levels it reads are the same to within how the rasterizer covers a texel, and the draw
       // and its mipmaps cost less (docs/performance.md, "The bounce gathered coarsely"). 32-bit:
-      // w is a texel's area, ~1e-5 scene units^2, below half float's normal range.
+      // w is a texel's area, ~1e-5 scene units^2, below half float's normal range (and so is the
+      // glossy weight a in the normal's alpha).
       bounceSize_(std::max(size / 8, 1)),
       bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
-      bounceNormal_(makeMipmapped(GL_RGBA16F, bounceSize_)),
+      bounceNormal_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
       fbo_(gl::Framebuffer::create()),
       bounceFbo_(gl::Framebuffer::create()) {

@@ -16,15 +16,16 @@ public:
   void run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light);
   GLuint distanceTexture() const { return distance_.id(); }
   GLuint depthTexture() const { return depth_.id(); }  // compare mode on, for sampler2DShadow
-  // The reflective shadow map: world position x w, w (RGBA32F) and the unit normal (RGBA16F),
-  // mipmapped: a level's texel is the w-weighted mean of the texels under it.
+  // The reflective shadow map: world position x w, w (RGBA32F) and the unit normal with the
+  // glossy emitters' grazing weight a (RGBA32F: a is an area, like w), mipmapped: a level's
+  // texel is the w-weighted mean of the texels under it.
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
   int size() const { return size_; }
-  // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 8 (its
+  // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
   // mipmaps a third more) + depth 4 at its own size.
   size_t bytes() const {
-    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 24 * 4 / 3);
+    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3);
   }
   PassTimer& timer() { return timer_; }
 

@@ -24,8 +24,8 @@ layout(location = 0) out vec4 o_color;
 layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_entering;
 uniform vec2 u_direction;          // (1,0) then (0,1)
 uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans in texels)
-uniform float u_step_mm;           // spacing of the taps, mm (u_reach_mm / u_taps)
-uniform vec3 u_weights[MAX_TAPS + 1];  // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
+uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
+uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
 
 // MAX_TAPS: render/shader_constants.h
 
@@ -40,7 +40,7 @@ void main() {
   float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {
-    vec2 t = vec2(h) + 0.5 + u_direction * (float(i) * u_step_mm * texels_per_mm);
+    vec2 t = vec2(h) + 0.5 + u_direction * (sign(float(i)) * u_offsets_mm[abs(i)] * texels_per_mm);
     vec4 e = texture(u_entering, t / input_size);
     // Off the stone, or across a silhouette (more than the reach away in depth): left out. A
     // tap between stone and background reads a depth scaled down by its coverage, so it is

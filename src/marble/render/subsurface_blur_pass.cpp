@@ -10,6 +10,13 @@ namespace marble {
 namespace {
 // Taps per side at most (the shader's MAX_TAPS).
 constexpr int kMaxTaps = shader::MAX_TAPS;
+// Taps per side per square root of the reach in blur texels. The taps are spaced quadratically
+// (subsurfaceKernel), so 1.5 sqrt(texels) of them put the first under half a texel from the
+// centre, where the profile is steepest, and the last two 1.3 sqrt(texels) apart. (1 sqrt(texels):
+// SSIM against Cycles the same to 0.001, but the outer taps so far apart that a back-lit sphere's
+// glow shows a step, tests/transmission_seams_gl_test.cpp at 1.02x its threshold. A tap per texel,
+// up to 9: the blur pass 2.2x as costly on the dragon at 800x800, SSIM the same to 0.001.)
+constexpr float kTapsPerRootTexel = 1.5f;
 }  // namespace
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
@@ -47,14 +54,10 @@ float pixelsPerMmAtUnitDepth(const CameraMatrices& camera, const Scene& scene, i
 
 int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height) {
   // The widest the profile can be on screen: at the near plane (fitted to the object's
-  // bounding sphere, so no surface is nearer), in blur texels. The taps are spaced
-  // quadratically (subsurfaceKernel): sqrt(texels) of them put the first a texel from the
-  // centre, where the profile is steepest, and the last at the reach. (A tap per texel, up to
-  // 9: the blur pass 2.2x as costly on the dragon at 800x800, for SSIM within 0.001 against
-  // Cycles on the reference scenes; docs/quality.md.)
+  // bounding sphere, so no surface is nearer), in blur texels.
   const float texels = subsurfaceReachMm(scene.material) * pixelsPerMmAtUnitDepth(camera, scene, height) /
                        (std::max(camera.near, 1e-3f) * static_cast<float>(subsurfaceScale(scene.render)));
-  return std::clamp(static_cast<int>(std::ceil(std::sqrt(texels))), 1, kMaxTaps);
+  return std::clamp(static_cast<int>(std::ceil(kTapsPerRootTexel * std::sqrt(texels))), 1, kMaxTaps);
 }
 
 void setSubsurfaceUniforms(const gl::Program& p, const CameraMatrices& camera, const Scene& scene, int height) {

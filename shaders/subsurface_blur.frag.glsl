@@ -2,7 +2,8 @@
 // Screen-space subsurface scattering (after Jimenez et al. 2015, "Separable Subsurface
 // Scattering"): the light that entered the stone is spread over the surface by a diffusion
 // profile, one axis per pass. The profile is Burley's normalized diffusion (Christensen &
-// Burley 2015): R(r) = (exp(-r/d) + exp(-r/(3d))) / (8 pi d r), with d per channel in mm;
+// Burley 2015): R(r) = (exp(-r/d) + exp(-r/(3d))) / (8 pi d r), with d per channel in mm fitted
+// to Cycles' random walk, each pass weighted by its 1D marginal (src/marble/render/subsurface_profile.h);
 // its width on screen follows the millimetre scale and the surface's depth, and samples
 // across a silhouette (a depth jump, or the background) are left out.
 //
@@ -33,8 +34,7 @@ void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);
   vec2 input_size = vec2(textureSize(u_entering, 0));
   float depth = texelFetch(u_entering, h, 0).a;
-  // Blur texels per mm at this depth (taps are about a texel apart where the profile is widest,
-  // subsurfaceTaps). Each tap is read with bilinear filtering at its exact distance: rounded to
+  // Blur texels per mm at this depth (the taps' distances grow quadratically, subsurfaceTaps). Each tap is read with bilinear filtering at its exact distance: rounded to
   // the nearest texel, narrow profiles lost their shape (SSIM against Cycles on dragon-front
   // 0.765 against 0.757; docs/quality.md).
   float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));

@@ -7,7 +7,7 @@
 // Burley 2015), with d fitted to the random walk Cycles' RANDOM_WALK runs in the same stone
 // (tools/walk_profile.cpp: cosine entry, isotropic flights of mean 1/sigma_t, single-scattering
 // albedo sigma_s/sigma_t, at most 256 flights; d chosen so Burley's radial CDF matches the walk's
-// between its 5th and 99th percentiles). docs/quality.md, "The diffusion profile", gives the error.
+// between its 5th and 98th percentiles). docs/quality.md, "The diffusion profile", gives the error.
 #include <array>
 #include <glm/vec3.hpp>
 

@@ -2,7 +2,8 @@
 // Screen-space subsurface scattering (after Jimenez et al. 2015, "Separable Subsurface
 // Scattering"): the light that entered the stone is spread over the surface by a diffusion
 // profile, one axis per pass. The profile is Burley's normalized diffusion (Christensen &
-// Burley 2015): R(r) = (exp(-r/d) + exp(-r/(3d))) / (8 pi d r), with d per channel in mm;
+// Burley 2015): R(r) = (exp(-r/d) + exp(-r/(3d))) / (8 pi d r), with d per channel in mm fitted
+// to Cycles' random walk, each pass weighted by its 1D marginal (src/marble/render/subsurface_profile.h);
 // its width on screen follows the millimetre scale and the surface's depth, and samples
 // across a silhouette (a depth jump, or the background) are left out.
 //
@@ -24,8 +25,8 @@ layout(location = 0) out vec4 o_color;
 layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_entering;
 uniform vec2 u_direction;          // (1,0) then (0,1)
 uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans in texels)
-uniform float u_step_mm;           // spacing of the taps, mm (u_reach_mm / u_taps)
-uniform vec3 u_weights[MAX_TAPS + 1];  // burley_1d(i * step) for i = 0..u_taps, computed on the CPU
+uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
+uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
 
 // MAX_TAPS: render/shader_constants.h
 
@@ -33,14 +34,13 @@ void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);
   vec2 input_size = vec2(textureSize(u_entering, 0));
   float depth = texelFetch(u_entering, h, 0).a;
-  // Blur texels per mm at this depth (taps are about a texel apart where the profile is widest,
-  // subsurfaceTaps). Each tap is read with bilinear filtering at its exact distance: rounded to
+  // Blur texels per mm at this depth (the taps' distances grow quadratically, subsurfaceTaps). Each tap is read with bilinear filtering at its exact distance: rounded to
   // the nearest texel, narrow profiles lost their shape (SSIM against Cycles on dragon-front
   // 0.765 against 0.757; docs/quality.md).
   float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {
-    vec2 t = vec2(h) + 0.5 + u_direction * (float(i) * u_step_mm * texels_per_mm);
+    vec2 t = vec2(h) + 0.5 + u_direction * (sign(float(i)) * u_offsets_mm[abs(i)] * texels_per_mm);
     vec4 e = texture(u_entering, t / input_size);
     // Off the stone, or across a silhouette (more than the reach away in depth): left out. A
     // tap between stone and background reads a depth scaled down by its coverage, so it is

@@ -10,16 +10,14 @@ namespace marble {
 namespace {
 // Taps per side at most (the shader's MAX_TAPS).
 constexpr int kMaxTaps = shader::MAX_TAPS;
-// Taps a texel apart: the profile sampled as finely as the (bilinearly read) light it blurs.
-// (Half a texel apart: twice the taps, +1 ms on the dragon at 800x800, for SSIM against Cycles
-// within +-0.006 on the reference scenes, docs/quality.md.)
-constexpr float kTexelsPerTap = 1.0f;
+// Taps per side per square root of the reach in blur texels. The taps are spaced quadratically
+// (subsurfaceKernel), so 1.5 sqrt(texels) of them put the first under half a texel from the
+// centre, where the profile is steepest, and the last two 1.3 sqrt(texels) apart. (1 sqrt(texels):
+// SSIM against Cycles the same to 0.001, but the outer taps so far apart that a back-lit sphere's
+// glow shows a step, tests/transmission_seams_gl_test.cpp at 1.02x its threshold. A tap per texel,
+// up to 9: the blur pass 2.2x as costly on the dragon at 800x800, SSIM the same to 0.001.)
+constexpr float kTapsPerRootTexel = 1.5f;
 }  // namespace
-
-glm::vec3 burleyShapeD(const Material& m) {
-  const float albedo = 0.8f;
-  return 1.0f / (glm::max(m.sigma_a_mm + m.sigma_s_mm, glm::vec3(1e-4f)) * (1.85f - albedo));
-}
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
@@ -46,11 +44,6 @@ void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTe
   gl::attachSurfaceDepth(resultFbo_.id(), depthTexture);
 }
 
-float subsurfaceReachMm(const Material& m) {
-  const glm::vec3 d = burleyShapeD(m);
-  return 2.0f * std::max(d.r, std::max(d.g, d.b));
-}
-
 namespace {
 float pixelsPerMmAtUnitDepth(const CameraMatrices& camera, const Scene& scene, int height) {
   // Pixels per scene unit at view distance 1 (full resolution): proj[1][1] maps tan(fov/2)
@@ -64,7 +57,7 @@ int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height)
   // bounding sphere, so no surface is nearer), in blur texels.
   const float texels = subsurfaceReachMm(scene.material) * pixelsPerMmAtUnitDepth(camera, scene, height) /
                        (std::max(camera.near, 1e-3f) * static_cast<float>(subsurfaceScale(scene.render)));
-  return std::clamp(static_cast<int>(std::ceil(texels / kTexelsPerTap)), 1, kMaxTaps);
+  return std::clamp(static_cast<int>(std::ceil(kTapsPerRootTexel * std::sqrt(texels))), 1, kMaxTaps);
 }
 
 void setSubsurfaceUniforms(const gl::Program& p, const CameraMatrices& camera, const Scene& scene, int height) {
@@ -80,20 +73,21 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   timer_.begin();
   gl::setSurfaceOnlyScreenPassState();
   glViewport(0, 0, width_, height_);
-  // The taps' weights: the 1D Burley profile exp(-x/d) + exp(-x/(3d)) at x = i * step, out to
-  // 2 x the widest d -- with as many taps as that reach spans on screen (the dragon filling an
-  // 800-pixel frame needs 4 per side, not 9).
+  // The taps: the diffusion profile's marginal (subsurface_profile.h) out to its reach, with as
+  // many taps as that reach spans on screen (the dragon filling an 800-pixel frame: all 9).
+  // Cut again only when the stone or the tap count changes.
   const glm::vec3 d = burleyShapeD(scene.material);
   const int taps = subsurfaceTaps(camera, scene, height);
-  const float stepMm = subsurfaceReachMm(scene.material) / static_cast<float>(taps);
-  glm::vec3 weights[kMaxTaps + 1];
-  for (int i = 0; i <= taps; ++i) {
-    const float x = static_cast<float>(i) * stepMm;
-    weights[i] = glm::exp(-x / d) + glm::exp(-x / (3.0f * d));
+  const float reachMm = subsurfaceReachMm(scene.material);
+  if (d != kernelD_ || reachMm != kernelReachMm_ || taps != kernel_.taps || !kernelValid_) {
+    kernel_ = subsurfaceKernel(d, reachMm, taps);
+    kernelD_ = d;
+    kernelReachMm_ = reachMm;
+    kernelValid_ = true;
   }
-  glProgramUniform3fv(program_.id(), program_.location("u_weights"), taps + 1, &weights[0].x);
-  program_.set("u_taps", taps);
-  program_.set("u_step_mm", stepMm);
+  glProgramUniform3fv(program_.id(), program_.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
+  glProgramUniform1fv(program_.id(), program_.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
+  program_.set("u_taps", kernel_.taps);
   setSubsurfaceUniforms(program_, camera, scene, height);
   glUseProgram(program_.id());
   glBindVertexArray(emptyVao_.id());

@@ -6,6 +6,7 @@
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
+#include "marble/render/subsurface_profile.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
 
@@ -35,23 +36,19 @@ private:
   gl::Framebuffer horizontalFbo_, resultFbo_;
   int width_ = 0, height_ = 0;
   PassTimer timer_;
+  // The taps last cut (subsurfaceKernel), and for which stone.
+  SubsurfaceKernel kernel_;
+  glm::vec3 kernelD_{0.0f};
+  float kernelReachMm_ = 0.0f;
+  bool kernelValid_ = false;
 };
-
-// Burley's d per channel in mm from the measured coefficients (Christensen & Burley 2015,
-// "searchlight" parametrization): d = l / s with l = 1 / (sigma_a + sigma_s') the mean free
-// path and s = 1.85 - A + 7 |A - 0.8|^3, A the surface albedo (about 0.8 for marble).
-// (The diffusion length 1/sigma_tr, about 8 mm, blurred far more than Cycles' random walk
-// does: SSIM against it rose from 0.28-0.72 to 0.54-0.83 with this choice; docs/quality.md.)
-glm::vec3 burleyShapeD(const Material& m);
 
 // 2 when the blur runs at half resolution, 1 at full.
 int subsurfaceScale(const RenderSettings& settings);
 
-// How far the blur reaches each way, mm: 2 x the widest d.
-float subsurfaceReachMm(const Material& m);
-
-// Taps per side (1..9): enough that neighbours are at most a blur texel apart where the
-// profile is widest on screen (`height`: the full-resolution frame's).
+// Taps per side (1..9): 1.5 x the square root of the reach in blur texels where the profile is
+// widest on screen (quadratically spaced taps, subsurface_profile.h; `height`: the
+// full-resolution frame's).
 int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height);
 
 // The uniforms of shaders/subsurface_common.glsl: depth range, millimetre scale on screen

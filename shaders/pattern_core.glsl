@@ -375,10 +375,10 @@ PatCells pat_cells_insert(PatCells c, float d, uint h, vec3 v) {
 
 // Half the side of the cube each feature point is jittered over, in the lattice's own units
 // (nearest sites sqrt(3)/2 apart): 11/64, so that 2 r / 1024 is exact in float.
-const float PAT_CELL_JITTER = 0.171875f;
+const float PAT_CELL_JITTER = 0.15625f;
 
 // A jitter in [-r, r) from 10 bits of the hash h (r = PAT_CELL_JITTER; 2 r / 1024 exact).
-float pat_cell_jitter(uint bits) { return float(bits & 1023u) * 0.000335693359375f - PAT_CELL_JITTER; }
+float pat_cell_jitter(uint bits) { return float(bits & 1023u) * 0.00030517578125f - PAT_CELL_JITTER; }
 
 // |v|^2 summed in the search's order.
 float pat_sq(vec3 v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
@@ -406,7 +406,7 @@ vec3 pat_site_offset(uint h, vec3 x) {
 // the jitter trades irregularity (the network's cells vary less in size than Poisson cells)
 // against those cuts; r = 0 would be exact and a regular foam.
 PatCells pat_voronoi(vec3 p, uint salt) {
-  vec3 q = p * 0.79370053f;
+  vec3 q = p * 0.824f;
   float skew = (q.x + q.y + q.z) * 0.33333334f;
   vec3 i = floor(vec3(q.x + skew, q.y + skew, q.z + skew));
   float unskew = (i.x + i.y + i.z) * 0.16666667f;
@@ -455,9 +455,9 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
   // Back to p's units (x 2^(1/3)).
   vec3 dv = c.v2 - c.v1;
-  c.edge = (c.f2 - c.f1) / max(sqrt(dot(dv, dv)), 1e-6f) * 1.2599211f;
-  c.f1 = sqrt(c.f1) * 1.2599211f;
-  c.f2 = sqrt(c.f2) * 1.2599211f;
+  c.edge = (c.f2 - c.f1) / max(sqrt(dot(dv, dv)), 1e-6f) * 1.2135922f;
+  c.f1 = sqrt(c.f1) * 1.2135922f;
+  c.f2 = sqrt(c.f2) * 1.2135922f;
   return c;
 }
 

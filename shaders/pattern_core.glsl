@@ -374,7 +374,7 @@ PatCells pat_cells_insert(PatCells c, float d, uint h, vec3 v) {
 }
 
 // Half the side of the cube each feature point is jittered over, in the lattice's own units
-// (nearest sites sqrt(3)/2 apart): 11/64, so that 2 r / 1024 is exact in float.
+// (nearest sites sqrt(3)/2 apart): 5/32, so that 2 r / 1024 is exact in float (see pat_voronoi).
 const float PAT_CELL_JITTER = 0.15625f;
 
 // A jitter in [-r, r) from 10 bits of the hash h (r = PAT_CELL_JITTER; 2 r / 1024 exact).
@@ -389,22 +389,37 @@ vec3 pat_site_offset(uint h, vec3 x) {
   return vec3(pat_cell_jitter(h) - x.x, pat_cell_jitter(h >> 10u) - x.y, pat_cell_jitter(h >> 20u) - x.z);
 }
 
-// 3D Voronoi F1/F2 at p (cell units: one feature point per unit volume), feature points from the
-// site hash; `salt` picks the family.
+// The hash and the feature point (unskewed, in the lattice's units) of the lattice site at skewed
+// integer coordinates c, as pat_voronoi computes them (it sums the hash's argument from partial
+// products: the same sum mod 2^32); for the tests' exhaustive search.
+uint pat_site_hash(vec3 c, uint salt) {
+  return pat_hash(uint(c.x + 1048576.0f) * 0x8da6b343u + uint(c.y + 1048576.0f) * 0xd8163841u +
+                  uint(c.z + 1048576.0f) * 0xcb1ab31fu + salt);
+}
+vec3 pat_site_point(vec3 c, uint salt) {
+  uint h = pat_site_hash(c, salt);
+  float u = (c.x + c.y + c.z) * 0.16666667f;
+  return vec3(c.x - u + pat_cell_jitter(h), c.y - u + pat_cell_jitter(h >> 10u), c.z - u + pat_cell_jitter(h >> 20u));
+}
+
+// 3D Voronoi F1/F2 at p (cell units), feature points from the site hash; `salt` picks the family.
 //
 // The sites are the body-centred cubic lattice (the lattice of 3D simplex noise: Z^3 skewed by
-// (x+y+z)/3, unskewed by -(x+y+z)/6; two sites per unit cube, so p is scaled by 2^(-1/3) to keep
-// one per unit volume), each moved by a jitter of at most r = 11/64 along each axis, and the
-// search looks only at the 4 corners of the lattice tetrahedron (the simplex) that contains the
-// point, instead of a 2 x 2 x 2 block of 8 jittered cube cells. A jitter this small keeps the two
-// nearest feature points among the 4 almost always where it matters, near a face (the vein):
-// measured against a search of all 125 sites around the point (2 million random points), the
-// pair is wrong at 1.2-2.1 % of the points within 0.05-0.3 cells of a face, against 2.4-2.8 %
-// for the previous 8-cell search with jitter 0.8 (tests/vein_voronoi_test.cpp checks the rate).
-// Where it is wrong the vein shows a short straight cut, hidden by the warp. The bound is not
-// exact for any r > 0 (near a site, 8 neighbours are equally near and only 3 are corners), so
-// the jitter trades irregularity (the network's cells vary less in size than Poisson cells)
-// against those cuts; r = 0 would be exact and a regular foam.
+// (x+y+z)/3, unskewed by -(x+y+z)/6; two sites per unit cube of its own units), each moved by a
+// jitter of at most r = 5/32 along each axis, and the search looks only at the 4 corners of the
+// lattice tetrahedron (the simplex) that contains the point, instead of the previous 2 x 2 x 2
+// block of 8 cube cells with feature points jittered over 80 % of each cell: half the cells.
+// p is scaled by 0.824 into the lattice's units (1.12 sites per unit volume of p) so that the
+// network's face area per unit volume -- the veins' length per unit area in any slice -- is the
+// previous search's: 2.70 against 2.71 per cell unit (the fraction of random points within
+// e/2 of a face, divided by e). No jitter r > 0 keeps the two nearest feature points always
+// among the 4 corners (near a site its 8 nearest neighbours are equally far and only 3 are
+// corners), but near a face, where a vein is drawn, they almost always are: against a search
+// of all 125 sites around the point (2 million random points), the pair is wrong at 0.7-1.2 %
+// of the points within 0.05-0.3 cell units of a face, against 2.4-2.8 % for the previous 8-cell
+// search (tests/vein_voronoi_test.cpp checks the rate and the face area). Where it is wrong a
+// vein shows a short straight cut, hidden by the warp. The jitter trades irregularity (r = 0:
+// exact, and a regular foam of truncated octahedra) against those cuts (r = 0.175: 1.4-2.1 %).
 PatCells pat_voronoi(vec3 p, uint salt) {
   vec3 q = p * 0.824f;
   float skew = (q.x + q.y + q.z) * 0.33333334f;
@@ -453,7 +468,7 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   c = pat_cells_insert(c, pat_sq(v), h, v);
   // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
   // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
-  // Back to p's units (x 2^(1/3)).
+  // Back to p's units (1 / 0.824).
   vec3 dv = c.v2 - c.v1;
   c.edge = (c.f2 - c.f1) / max(sqrt(dot(dv, dv)), 1e-6f) * 1.2135922f;
   c.f1 = sqrt(c.f1) * 1.2135922f;

@@ -199,6 +199,13 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
 bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
 VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
+VeinCellsProbe veinVoronoiProbe(glm::vec3 p, uint32_t salt) {
+  const patglsl::PatCells c = patglsl::pat_voronoi(p, salt);
+  return {c.h1, c.h2, c.edge};
+}
+glm::vec3 veinSitePoint(glm::vec3 site, uint32_t salt) { return patglsl::pat_site_point(site, salt); }
+uint32_t veinSiteHash(glm::vec3 site, uint32_t salt) { return patglsl::pat_site_hash(site, salt); }
+
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);
   const bool alongX = step.y == 0.0f && step.z == 0.0f;

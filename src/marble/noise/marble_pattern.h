@@ -81,6 +81,18 @@ struct VeinRowCounts {
 bool veinRowsUseLanes();
 VeinRowCounts veinRowCounts();
 
+// The vein model's Voronoi search (pattern_core.glsl pat_voronoi) at p in cell units, for the
+// tests: the hashes of the nearest and second-nearest sites and twice the distance to the face
+// between them (cell units); and the feature point of the lattice site at skewed integer
+// coordinates `site` (pat_site_point, the lattice's own units: p * 0.824), for an exhaustive search.
+struct VeinCellsProbe {
+  uint32_t nearest = 0, second = 0;
+  float edge = 0.0f;
+};
+VeinCellsProbe veinVoronoiProbe(glm::vec3 p, uint32_t salt);
+glm::vec3 veinSitePoint(glm::vec3 site, uint32_t salt);
+uint32_t veinSiteHash(glm::vec3 site, uint32_t salt);
+
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
 // pat_vein_turbulence3) at the texel points (xs[i], y, z), by rows as patternRow3; bit-identical
 // to the per-point function.

@@ -72,7 +72,7 @@ TEST(VeinStructureCli, EveryStonePresetBranchesVariesInWidthAndHasVeinsThatEnd) 
     const VeinStructure s = measureTexture(name, "veins.png", "veins-" + name);
     // Branching pooled over four planes (junctions over skeleton pixels): one 256 px slice of a
     // sparse network holds 4-15 junctions, so its density alone swings by a factor of 2-3 from
-    // plane to plane (nero-marquina's measured 0-10 per 1000 px over seven planes, docs/materials.md).
+    // plane to plane (nero-marquina: 0-10 per 1000 px over seven planes, docs/materials.md).
     double junctions = s.junctions, skeleton = s.skeletonPixels;
     for (const char* slice : kMorePlanes) {
       const VeinStructure o = measureTexture(name, "veins.png", "veins-" + name, slice);

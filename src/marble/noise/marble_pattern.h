@@ -64,7 +64,7 @@ glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
 glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
 // A row of object-space points origin + i * step, i < count, the colour and value of each (the
 // fast path of `marble texture`: along x the four turbulence samples by rows; then the model
-// per point with each Voronoi block and grain column computed once per row, marble_pattern.cpp
+// per point with each grain column computed once per row, marble_pattern.cpp
 // "row memo"; on AVX2 CPUs 8 points at a time, vein_lanes.inc). Bit-identical to veinAlbedo /
 // veinPatternValue at the same points (tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);

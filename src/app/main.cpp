@@ -58,6 +58,10 @@ int run(int argc, char** argv) {
                           std::to_string(kInteractionTriangles) +
                           " triangles) and the full mesh on the first still frame: auto (default: on above " +
                           std::to_string(kInteractionMinTriangles) + " triangles), on, off");
+  viewCmd->add_option("--interaction-resolution", view.interactionResolution,
+                      "While the camera, object or light moves, draw every pass at this fraction of the view's width "
+                      "and height, stretched to the view, and at the full resolution on the first still frame "
+                      "(default " + std::to_string(kDefaultInteractionResolution).substr(0, 3) + "; 1: off; at least 0.25)");
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;

@@ -32,4 +32,10 @@ constexpr size_t kInteractionTriangles = 100000;
 constexpr float kInteractionMaxErrorUnits = 0.005f;
 constexpr size_t kInteractionMinTriangles = 250000;
 
+// Dynamic resolution while the view or the light moves (the viewer's `--interaction-resolution`,
+// Renderer::setResolutionScale): half the width and height, a quarter of the pixels, for every
+// mesh (the screen passes cost by the pixel, not by the triangle). docs/performance.md, "Ninth
+// session", measures what it saves and what a moving frame loses; 1 turns it off.
+constexpr float kDefaultInteractionResolution = 0.5f;
+
 }  // namespace marble

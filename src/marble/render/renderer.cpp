@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 
 #include "marble/mesh/mesh_optimize.h"
@@ -179,10 +180,33 @@ void Renderer::reloadShaders() {
   invalidate();  // new passes: nothing they stored survives
 }
 
+void Renderer::setResolutionScale(float scale) {
+  resolutionScale_ = std::clamp(scale, kMinResolutionScale, 1.0f);
+}
+
 Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
                                       int height) {
   adoptLightProxy(false);
   if (!mesh_ || width <= 0 || height <= 0) return {};
+  const int reducedWidth = std::max(1, static_cast<int>(std::lround(static_cast<float>(width) * resolutionScale_)));
+  const int reducedHeight = std::max(1, static_cast<int>(std::lround(static_cast<float>(height) * resolutionScale_)));
+  if (reducedWidth == width && reducedHeight == height) {
+    const FrameToken frame = drawFrame(scene, model, targetFbo, width, height);
+    lastOutput_->resolutionScale = resolutionScale_;
+    return frame;
+  }
+  if (!reducedFrame_ || reducedFrame_->width() != reducedWidth || reducedFrame_->height() != reducedHeight)
+    reducedFrame_.emplace(reducedWidth, reducedHeight);
+  const FrameToken frame = drawFrame(scene, model, reducedFrame_->fbo(), reducedWidth, reducedHeight);
+  glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, reducedWidth, reducedHeight, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  // What the caller's target holds: this scene at the caller's size, drawn at this scale.
+  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision(), resolutionScale_};
+  return frame;
+}
+
+Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
+                                         int height) {
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.ran = {};
   times_.diffuseSource = -1;
@@ -190,7 +214,7 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
   // renderer's token never matches another's frame either. 64 bits do not wrap.
   static std::atomic<uint64_t> lastSerial{0};
   const FrameToken frame(++lastSerial);
-  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision()};
+  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision(), 1.0f};
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
@@ -376,7 +400,8 @@ size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
-         (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
+         (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes() +
+         (reducedFrame_ ? reducedFrame_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() {

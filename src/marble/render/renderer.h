@@ -78,6 +78,17 @@ public:
   MeshDetail meshDetail() const { return detail_; }
   size_t interactionTriangleCount();  // makes the copy if needed
 
+  // Dynamic resolution (interaction detail for the screen passes, as game engines and scan
+  // viewers do it): every pass draws at `scale` of the target's width and height (rounded, at
+  // least 1 pixel) and the finished frame is stretched to the target bilinearly. 1 (default):
+  // full resolution. The viewer lowers it while the camera, the object or the light moves and
+  // sets 1 on the first still frame, which then is exactly what a fresh renderer draws: every
+  // pass that reads the frame size re-runs at the full size (PassInput::FrameSize). Clamped to
+  // [kMinResolutionScale, 1].
+  void setResolutionScale(float scale);
+  float resolutionScale() const { return resolutionScale_; }
+  static constexpr float kMinResolutionScale = 0.25f;
+
   // The environment map used when a scene says "environment": "map" (uploaded here, once; the
   // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
   // a scene gets no environment light.
@@ -121,7 +132,8 @@ public:
   // no pass at all. The caller drops its token (an empty one) when it makes a new target or
   // draws into it by other means. The target's GL name is not compared: GL reuses names.
   bool isCurrent(const Scene& scene, const glm::mat4& model, FrameToken shown, int width, int height) const {
-    return lastOutput_ && *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision()} &&
+    return lastOutput_ &&
+           *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision(), resolutionScale_} &&
            !(lightProxyJob_ && lightProxyJob_->ready());
   }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
@@ -181,6 +193,7 @@ private:
     FrameToken frame;  // never empty here
     int width = 0, height = 0;
     uint64_t stateRevision = 0;  // PassCache::stateRevision
+    float resolutionScale = 1.0f;
     bool operator==(const OutputKey&) const = default;
   };
   std::optional<OutputKey> lastOutput_;  // empty: no frame is current
@@ -188,6 +201,11 @@ private:
   std::optional<FrameInputs> lastFrame_;
   ScreenRect lastRect_{};
   std::optional<OffscreenTarget> hdrReadback_;
+
+  float resolutionScale_ = 1.0f;
+  std::optional<OffscreenTarget> reducedFrame_;  // the frame at resolutionScale_, before stretching
+  // One frame at the size the passes draw (render() stretches it when the scale is below 1).
+  FrameToken drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
 
   PostInputs postInputs() const;
   PassTimer& timerOf(Pass p);

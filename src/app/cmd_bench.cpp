@@ -85,7 +85,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                      std::to_string(kLightProxyMinTriangles) + " triangles; off: the full mesh (to compare)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--interaction-detail", o.interactionDetail,
-                 "on: every measured frame draws the camera's passes from the interaction copy (about " +
+                 "on: every measured frame draws the camera's passes from the interaction copy (at most about " +
                      std::to_string(kInteractionTriangles) +
                      " triangles), as the viewer does while the view moves; off (default): the full mesh")
       ->check(CLI::IsMember({"on", "off"}));

@@ -54,7 +54,7 @@ int run(int argc, char** argv) {
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from $MARBLE_SHADER_DIR, else the source tree's shaders/");
   viewCmd->add_option("--turntable", view.turntable, "Start turning: off (default), object or light (the panel's turntable)");
   viewCmd->add_option("--interaction-detail", view.interactionDetail,
-                      "While the camera or object moves, draw a simplified mesh (about " +
+                      "While the camera or object moves, draw a simplified mesh (at most about " +
                           std::to_string(kInteractionTriangles) +
                           " triangles) and the full mesh on the first still frame: auto (default: on above " +
                           std::to_string(kInteractionMinTriangles) + " triangles), on, off");

@@ -28,7 +28,7 @@ void drawInteractionDetailSetting(ViewerState& s) {
   int current = static_cast<int>(s.interactionDetail);
   if (ImGui::Combo("detail moving", &current, kNames, 3)) s.interactionDetail = static_cast<InteractionDetailSetting>(current);
   static const std::string kTip =
-      "Interaction detail: while the camera or the object moves, draw a simplified mesh (about " +
+      "Interaction detail: while the camera or the object moves, draw a simplified mesh (at most about " +
       std::to_string(kInteractionTriangles) +
       " triangles) and the full mesh again on the first still frame, which is then exactly the full picture. "
       "auto: on for meshes above " + std::to_string(kInteractionMinTriangles) + " triangles.";

@@ -69,8 +69,9 @@ public:
   void waitForLightProxy() { adoptLightProxy(true); }
 
   // Which mesh the camera's passes (geometry, floor) draw: the full mesh, or -- while the view
-  // moves -- the interaction copy (about kInteractionTriangles, render/mesh_detail.h; made at
-  // the first request for this mesh; a mesh no larger than that is its own copy). Changing it
+  // moves -- the interaction copy (at most about kInteractionTriangles, render/mesh_detail.h:
+  // the light's proxy where that is small enough, else made at the first request for this mesh;
+  // a mesh without a proxy and no larger than that is its own copy). Changing it
   // re-runs the camera's passes, so the first Full frame after Interaction ones is exactly
   // what a fresh renderer draws. The light's pass is not affected.
   enum class MeshDetail { Full, Interaction };
@@ -165,6 +166,7 @@ private:
   bool drawOrderOptimized_ = true;
   std::optional<GpuMesh> interactionMesh_;  // made at the first Interaction request
   bool interactionIsFull_ = false;          // the mesh is small enough to be its own copy
+  bool interactionIsLightProxy_ = false;    // the light's proxy is small enough to be the copy
   MeshDetail detail_ = MeshDetail::Full;
   void makeLightProxy();
   void useLightProxy(SimplifiedMesh proxy);

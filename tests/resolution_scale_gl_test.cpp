@@ -62,28 +62,38 @@ std::pair<ImageRGBA8, ImageRGBA8> movingThenStill(const Scene& s, bool turnLight
 
 }  // namespace
 
+// The renderer stretches only where the reduced frame has content and clears the rest to the
+// background (Renderer::stretchReducedFrame): the same picture as stretching the whole frame.
 TEST(ResolutionScale, ReducedFrameIsAFreshSmallFrameStretched) {
   glContext();
-  const Scene s = marbleScene();
-  Renderer reduced;
-  reduced.setMesh(builtinMesh("sculpture"));
-  reduced.setResolutionScale(0.5f);
-  const ImageRGBA8 got = renderImage(reduced, s);
+  for (const float scale : {0.5f, 0.3f})
+    for (const Antialias aa : {Antialias::Fxaa, Antialias::None})
+      for (const bool stage : {false, true}) {
+        SCOPED_TRACE(testing::Message() << "scale " << scale << ", " << antialiasName(aa) << (stage ? ", stage" : ""));
+        Scene s = marbleScene();
+        s.render.antialias = aa;
+        s.render.ground = stage;
+        Renderer reduced;
+        reduced.setMesh(builtinMesh("sculpture"));
+        reduced.setResolutionScale(scale);
+        const ImageRGBA8 got = renderImage(reduced, s);
 
-  Scene small = s;
-  small.render.width = small.render.height = kSize / 2;
-  Renderer fresh;
-  fresh.setMesh(builtinMesh("sculpture"));
-  OffscreenTarget smallTarget(kSize / 2, kSize / 2), target(kSize, kSize);
-  fresh.render(small, glm::mat4(1.0f), smallTarget.fbo(), kSize / 2, kSize / 2);
-  glBlitNamedFramebuffer(smallTarget.fbo(), target.fbo(), 0, 0, kSize / 2, kSize / 2, 0, 0, kSize, kSize,
-                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  const ImageRGBA8 expected = target.read();
-  EXPECT_TRUE(got.pixels == expected.pixels) << "mean difference " << meanAbsDiff(got, expected);
-  // Negative control: the full frame is another picture.
-  const ImageRGBA8 full = freshFull(s);
-  EXPECT_FALSE(got.pixels == full.pixels);
-  EXPECT_GT(meanAbsDiff(got, full), 0.05);
+        const int small = static_cast<int>(std::lround(kSize * scale));
+        Scene smallScene = s;
+        smallScene.render.width = smallScene.render.height = small;
+        Renderer fresh;
+        fresh.setMesh(builtinMesh("sculpture"));
+        OffscreenTarget smallTarget(small, small), target(kSize, kSize);
+        fresh.render(smallScene, glm::mat4(1.0f), smallTarget.fbo(), small, small);
+        glBlitNamedFramebuffer(smallTarget.fbo(), target.fbo(), 0, 0, small, small, 0, 0, kSize, kSize,
+                               GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        const ImageRGBA8 expected = target.read();
+        EXPECT_TRUE(got.pixels == expected.pixels) << "mean difference " << meanAbsDiff(got, expected);
+        // Negative control: the full frame is another picture.
+        const ImageRGBA8 full = freshFull(s);
+        EXPECT_FALSE(got.pixels == full.pixels);
+        EXPECT_GT(meanAbsDiff(got, full), 0.05);
+      }
 }
 
 TEST(ResolutionScale, StillFrameAfterTheCameraMovedEqualsAFreshRender) {

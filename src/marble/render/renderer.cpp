@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "marble/mesh/mesh_optimize.h"
 #include "marble/render/mesh_detail.h"
@@ -46,6 +47,13 @@ void Renderer::setTurbulenceGridEnabled(bool enabled) {
 }
 
 namespace {
+ScreenRect boundingUnion(const ScreenRect& a, const ScreenRect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+  const int x1 = std::max(a.x + a.width, b.x + b.width), y1 = std::max(a.y + a.height, b.y + b.height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
 
@@ -206,11 +214,36 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
   if (!reducedFrame_ || reducedFrame_->width() != reducedWidth || reducedFrame_->height() != reducedHeight)
     reducedFrame_.emplace(reducedWidth, reducedHeight);
   const FrameToken frame = drawFrame(scene, model, reducedFrame_->fbo(), reducedWidth, reducedHeight);
-  glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, reducedWidth, reducedHeight, 0, 0, width, height,
-                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  stretchReducedFrame(scene, targetFbo, width, height);
   // What the caller's target holds: this scene at the caller's size, drawn at this scale.
   lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision(), resolutionScale_};
   return frame;
+}
+
+void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int width, int height) {
+  const int rw = reducedFrame_->width(), rh = reducedFrame_->height();
+  // The stretch maps blocks of srcX × srcY reduced pixels onto blocks of dstX × dstY target
+  // pixels exactly (integer corners: a part of the frame is sampled where the whole frame's
+  // stretch samples it).
+  const int gx = std::gcd(width, rw), gy = std::gcd(height, rh);
+  const int srcX = rw / gx, srcY = rh / gy, dstX = width / gx, dstY = height / gy;
+  if (!contentRect_) {
+    glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, rw, rh, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_LINEAR);
+    return;
+  }
+  // Outside contentRect_ the reduced frame is the flat background (as FXAA and the post pass
+  // clear it), which a bilinear stretch leaves as it is: clear the target to it and stretch
+  // only the rest -- grown by 2 reduced pixels (the filter's reach), out to whole blocks. On
+  // llvmpipe the stretch of a whole 1080p frame cost ≈ 15-30 ms at load 10 (performance.md).
+  const ScreenRect& c = *contentRect_;
+  const int x0 = std::max(0, c.x - 2) / srcX, x1 = std::min(gx, (c.x + c.width + 2 + srcX - 1) / srcX);
+  const int y0 = std::max(0, c.y - 2) / srcY, y1 = std::min(gy, (c.y + c.height + 2 + srcY - 1) / srcY);
+  const glm::vec4 background(glm::clamp(scene.render.background, 0.0f, 1.0f), 1.0f);
+  glClearNamedFramebufferfv(targetFbo, GL_COLOR, 0, &background.x);
+  if (x1 <= x0 || y1 <= y0) return;
+  glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, x0 * srcX, y0 * srcY, x1 * srcX, y1 * srcY, x0 * dstX,
+                         y0 * dstY, x1 * dstX, y1 * dstY, GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
@@ -227,6 +260,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
     times_.ran[Pass::Floor] = true;
+    contentRect_.reset();  // the floor pass draws the whole frame
     return frame;
   }
   const bool marble = scene.render.mode == RenderMode::Marble;
@@ -338,16 +372,20 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                        fxaa);
     times_.ran[Pass::Stage] = true;
   }
+  // The light's map, or a stage around the object: content everywhere.
+  const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || times_.ran[Pass::Stage];
+  contentRect_.reset();
+  if (!wholeFrame) contentRect_ = rect;
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
-    // The light's map, or a stage around the object: content everywhere.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || times_.ran[Pass::Stage];
-    passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
-                      glm::clamp(scene.render.background, 0.0f, 1.0f));
+    const std::vector<ScreenRect>& spans = aaSpans(camera.viewProj * model, width, height, wholeFrame);
+    passes_->fxaa.run(display.texture(), targetFbo, width, height, spans, glm::clamp(scene.render.background, 0.0f, 1.0f));
+    if (contentRect_)  // FXAA writes its spans (the mesh's tiles, grown): they hold content too
+      for (const ScreenRect& r : spans) contentRect_ = boundingUnion(*contentRect_, r);
     times_.ran[Pass::Fxaa] = true;
   }
   return frame;

@@ -208,6 +208,11 @@ private:
   std::optional<OffscreenTarget> reducedFrame_;  // the frame at resolutionScale_, before stretching
   // One frame at the size the passes draw (render() stretches it when the scale is below 1).
   FrameToken drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
+  // Where the last drawFrame wrote anything but the flat background (its pixels); empty: it may
+  // have content anywhere (the floor, the light's map, a stage).
+  std::optional<ScreenRect> contentRect_;
+  // reducedFrame_ stretched to the caller's target (bilinear), only where it has content.
+  void stretchReducedFrame(const Scene& scene, GLuint targetFbo, int width, int height);
 
   PostInputs postInputs() const;
   PassTimer& timerOf(Pass p);

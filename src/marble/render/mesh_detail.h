@@ -13,7 +13,7 @@ namespace marble {
 // than half of one of its texels moves the map's samples by no more than the map's own
 // rounding, so the proxy keeps every collapse under that. It aims at a quarter of the
 // triangles, at most kLightProxyMaxTriangles (what the light's pass draws in the time of the
-// 100 k dragon's); on detailed meshes the error cap binds first (the dragon: 26 k triangles).
+// 100 k dragon's); on detailed meshes the error cap binds first (the dragon: 29,652 triangles).
 constexpr size_t kLightProxyMinTriangles = 60000;
 constexpr double kLightProxyTriangleFraction = 0.25;
 constexpr size_t kLightProxyMaxTriangles = 100000;
@@ -26,7 +26,7 @@ constexpr float lightProxyMaxErrorUnits(int lightMapSize) {
 // draws interactively (the 100 k dragon: ≈ 40 ms a camera frame on llvmpipe) -- with no
 // collapse moving the surface by more than 0.25 % of the normalized mesh's size of 2 (≈ 1 pixel
 // when the mesh fills 800 pixels). Where the light's proxy has no more triangles than that, the
-// proxy is the copy (within half a light texel, 0.0017 units: the dragon draws 26 k triangles
+// proxy is the copy (within half a light texel, 0.0017 units: the dragon draws 29,652 triangles
 // while it moves); otherwise the copy is simplified from the proxy (a few times cheaper than
 // from the full mesh; the two bounds then add up: ≤ 0.0067 units). The viewer turns it on by
 // default above kInteractionMinTriangles: wherever there is a proxy (session 9; it was 250,000).

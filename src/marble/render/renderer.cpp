@@ -140,7 +140,7 @@ const GpuMesh& Renderer::cameraMesh() {
   if (detail_ == MeshDetail::Full || !mesh_) return *mesh_;
   if (!interactionMesh_ && !interactionIsFull_ && !interactionIsLightProxy_) {
     if (lightMesh_ && lightProxyMesh_.triangleCount() <= kInteractionTriangles) {
-      // The light's proxy is the copy (no second one): the dragon's 100 k triangles draw 26 k
+      // The light's proxy is the copy (no second one): the dragon's 100,000 triangles draw 29,652
       // while the view moves, within the proxy's half a light texel (≈ 0.7 pixel at 800²).
       interactionIsLightProxy_ = true;
     } else if (cpuMesh_.triangleCount() <= kInteractionTriangles) {

@@ -124,6 +124,15 @@ TEST(CliBench, MeshDetailOptionsAreReported) {
   EXPECT_EQ(interaction["pass_runs"].value("geometry", 0), 3);
 }
 
+// Dynamic resolution: reported, and the passes still run every camera frame.
+TEST(CliBench, InteractionResolutionIsReported) {
+  EXPECT_EQ(benchJson("").value("resolution_scale", 0.0), 1.0);
+  const auto half = benchJson("--motion camera --interaction-resolution 0.5");
+  EXPECT_EQ(half.value("resolution_scale", 0.0), 0.5);
+  EXPECT_EQ(half["pass_runs"].value("geometry", 0), 3);
+  EXPECT_EQ(half.value("width", 0), 64) << "the target keeps its size";
+}
+
 TEST(CliBench, OtherModesHaveAnAlbedoPass) {
   const auto j = benchJson("--mode paper --motion pattern");
   EXPECT_EQ(j["pass_runs"].value("albedo", -1), 3);
@@ -157,7 +166,7 @@ TEST(CliBench, TablePrintsSpreadPassesAndMemory) {
 TEST(CliBench, BadInputIsOneLineAndExitTwo) {
   for (const std::string& args : {kSmall + " --motion wobble", std::string("bench --width 64 --height 64 --frames 0"), std::string("bench --width 64 --height 64 --warmup -1"),
                                  kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj",
-                                 kSmall + " --turbulence-grid maybe"}) {
+                                 kSmall + " --turbulence-grid maybe", kSmall + " --interaction-resolution 0.1"}) {
     const auto r = runMarble(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
     EXPECT_EQ(countLines(r.output), 1u) << args << "\n" << r.output;

@@ -145,6 +145,12 @@ TEST(ViewerCli, InteractionDetailSettingIsCheckedAndRuns) {
   EXPECT_NE(bad.output.find("--interaction-detail"), std::string::npos) << bad.output;
   const auto on = runMarble("view --frames 4 --width 320 --height 240 --interaction-detail on --turntable object", xvfb());
   EXPECT_EQ(on.exitCode, 0) << on.output;
+  const auto badScale = runMarble("view --frames 1 --interaction-resolution 2", xvfb());
+  EXPECT_EQ(badScale.exitCode, 2) << badScale.output;
+  EXPECT_EQ(lineCount(badScale.output), 1) << badScale.output;
+  EXPECT_NE(badScale.output.find("--interaction-resolution"), std::string::npos) << badScale.output;
+  const auto light = runMarble("view --frames 4 --width 320 --height 240 --interaction-resolution 0.25 --turntable light", xvfb());
+  EXPECT_EQ(light.exitCode, 0) << light.output;
 }
 
 TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {

@@ -3,8 +3,10 @@
 # window under Xvfb with its panel, one value per frame from Mesa's GALLIUM_HUD=frametime written
 # to GALLIUM_HUD_DUMP_DIR; prints the median, p10 and p90 over the frames after the first ten.
 #
-#   tools/bench-viewer.sh [MESH[@UP]] [--turntable object|light|off] [--frames N] [--view WxH]
+#   tools/bench-viewer.sh [MESH[@UP]] [--turntable object|light|off] [--frames N] [--view WxH] [-- VIEW OPTIONS]
 #
+# Options after `--` go to `marble view` (e.g. `-- --interaction-detail off --interaction-resolution 1`
+# for the full picture in every frame).
 # MESH defaults to ../shared/models/dragon.obj@z (not part of the repository). The window is the
 # view plus the panel (390 pixels at scale 1), so --view 800x800 opens a 1190x800 window.
 # `object` turns the model every frame: every pass re-runs, as the paper's program does each frame.
@@ -16,11 +18,13 @@ TURNTABLE=object
 FRAMES=120
 VIEW=800x800
 PANEL=390
+EXTRA=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --turntable) TURNTABLE="$2"; shift 2 ;;
     --frames) FRAMES="$2"; shift 2 ;;
     --view) VIEW="$2"; shift 2 ;;
+    --) shift; EXTRA=("$@"); break ;;
     -*) echo "bench-viewer: unknown option $1" >&2; exit 2 ;;
     *) MESH="$1"; shift ;;
   esac
@@ -37,7 +41,7 @@ dump=$(mktemp -d)
 trap 'rm -rf "$dump"' EXIT
 GALLIUM_HUD=frametime GALLIUM_HUD_DUMP_DIR="$dump" xvfb-run -a -s "-screen 0 $((width + 64))x$((height + 64))x24" \
   "$MARBLE" view "$mesh" --up "$up" --width "$width" --height "$height" --frames "$FRAMES" \
-  --turntable "$TURNTABLE" >/dev/null
+  --turntable "$TURNTABLE" "${EXTRA[@]}" >/dev/null
 python3 - "$dump" "$(basename "$mesh")" "$VIEW" "$TURNTABLE" <<'PY'
 import glob, sys
 values = []

@@ -37,6 +37,9 @@ void printBenchTable(const BenchResult& r) {
   if (r.interactionTriangles > 0)
     std::printf("camera's passes draw the interaction copy: %zu triangles (made in %.1f ms)\n",
                 r.interactionTriangles, r.interactionMs);
+  if (r.resolutionScale < 1.0f)
+    std::printf("every pass draws at %.3g of the width and height, stretched to the target (--interaction-resolution)\n",
+                r.resolutionScale);
   std::printf("\n");
   std::printf("%-24s %9s %9s %9s %9s  %s\n", "ms", "median", "min", "max", "p90", "ran");
   row("frame (wall)", r.frameMs);
@@ -71,6 +74,7 @@ void printBenchJson(const BenchResult& r) {
   j["light_proxy_error_units"] = r.lightProxyErrorUnits;
   j["interaction_triangles"] = r.interactionTriangles;
   j["interaction_ms"] = rounded(r.interactionMs);
+  j["resolution_scale"] = r.resolutionScale;
   j["frame_ms_median"] = rounded(frame.median);
   j["frame_ms_min"] = rounded(frame.min);
   j["frame_ms_max"] = rounded(frame.max);

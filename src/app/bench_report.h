@@ -31,6 +31,7 @@ struct BenchResult {
   float lightProxyErrorUnits = 0;       // meshoptimizer's bound for the proxy (scene units)
   size_t interactionTriangles = 0;      // --interaction-detail on: what the camera's passes draw
   double interactionMs = 0;             // making that copy
+  float resolutionScale = 1.0f;         // --interaction-resolution: the passes' share of width and height
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)
   double uploadMs = 0;      // copying it into GL buffers
   std::string glRenderer, glVersion;

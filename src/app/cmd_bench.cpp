@@ -85,10 +85,15 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                      std::to_string(kLightProxyMinTriangles) + " triangles; off: the full mesh (to compare)")
       ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--interaction-detail", o.interactionDetail,
-                 "on: every measured frame draws the camera's passes from the interaction copy (about " +
+                 "on: every measured frame draws the camera's passes from the interaction copy (at most about " +
                      std::to_string(kInteractionTriangles) +
                      " triangles), as the viewer does while the view moves; off (default): the full mesh")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--interaction-resolution", o.interactionResolution,
+                 "Every measured frame drawn at this fraction of the width and height and stretched to the "
+                 "target (Renderer::setResolutionScale), as the viewer does while the view or the light moves; "
+                 "1 (default): full resolution")
+      ->check(CLI::Range(static_cast<double>(Renderer::kMinResolutionScale), 1.0));
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -137,6 +142,8 @@ int runBenchCommand(const BenchOptions& o) {
       r.interactionMs = wallMs() - t0;
       renderer.setMeshDetail(Renderer::MeshDetail::Interaction);
     }
+    renderer.setResolutionScale(o.interactionResolution);
+    r.resolutionScale = renderer.resolutionScale();
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     Renderer::FrameToken shown;  // the frame `target` holds

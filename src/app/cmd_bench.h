@@ -20,6 +20,7 @@ struct BenchOptions {
   std::string drawOrder = "optimized";  // --draw-order optimized|file
   std::string lightProxy = "on";      // --light-proxy on|off
   std::string interactionDetail = "off";  // --interaction-detail on|off
+  float interactionResolution = 1.0f;      // --interaction-resolution: every frame drawn at this scale
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);

@@ -54,10 +54,14 @@ int run(int argc, char** argv) {
   viewCmd->add_flag("--dev", view.dev, "Development mode: shaders hot-reload (R) from $MARBLE_SHADER_DIR, else the source tree's shaders/");
   viewCmd->add_option("--turntable", view.turntable, "Start turning: off (default), object or light (the panel's turntable)");
   viewCmd->add_option("--interaction-detail", view.interactionDetail,
-                      "While the camera or object moves, draw a simplified mesh (about " +
+                      "While the camera or object moves, draw a simplified mesh (at most about " +
                           std::to_string(kInteractionTriangles) +
                           " triangles) and the full mesh on the first still frame: auto (default: on above " +
                           std::to_string(kInteractionMinTriangles) + " triangles), on, off");
+  viewCmd->add_option("--interaction-resolution", view.interactionResolution,
+                      "While the camera, object or light moves, draw every pass at this fraction of the view's width "
+                      "and height, stretched to the view, and at the full resolution on the first still frame "
+                      "(default " + std::to_string(kDefaultInteractionResolution).substr(0, 3) + "; 1: off; at least 0.25)");
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;

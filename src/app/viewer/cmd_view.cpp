@@ -134,6 +134,7 @@ int runViewCommand(const ViewOptions& o) {
     }
     s.turntableDegPerSec = o.turntableSpeed;
     s.interactionDetail = parseInteractionDetail(o.interactionDetail);
+    s.interactionResolution = parseInteractionResolution(o.interactionResolution);
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
@@ -219,7 +220,10 @@ int runViewCommand(const ViewOptions& o) {
         // drawn again, and an idle viewer costs no rendering.
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
-        renderer.setMeshDetail(detail.next(s.interactionDetail, renderer.triangleCount(), scene.camera, model));
+        const InteractionFrame moving =
+            detail.next(s.interactionDetail, s.interactionResolution, renderer.triangleCount(), scene.camera, scene.light, model);
+        renderer.setMeshDetail(moving.mesh);
+        renderer.setResolutionScale(moving.resolutionScale);
         // A scripted screenshot (--frames N --screenshot) shows the finished picture, light proxy
         // included, whatever the machine's speed.
         if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForLightProxy();

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "../scene_options.h"
+#include "marble/render/mesh_detail.h"
 
 namespace marble {
 
@@ -13,6 +14,7 @@ struct ViewOptions {
   std::string turntable = "off";  // off, object, light: start turning (as the panel's turntable)
   float turntableSpeed = 15.0f;   // degrees per second
   std::string interactionDetail = "auto";  // auto, on, off (interaction_detail.h)
+  float interactionResolution = kDefaultInteractionResolution;  // while moving; 1: off
 };
 
 int runViewCommand(const ViewOptions& o);

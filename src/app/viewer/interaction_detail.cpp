@@ -1,5 +1,6 @@
 #include "interaction_detail.h"
 
+#include <cstdio>
 #include <string>
 
 #include "marble/core/error.h"
@@ -28,14 +29,30 @@ bool interactionDetailApplies(InteractionDetailSetting setting, size_t triangles
   return setting == InteractionDetailSetting::On;
 }
 
-Renderer::MeshDetail InteractionDetailTracker::next(InteractionDetailSetting setting, size_t triangles,
-                                                    const Camera& camera, const glm::mat4& model) {
-  const bool moved = seen_ && (!(camera == lastCamera_) || model != lastModel_);
+float parseInteractionResolution(float scale) {
+  if (!(scale >= Renderer::kMinResolutionScale && scale <= 1.0f)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "expected %g to 1, got %g", static_cast<double>(Renderer::kMinResolutionScale),
+                  static_cast<double>(scale));
+    throw InputError("--interaction-resolution", "", text);
+  }
+  return scale;
+}
+
+InteractionFrame InteractionDetailTracker::next(InteractionDetailSetting meshSetting, float movingResolution,
+                                                size_t triangles, const Camera& camera, const Light& light,
+                                                const glm::mat4& model) {
+  // The mesh only matters to the camera's passes; the resolution to every pass, the light's too.
+  const bool viewMoved = seen_ && (!(camera == lastCamera_) || model != lastModel_);
+  const bool lightMoved = seen_ && !(light == lastLight_);
   seen_ = true;
   lastCamera_ = camera;
+  lastLight_ = light;
   lastModel_ = model;
-  return moved && interactionDetailApplies(setting, triangles) ? Renderer::MeshDetail::Interaction
-                                                               : Renderer::MeshDetail::Full;
+  InteractionFrame f;
+  if (viewMoved && interactionDetailApplies(meshSetting, triangles)) f.mesh = Renderer::MeshDetail::Interaction;
+  if (viewMoved || lightMoved) f.resolutionScale = movingResolution;
+  return f;
 }
 
 }  // namespace marble

@@ -1,14 +1,20 @@
 #pragma once
-// Interaction detail, as scan and CAD viewers do it: while the camera or the object moves, the
-// camera's passes draw a simplified copy of the mesh (Renderer::MeshDetail::Interaction,
-// render/mesh_detail.h); the first frame in which neither moved draws the full mesh, and is
-// then exactly the frame a fresh renderer would draw (tests/mesh_detail_gl_test.cpp). Edits
-// of the material or the light are not "moving": they draw the full mesh.
+// Interaction detail, as scan and CAD viewers and game engines do it, in two independent settings:
+// - the mesh: while the camera or the object moves, the camera's passes draw a simplified copy
+//   of the mesh (Renderer::MeshDetail::Interaction, render/mesh_detail.h);
+// - the resolution: while the camera, the object or the light moves, every pass draws at a
+//   fraction of the view's width and height, stretched to the view (dynamic resolution,
+//   Renderer::setResolutionScale).
+// The first frame in which nothing moved draws the full mesh at the full resolution, and is then
+// exactly the frame a fresh renderer would draw (tests/mesh_detail_gl_test.cpp,
+// tests/resolution_scale_gl_test.cpp). Edits of the material are not "moving": they draw the
+// full picture.
 #include <cstddef>
 #include <string_view>
 
 #include <glm/glm.hpp>
 
+#include "marble/render/mesh_detail.h"
 #include "marble/render/renderer.h"
 #include "marble/scene/scene.h"
 
@@ -20,15 +26,26 @@ InteractionDetailSetting parseInteractionDetail(std::string_view name);  // thro
 std::string_view interactionDetailName(InteractionDetailSetting setting);
 bool interactionDetailApplies(InteractionDetailSetting setting, size_t triangles);
 
-// Remembers the last frame's camera and model; says which detail this frame draws.
+// The resolution while moving: kDefaultInteractionResolution (render/mesh_detail.h) unless told.
+float parseInteractionResolution(float scale);  // throws InputError outside [kMinResolutionScale, 1]
+
+// What one frame draws.
+struct InteractionFrame {
+  Renderer::MeshDetail mesh = Renderer::MeshDetail::Full;
+  float resolutionScale = 1.0f;
+  bool operator==(const InteractionFrame&) const = default;
+};
+
+// Remembers the last frame's camera, light and model; says which detail this frame draws.
 class InteractionDetailTracker {
 public:
-  Renderer::MeshDetail next(InteractionDetailSetting setting, size_t triangles, const Camera& camera,
-                            const glm::mat4& model);
+  InteractionFrame next(InteractionDetailSetting meshSetting, float movingResolution, size_t triangles,
+                        const Camera& camera, const Light& light, const glm::mat4& model);
 
 private:
   bool seen_ = false;
   Camera lastCamera_{};
+  Light lastLight_{};
   glm::mat4 lastModel_{1.0f};
 };
 

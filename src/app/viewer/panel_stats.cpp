@@ -28,13 +28,17 @@ void drawInteractionDetailSetting(ViewerState& s) {
   int current = static_cast<int>(s.interactionDetail);
   if (ImGui::Combo("detail moving", &current, kNames, 3)) s.interactionDetail = static_cast<InteractionDetailSetting>(current);
   static const std::string kTip =
-      "Interaction detail: while the camera or the object moves, draw a simplified mesh (about " +
+      "Interaction detail: while the camera or the object moves, draw a simplified mesh (at most about " +
       std::to_string(kInteractionTriangles) +
       " triangles) and the full mesh again on the first still frame, which is then exactly the full picture. "
       "auto: on for meshes above " + std::to_string(kInteractionMinTriangles) + " triangles.";
   tooltip(kTip.c_str());
   ImGui::SameLine();
   ImGui::TextDisabled(interactionDetailApplies(s.interactionDetail, s.triangles) ? "(on)" : "(off)");
+  ImGui::SliderFloat("resolution moving", &s.interactionResolution, Renderer::kMinResolutionScale, 1.0f, "%.2f");
+  tooltip("Dynamic resolution: while the camera, the object or the light moves, every pass draws at this fraction of "
+          "the view's width and height and the picture is stretched to the view; the first still frame is drawn at "
+          "full resolution, exactly the full picture. 1: off.");
 }
 
 }  // namespace

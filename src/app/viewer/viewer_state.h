@@ -69,6 +69,7 @@ struct ViewerState {
 
   bool vsync = true;
   InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
+  float interactionResolution = kDefaultInteractionResolution;                 // the same; 1: off
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

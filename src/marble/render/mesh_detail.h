@@ -13,7 +13,7 @@ namespace marble {
 // than half of one of its texels moves the map's samples by no more than the map's own
 // rounding, so the proxy keeps every collapse under that. It aims at a quarter of the
 // triangles, at most kLightProxyMaxTriangles (what the light's pass draws in the time of the
-// 100 k dragon's); on detailed meshes the error cap binds first (the dragon: 26 k triangles).
+// 100 k dragon's); on detailed meshes the error cap binds first (the dragon: 29,652 triangles).
 constexpr size_t kLightProxyMinTriangles = 60000;
 constexpr double kLightProxyTriangleFraction = 0.25;
 constexpr size_t kLightProxyMaxTriangles = 100000;
@@ -22,14 +22,22 @@ constexpr float lightProxyMaxErrorUnits(int lightMapSize) {
 }
 
 // Interaction detail (the viewer, `marble bench --interaction-detail`): while the view moves,
-// the camera's passes draw a copy of about this many triangles -- what this machine draws
-// interactively (the 100 k dragon: ≈ 40 ms a camera frame on llvmpipe) -- with no collapse
-// moving the surface by more than 0.25 % of the normalized mesh's size of 2 (≈ 1 pixel when
-// the mesh fills 800 pixels). The viewer turns it on by default above kInteractionMinTriangles.
-// It is simplified from the light's proxy where there is one (a few times cheaper than from
-// the full mesh; the two bounds then add up: ≤ 0.0067 units).
+// the camera's passes draw a copy of at most about this many triangles -- what this machine
+// draws interactively (the 100 k dragon: ≈ 40 ms a camera frame on llvmpipe) -- with no
+// collapse moving the surface by more than 0.25 % of the normalized mesh's size of 2 (≈ 1 pixel
+// when the mesh fills 800 pixels). Where the light's proxy has no more triangles than that, the
+// proxy is the copy (within half a light texel, 0.0017 units: the dragon draws 29,652 triangles
+// while it moves); otherwise the copy is simplified from the proxy (a few times cheaper than
+// from the full mesh; the two bounds then add up: ≤ 0.0067 units). The viewer turns it on by
+// default above kInteractionMinTriangles: wherever there is a proxy (session 9; it was 250,000).
 constexpr size_t kInteractionTriangles = 100000;
 constexpr float kInteractionMaxErrorUnits = 0.005f;
-constexpr size_t kInteractionMinTriangles = 250000;
+constexpr size_t kInteractionMinTriangles = kLightProxyMinTriangles;
+
+// Dynamic resolution while the view or the light moves (the viewer's `--interaction-resolution`,
+// Renderer::setResolutionScale): half the width and height, a quarter of the pixels, for every
+// mesh (the screen passes cost by the pixel, not by the triangle). docs/performance.md, "Ninth
+// session", measures what it saves and what a moving frame loses; 1 turns it off.
+constexpr float kDefaultInteractionResolution = 0.5f;
 
 }  // namespace marble

@@ -53,7 +53,7 @@ enum class PassInput : uint8_t {
   Model,                 // the model matrix
   LightMatrices,         // lightMatrices(scene.light): view-projection, position, direction, range
   CameraMatrices,        // the camera's view-projection (camera and aspect)
-  FrameSize,             // width and height
+  FrameSize,             // width and height the passes draw at (the target's, or less: setResolutionScale)
   Light,                 // scene.light
   Camera,                // scene.camera
   Mode,                  // render.mode

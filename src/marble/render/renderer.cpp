@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "marble/mesh/mesh_optimize.h"
 #include "marble/render/mesh_detail.h"
@@ -45,6 +47,13 @@ void Renderer::setTurbulenceGridEnabled(bool enabled) {
 }
 
 namespace {
+ScreenRect boundingUnion(const ScreenRect& a, const ScreenRect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+  const int x1 = std::max(a.x + a.width, b.x + b.width), y1 = std::max(a.y + a.height, b.y + b.height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
 bool sameMatrix(const glm::mat4& a, const glm::mat4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 }  // namespace
 
@@ -66,6 +75,7 @@ void Renderer::setMesh(const Mesh& mesh) {
   aaSpansWidth_ = 0;  // made anew for this mesh
   interactionMesh_.reset();
   interactionIsFull_ = false;
+  interactionIsLightProxy_ = false;
   makeLightProxy();
   cache_.changed(PassInput::LightMesh);
   cache_.changed(PassInput::CameraMesh);
@@ -103,6 +113,7 @@ void Renderer::adoptLightProxy(bool wait) {
   useLightProxy(std::move(proxy));
   interactionMesh_.reset();  // made from the proxy from now on
   interactionIsFull_ = false;
+  interactionIsLightProxy_ = false;
   // Every pass, as after setMesh, not only those that read the light's mesh: the next frame is
   // then a fresh renderer's bit for bit (a `marble` frame reusing the stored albedo can differ
   // from one evaluating the pattern by one level in a pixel: two programs need not round alike).
@@ -115,6 +126,7 @@ void Renderer::setLightProxyEnabled(bool enabled) {
   if (mesh_) makeLightProxy();
   interactionMesh_.reset();  // it is made from the proxy: made again at its next use
   interactionIsFull_ = false;
+  interactionIsLightProxy_ = false;
   cache_.changed(PassInput::LightMesh);
   interactionCopyRemade();
 }
@@ -126,8 +138,12 @@ size_t Renderer::lightTriangleCount() const {
 
 const GpuMesh& Renderer::cameraMesh() {
   if (detail_ == MeshDetail::Full || !mesh_) return *mesh_;
-  if (!interactionMesh_ && !interactionIsFull_) {
-    if (cpuMesh_.triangleCount() <= kInteractionTriangles) {
+  if (!interactionMesh_ && !interactionIsFull_ && !interactionIsLightProxy_) {
+    if (lightMesh_ && lightProxyMesh_.triangleCount() <= kInteractionTriangles) {
+      // The light's proxy is the copy (no second one): the dragon's 100,000 triangles draw 29,652
+      // while the view moves, within the proxy's half a light texel (≈ 0.7 pixel at 800²).
+      interactionIsLightProxy_ = true;
+    } else if (cpuMesh_.triangleCount() <= kInteractionTriangles) {
       interactionIsFull_ = true;
     } else if (lightProxyJob_) {
       return *mesh_;  // made from the proxy once it is there (from the full mesh: seconds)
@@ -138,6 +154,7 @@ const GpuMesh& Renderer::cameraMesh() {
       interactionMesh_.emplace(simplifiedMesh(from, kInteractionTriangles, kInteractionMaxErrorUnits).mesh);
     }
   }
+  if (interactionIsLightProxy_) return *lightMesh_;
   return interactionMesh_ ? *interactionMesh_ : *mesh_;
 }
 
@@ -179,10 +196,58 @@ void Renderer::reloadShaders() {
   invalidate();  // new passes: nothing they stored survives
 }
 
+void Renderer::setResolutionScale(float scale) {
+  resolutionScale_ = std::clamp(scale, kMinResolutionScale, 1.0f);
+}
+
 Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
                                       int height) {
   adoptLightProxy(false);
   if (!mesh_ || width <= 0 || height <= 0) return {};
+  const int reducedWidth = std::max(1, static_cast<int>(std::lround(static_cast<float>(width) * resolutionScale_)));
+  const int reducedHeight = std::max(1, static_cast<int>(std::lround(static_cast<float>(height) * resolutionScale_)));
+  if (reducedWidth == width && reducedHeight == height) {
+    const FrameToken frame = drawFrame(scene, model, targetFbo, width, height);
+    lastOutput_->resolutionScale = resolutionScale_;
+    return frame;
+  }
+  if (!reducedFrame_ || reducedFrame_->width() != reducedWidth || reducedFrame_->height() != reducedHeight)
+    reducedFrame_.emplace(reducedWidth, reducedHeight);
+  const FrameToken frame = drawFrame(scene, model, reducedFrame_->fbo(), reducedWidth, reducedHeight);
+  stretchReducedFrame(scene, targetFbo, width, height);
+  // What the caller's target holds: this scene at the caller's size, drawn at this scale.
+  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision(), resolutionScale_};
+  return frame;
+}
+
+void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int width, int height) {
+  const int rw = reducedFrame_->width(), rh = reducedFrame_->height();
+  // The stretch maps blocks of srcX × srcY reduced pixels onto blocks of dstX × dstY target
+  // pixels exactly (integer corners: a part of the frame is sampled where the whole frame's
+  // stretch samples it).
+  const int gx = std::gcd(width, rw), gy = std::gcd(height, rh);
+  const int srcX = rw / gx, srcY = rh / gy, dstX = width / gx, dstY = height / gy;
+  if (!contentRect_) {
+    glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, rw, rh, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_LINEAR);
+    return;
+  }
+  // Outside contentRect_ the reduced frame is the flat background (as FXAA and the post pass
+  // clear it), which a bilinear stretch leaves as it is: clear the target to it and stretch
+  // only the rest -- grown by 2 reduced pixels (the filter's reach), out to whole blocks. On
+  // llvmpipe the stretch of a whole 1080p frame cost ≈ 15-30 ms at load 10 (performance.md).
+  const ScreenRect& c = *contentRect_;
+  const int x0 = std::max(0, c.x - 2) / srcX, x1 = std::min(gx, (c.x + c.width + 2 + srcX - 1) / srcX);
+  const int y0 = std::max(0, c.y - 2) / srcY, y1 = std::min(gy, (c.y + c.height + 2 + srcY - 1) / srcY);
+  const glm::vec4 background(glm::clamp(scene.render.background, 0.0f, 1.0f), 1.0f);
+  glClearNamedFramebufferfv(targetFbo, GL_COLOR, 0, &background.x);
+  if (x1 <= x0 || y1 <= y0) return;
+  glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, x0 * srcX, y0 * srcY, x1 * srcX, y1 * srcY, x0 * dstX,
+                         y0 * dstY, x1 * dstX, y1 * dstY, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
+                                         int height) {
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.ran = {};
   times_.diffuseSource = -1;
@@ -190,11 +255,12 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
   // renderer's token never matches another's frame either. 64 bits do not wrap.
   static std::atomic<uint64_t> lastSerial{0};
   const FrameToken frame(++lastSerial);
-  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision()};
+  lastOutput_ = OutputKey{scene, model, frame, width, height, cache_.stateRevision(), 1.0f};
   if (scene.render.mode == RenderMode::Floor) {
     passes_->floor.run(cameraMesh(), model, camera, scene.light.position, scene.material.base_color, scene.render.background,
                        targetFbo, width, height);
     times_.ran[Pass::Floor] = true;
+    contentRect_.reset();  // the floor pass draws the whole frame
     return frame;
   }
   const bool marble = scene.render.mode == RenderMode::Marble;
@@ -306,16 +372,20 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
                        fxaa);
     times_.ran[Pass::Stage] = true;
   }
+  // The light's map, or a stage around the object: content everywhere.
+  const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || times_.ran[Pass::Stage];
+  contentRect_.reset();
+  if (!wholeFrame) contentRect_ = rect;
   if (!fxaa) {
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.
-    // The light's map, or a stage around the object: content everywhere.
-    const bool wholeFrame = scene.render.mode == RenderMode::LightDepth || times_.ran[Pass::Stage];
-    passes_->fxaa.run(display.texture(), targetFbo, width, height, aaSpans(camera.viewProj * model, width, height, wholeFrame),
-                      glm::clamp(scene.render.background, 0.0f, 1.0f));
+    const std::vector<ScreenRect>& spans = aaSpans(camera.viewProj * model, width, height, wholeFrame);
+    passes_->fxaa.run(display.texture(), targetFbo, width, height, spans, glm::clamp(scene.render.background, 0.0f, 1.0f));
+    if (contentRect_)  // FXAA writes its spans (the mesh's tiles, grown): they hold content too
+      for (const ScreenRect& r : spans) contentRect_ = boundingUnion(*contentRect_, r);
     times_.ran[Pass::Fxaa] = true;
   }
   return frame;
@@ -376,7 +446,8 @@ size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
          (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
-         (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes();
+         (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes() +
+         (reducedFrame_ ? reducedFrame_->bytes() : 0);
 }
 
 ImageRGBF Renderer::readHdr() {

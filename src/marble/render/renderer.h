@@ -69,14 +69,26 @@ public:
   void waitForLightProxy() { adoptLightProxy(true); }
 
   // Which mesh the camera's passes (geometry, floor) draw: the full mesh, or -- while the view
-  // moves -- the interaction copy (about kInteractionTriangles, render/mesh_detail.h; made at
-  // the first request for this mesh; a mesh no larger than that is its own copy). Changing it
+  // moves -- the interaction copy (at most about kInteractionTriangles, render/mesh_detail.h:
+  // the light's proxy where that is small enough, else made at the first request for this mesh;
+  // a mesh without a proxy and no larger than that is its own copy). Changing it
   // re-runs the camera's passes, so the first Full frame after Interaction ones is exactly
   // what a fresh renderer draws. The light's pass is not affected.
   enum class MeshDetail { Full, Interaction };
   void setMeshDetail(MeshDetail detail);
   MeshDetail meshDetail() const { return detail_; }
   size_t interactionTriangleCount();  // makes the copy if needed
+
+  // Dynamic resolution (interaction detail for the screen passes, as game engines and scan
+  // viewers do it): every pass draws at `scale` of the target's width and height (rounded, at
+  // least 1 pixel) and the finished frame is stretched to the target bilinearly. 1 (default):
+  // full resolution. The viewer lowers it while the camera, the object or the light moves and
+  // sets 1 on the first still frame, which then is exactly what a fresh renderer draws: every
+  // pass that reads the frame size re-runs at the full size (PassInput::FrameSize). Clamped to
+  // [kMinResolutionScale, 1].
+  void setResolutionScale(float scale);
+  float resolutionScale() const { return resolutionScale_; }
+  static constexpr float kMinResolutionScale = 0.25f;
 
   // The environment map used when a scene says "environment": "map" (uploaded here, once; the
   // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
@@ -121,7 +133,8 @@ public:
   // no pass at all. The caller drops its token (an empty one) when it makes a new target or
   // draws into it by other means. The target's GL name is not compared: GL reuses names.
   bool isCurrent(const Scene& scene, const glm::mat4& model, FrameToken shown, int width, int height) const {
-    return lastOutput_ && *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision()} &&
+    return lastOutput_ &&
+           *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision(), resolutionScale_} &&
            !(lightProxyJob_ && lightProxyJob_->ready());
   }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
@@ -153,6 +166,7 @@ private:
   bool drawOrderOptimized_ = true;
   std::optional<GpuMesh> interactionMesh_;  // made at the first Interaction request
   bool interactionIsFull_ = false;          // the mesh is small enough to be its own copy
+  bool interactionIsLightProxy_ = false;    // the light's proxy is small enough to be the copy
   MeshDetail detail_ = MeshDetail::Full;
   void makeLightProxy();
   void useLightProxy(SimplifiedMesh proxy);
@@ -181,6 +195,7 @@ private:
     FrameToken frame;  // never empty here
     int width = 0, height = 0;
     uint64_t stateRevision = 0;  // PassCache::stateRevision
+    float resolutionScale = 1.0f;
     bool operator==(const OutputKey&) const = default;
   };
   std::optional<OutputKey> lastOutput_;  // empty: no frame is current
@@ -188,6 +203,16 @@ private:
   std::optional<FrameInputs> lastFrame_;
   ScreenRect lastRect_{};
   std::optional<OffscreenTarget> hdrReadback_;
+
+  float resolutionScale_ = 1.0f;
+  std::optional<OffscreenTarget> reducedFrame_;  // the frame at resolutionScale_, before stretching
+  // One frame at the size the passes draw (render() stretches it when the scale is below 1).
+  FrameToken drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width, int height);
+  // Where the last drawFrame wrote anything but the flat background (its pixels); empty: it may
+  // have content anywhere (the floor, the light's map, a stage).
+  std::optional<ScreenRect> contentRect_;
+  // reducedFrame_ stretched to the caller's target (bilinear), only where it has content.
+  void stretchReducedFrame(const Scene& scene, GLuint targetFbo, int width, int height);
 
   PostInputs postInputs() const;
   PassTimer& timerOf(Pass p);

@@ -1,7 +1,7 @@
 # The C++ copy of shaders/pattern_core.glsl (src/marble/noise/marble_pattern.cpp compiles the
-# pattern as C++: one source for CPU and GPU) with one change: one function's definition
-# is renamed NAME_direct, and NAME -- what the rest of the pattern calls -- is only declared,
-# on the same line (line numbers stay the file's). marble_pattern.cpp defines NAME: the
+# pattern as C++: one source for CPU and GPU) with one change: two functions' definitions
+# are renamed NAME_direct, and NAME -- what the rest of the pattern calls -- is only declared,
+# on the same line (line numbers stay the file's). marble_pattern.cpp defines each NAME: the
 # function itself, or, inside a batched row, the same arithmetic with what neighbouring points
 # share cached (noise/row_memo.inc; bit-identical, tested). The GLSL file itself stays
 # self-contained for the GPU and for other engines (shaders/README.md). Re-run at configure
@@ -22,7 +22,7 @@ function(_pattern_core_replace_once TEXT FROM TO WHO)
 endfunction()
 
 file(READ ${_core} _text)
-foreach(_hook IN ITEMS "float|pat_value3|vec3 p, float period, uint seedHash")
+foreach(_hook IN ITEMS "PatCells|pat_voronoi|vec3 p, uint salt" "float|pat_value3|vec3 p, float period, uint seedHash")
   string(REPLACE "|" ";" _parts "${_hook}")
   list(GET _parts 0 _type)
   list(GET _parts 1 _name)
@@ -38,7 +38,7 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/generated/pattern_core_cpu.glsl.inc CON
 #   * GLSL's `float` is a C++ keyword, so it is spelled `lane_float` (a type vein_lanes.inc
 #     defines); uint and vecN are plain names there already. The regex takes whole words only
 #     (comments change too, harmlessly), twice because adjacent matches share a delimiter;
-#   * the definitions of pat_family_cover, pat_wrap, pat_next and pat_voronoi are renamed NAME_direct: their
+#   * the definitions of pat_family_cover, pat_wrap and pat_next are renamed NAME_direct: their
 #     early returns or choices depend on the point (a face's fill; a lattice index in range or
 #     at the lattice's end), so
 #     vein_lanes.inc declares NAME before the file and defines it after, as the same arithmetic
@@ -51,9 +51,6 @@ foreach(_name IN ITEMS pat_family_cover pat_wrap pat_next)
   _pattern_core_replace_once(_lanes "lane_float ${_name}(" "lane_float ${_name}_direct("
                              "'float ${_name}(': the CPU's SIMD rows hook it; update this list and src/marble/noise/vein_lanes.inc")
 endforeach()
-# The Voronoi search is hooked the same way (its choice of the two nearest depends on the point).
-_pattern_core_replace_once(_lanes "PatCells pat_voronoi(" "PatCells pat_voronoi_direct("
-                           "'PatCells pat_voronoi(': the CPU's SIMD rows hook it; update src/marble/noise/vein_lanes.inc")
 # GLSL passes the parameter block by value (a copy per call; its lanes are 6 KB here): a const
 # reference is the same in C++ for a parameter the pattern never assigns (one that did would stop
 # the build).

@@ -64,7 +64,7 @@ glm::vec3 veinAlbedo(const Material& m, glm::vec3 objectPos);
 glm::vec4 veinShadeSeen(const Material& m, glm::vec3 objectPos, glm::vec3 ray, float k);
 // A row of object-space points origin + i * step, i < count, the colour and value of each (the
 // fast path of `marble texture`: along x the four turbulence samples by rows; then the model
-// per point with each grain column computed once per row, marble_pattern.cpp
+// per point with each Voronoi block and grain column computed once per row, marble_pattern.cpp
 // "row memo"; on AVX2 CPUs 8 points at a time, vein_lanes.inc). Bit-identical to veinAlbedo /
 // veinPatternValue at the same points (tested).
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut);
@@ -80,18 +80,6 @@ struct VeinRowCounts {
 };
 bool veinRowsUseLanes();
 VeinRowCounts veinRowCounts();
-
-// The vein model's Voronoi search (pattern_core.glsl pat_voronoi) at p in cell units, for the
-// tests: the hashes of the nearest and second-nearest sites and twice the distance to the face
-// between them (cell units); and the feature point of the lattice site at skewed integer
-// coordinates `site` (pat_site_point, the lattice's own units: p * 0.824), for an exhaustive search.
-struct VeinCellsProbe {
-  uint32_t nearest = 0, second = 0;
-  float edge = 0.0f;
-};
-VeinCellsProbe veinVoronoiProbe(glm::vec3 p, uint32_t salt);
-glm::vec3 veinSitePoint(glm::vec3 site, uint32_t salt);
-uint32_t veinSiteHash(glm::vec3 site, uint32_t salt);
 
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl
 // pat_vein_turbulence3) at the texel points (xs[i], y, z), by rows as patternRow3; bit-identical

@@ -6,7 +6,8 @@
 // read the surface point and normal each sample was gathered for from the G-buffer itself.
 // The bounce is smooth over many pixels (its emitters are a disk of half the light map's width
 // around the point, finest near it at 1/32 of it: tens of pixels on an object that fills the
-// frame), so coarser samples lose little where they lie on the receiver's surface.
+// frame), so coarser samples lose little where they lie on the receiver's surface. The camera's
+// depth buffer also serves the samples' visibility test (bounce_behind_camera_surface).
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"

@@ -11,10 +11,10 @@
 // singularity. Since session 9 each texel is also a glossy emitter: the light its surface
 // reflects, flux E(d) x area x cos x F(cos) (Schlick; the stone's F0), sent around the mirror
 // direction (bounce_sample: the lobe and its error). Approximations, each stated:
-// - visibility between emitter and receiver tested at a few points of the segment against the
-//   light's and the camera's first surfaces (bounce_visible, since session 9: its error there);
-//   the cosines already drop every emitter behind the receiver's tangent plane and every receiver
-//   behind the emitter's, so a convex surface receives none;
+// - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
+//   between two parts that cannot see each other; the cosines already drop every emitter behind
+//   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
+//   receives none;
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce only (Cycles follows every bounce: ~albedo^2 more on deep creases, ~0.7 of the
@@ -34,7 +34,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-uniform float u_bounce_texel_world;  // world size of the map's finest texel
 
 const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
@@ -45,8 +44,8 @@ const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // depths wherever the light's view has an edge (a coil in front of another: their mean lies between
 // them, in the air or inside the stone, and faces neither). Measured against Cycles (docs/quality.md,
 // session 9; with the glossy emitters): dragon-back SSIM 0.529 -> 0.623, the body's grey
-// interreflection appears; bunny-side -0.026 (its front paws took light through the chest; with
-// the visibility test below, -0.019).
+// interreflection appears; bunny-side -0.026 (its front paws take light through the chest: no
+// visibility).
 const float BOUNCE_LOD_FINER = 3.0;
 
 // The glossy emitters' lobe: the light a sample reflects off its surface (Fresnel F of the entry
@@ -57,41 +56,6 @@ const float BOUNCE_LOD_FINER = 3.0;
 // curved stone's normals spread the reflection over tens of degrees anyway. The flux is right
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
 const float BOUNCE_GLOSS = 4.0;
-
-// Visibility between an emitter xp and a receiver P (bounce_gather.frag.glsl supplies
-// bounce_behind_camera_surface). A point inside the stone lies behind the first surface the
-// light sees along its ray AND behind the first surface the camera sees along its ray: both rays
-// must enter the body before they reach it. So a segment point behind both is taken as stone and
-// the emitter as hidden. Air is behind both only where neither the light nor the camera sees into
-// it (a gap between parts, one in front of the other from the camera, lit from behind): there the
-// test hides light it should not, an error toward too little bounce (measured, docs/quality.md
-// session 9: the opaque back-lit dragon's interreflection 0.60 -> 0.48 of Cycles', SSIM -0.06;
-// the ten scenes with the stone's transmission +0.007 SSIM on average, bunny-side's paws
-// +0.007). Behind the light's surface alone is not enough: the air of a crease in the light's
-// shadow is the bounce's main receiver (tried: only points less than 0.3 units behind both
-// surfaces taken as stone; worse in 8 of the 10 scenes, dragon-back 0.631 -> 0.581; and the
-// fraction of the points not behind both as a partial visibility: dragon-back 0.598, bunny-side
-// 0.896). Sampled at BOUNCE_VISIBILITY_STEPS points between the ends; a wall thinner than a step
-// (a quarter of the segment) can be missed. The light's first surface is read from the reflective
-// shadow map itself (its finest level: the w-weighted mean position of each texel's surface), so
-// nothing more is bound; the tolerance, BOUNCE_VISIBILITY_BIAS of its texels, covers that mean's
-// spread over a texel of a sloped surface.
-const int BOUNCE_VISIBILITY_STEPS = 3;
-const float BOUNCE_VISIBILITY_BIAS = 2.0;  // tolerance, in the map's finest texels
-bool bounce_visible(vec3 xp, vec3 P) {
-  float bias = BOUNCE_VISIBILITY_BIAS * u_bounce_texel_world;
-  for (int i = 1; i <= BOUNCE_VISIBILITY_STEPS; ++i) {
-    vec3 q = mix(xp, P, float(i) / float(BOUNCE_VISIBILITY_STEPS + 1));
-    vec4 clip = u_light_view_proj * vec4(q, 1.0);
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
-    vec4 pw = textureLod(u_bounce_position, uv, 0.0);
-    if (pw.w <= 0.0) continue;  // the light sees nothing there: air
-    if (light_distance_of(q) <= light_distance_of(pw.xyz / pw.w) + bias) continue;  // lit air
-    if (bounce_behind_camera_surface(q, bias)) return false;
-  }
-  return true;
-}
 
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
@@ -117,7 +81,6 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
   if (cosP <= 0.0 || cosX <= 0.0) return vec3(0.0);
-  if (!bounce_visible(xp, P)) return vec3(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

@@ -6,8 +6,6 @@
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
 // at 1.4x. It reads no material parameter: the emitters' albedo is applied by the lighting pass.
-// Each sample's visibility is tested against the reflective shadow map and the G-buffer's depth
-// (bounce.glsl, bounce_visible): ~3x the pass's time on llvmpipe (docs/performance.md).
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -18,7 +16,6 @@ namespace marble {
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
-  int bounceMapSize;  // the reflective shadow map's finest level, texels across
 };
 
 class BouncePass {

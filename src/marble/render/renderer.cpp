@@ -243,8 +243,7 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
     passes_->bounce.resize(width, height, scale);
     if (stale(Pass::Bounce)) {
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
-                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
-                           passes_->lightDepth.bounceSize()},
+                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture()},
                           camera, light, scene.light, lightTexelWorld, rect);
       ran(Pass::Bounce);
     }

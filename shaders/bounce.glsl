@@ -34,7 +34,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-uniform float u_bounce_texel_world;  // world size of the map's finest texel
 
 const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
@@ -57,35 +56,6 @@ const float BOUNCE_LOD_FINER = 3.0;
 // curved stone's normals spread the reflection over tens of degrees anyway. The flux is right
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
 const float BOUNCE_GLOSS = 4.0;
-
-// Visibility between an emitter xp and a receiver P (candidate, session 9: measured, not kept on
-// main; docs/quality.md). Along the light's ray through a point q, a closed mesh is entered at the
-// first surface the light sees (the reflective shadow map's finest level) and left at the first
-// surface turned away from it (u_bounce_exit, LightDepthPass): q between the two is inside the
-// stone. Only stone deeper than BOUNCE_VISIBILITY_DEPTH light texels below the entry hides: the
-// bounce also stands in for the light the stone transmits, and hiding behind any stone (session 9's
-// first test, and the exit depth alone) cost the back-lit dragon 0.045-0.056 SSIM. Sampled at
-// BOUNCE_VISIBILITY_STEPS points between the ends.
-layout(binding = UNIT_LIGHTING_BOUNCE_EXIT) uniform sampler2D u_bounce_exit;
-const int BOUNCE_VISIBILITY_STEPS = 3;
-const float BOUNCE_VISIBILITY_BIAS = 2.0;  // tolerance, in the map's finest texels
-const float BOUNCE_VISIBILITY_DEPTH = 16.0;  // swept 8, 12, 16, 24 on the ten scenes
-bool bounce_visible(vec3 xp, vec3 P, float size) {
-  float bias = BOUNCE_VISIBILITY_BIAS * u_bounce_texel_world;
-  for (int i = 1; i <= BOUNCE_VISIBILITY_STEPS; ++i) {
-    vec3 q = mix(xp, P, float(i) / float(BOUNCE_VISIBILITY_STEPS + 1));
-    vec4 clip = u_light_view_proj * vec4(q, 1.0);
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
-    vec4 pw = textureLod(u_bounce_position, uv, 0.0);
-    if (pw.w <= 0.0) continue;  // the light sees nothing there: air
-    float d = light_distance_of(q);
-    if (d <= light_distance_of(pw.xyz / pw.w) + BOUNCE_VISIBILITY_DEPTH * u_bounce_texel_world) continue;  // lit air
-    if (d >= textureLod(u_bounce_exit, uv, 0.0).r - bias) continue;  // past where the light's ray leaves
-    return false;
-  }
-  return true;
-}
 
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
@@ -111,7 +81,6 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
   if (cosP <= 0.0 || cosX <= 0.0) return vec3(0.0);
-  if (!bounce_visible(xp, P, size)) return vec3(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

@@ -16,8 +16,6 @@ namespace marble {
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
-  GLuint bounceExit;  // where the light's ray first leaves the stone (LightDepthPass::bounceExitTexture)
-  int bounceMapSize;  // the reflective shadow map's finest level, texels across
 };
 
 class BouncePass {

@@ -16,10 +16,6 @@ public:
   // Object-space bounding box of the positions (for the screen passes' scissor rectangle).
   const glm::vec3& boundsMin() const { return boundsMin_; }
   const glm::vec3& boundsMax() const { return boundsMax_; }
-  // Whether its triangles are wound counter-clockwise seen from outside (enclosed volume >= 0,
-  // mesh.h's signedVolume): which faces are the front ones where a pass culls (the light's exit
-  // depth, LightDepthPass). Files come either way (the Utah teapot is wound inward).
-  bool woundOutward() const { return woundOutward_; }
 
 private:
   gl::Buffer vertices_, indices_;
@@ -27,7 +23,6 @@ private:
   GLsizei indexCount_ = 0;
   size_t bytes_ = 0;
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
-  bool woundOutward_ = true;
 };
 
 }  // namespace marble

@@ -43,11 +43,8 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceNormal_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
-      bounceExit_(gl::makeTexture2D(GL_RG32F, bounceSize_, bounceSize_, GL_NEAREST)),
-      bounceExitDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
       fbo_(gl::Framebuffer::create()),
-      bounceFbo_(gl::Framebuffer::create()),
-      bounceExitFbo_(gl::Framebuffer::create()) {
+      bounceFbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -59,11 +56,6 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
   const GLenum bounceBuffers[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(bounceFbo_.id(), 3, bounceBuffers);
   glNamedFramebufferTexture(bounceFbo_.id(), GL_DEPTH_ATTACHMENT, bounceDepth_.id(), 0);
-  // The exit: the shader's output 0 (distance, cosine) only.
-  glNamedFramebufferTexture(bounceExitFbo_.id(), GL_COLOR_ATTACHMENT0, bounceExit_.id(), 0);
-  glNamedFramebufferTexture(bounceExitFbo_.id(), GL_DEPTH_ATTACHMENT, bounceExitDepth_.id(), 0);
-  const GLenum exitBuffers[] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
-  glNamedFramebufferDrawBuffers(bounceExitFbo_.id(), 3, exitBuffers);
 }
 
 void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
@@ -94,20 +86,6 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());
-  // Where the light's ray first leaves the stone: the nearest face turned away from the light,
-  // i.e. the mesh with its front faces culled (which faces are front: the mesh's winding, turned
-  // over by a mirroring model matrix). A closed mesh's ray alternates entry and exit, so between
-  // the first surface (the reflective shadow map) and this one it is inside the stone, and past it
-  // (the air between a back-lit dragon's coils) not, whatever lies farther.
-  glBindFramebuffer(GL_FRAMEBUFFER, bounceExitFbo_.id());
-  glClearNamedFramebufferfv(bounceExitFbo_.id(), GL_COLOR, 0, farValue);
-  glClearNamedFramebufferfv(bounceExitFbo_.id(), GL_DEPTH, 0, &one);
-  const bool outward = mesh.woundOutward() == (glm::determinant(glm::mat3(model)) >= 0.0f);
-  glEnable(GL_CULL_FACE);
-  glCullFace(outward ? GL_FRONT : GL_BACK);
-  mesh.draw();
-  glDisable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
   timer_.end();
 }
 

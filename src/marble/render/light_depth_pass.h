@@ -22,16 +22,10 @@ public:
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
   int size() const { return size_; }
-  int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest level
-  // Where the light's ray first leaves the stone: the distance from the light (R, as the
-  // distance texture's; G unused) to the first surface facing away from it, at the reflective
-  // shadow map's size; far beyond every surface where none (bounce.glsl's visibility test).
-  GLuint bounceExitTexture() const { return bounceExit_.id(); }
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
-  // mipmaps a third more) + depth 4, and the exit's distance 8 + depth 4, at its own size.
+  // mipmaps a third more) + depth 4 at its own size.
   size_t bytes() const {
-    return static_cast<size_t>(size_) * size_ * 12 +
-           static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3 + 12);
+    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3);
   }
   PassTimer& timer() { return timer_; }
 
@@ -41,8 +35,7 @@ private:
   gl::Texture distance_, depth_;
   int bounceSize_;
   gl::Texture bouncePosition_, bounceNormal_, bounceDepth_;
-  gl::Texture bounceExit_, bounceExitDepth_;
-  gl::Framebuffer fbo_, bounceFbo_, bounceExitFbo_;
+  gl::Framebuffer fbo_, bounceFbo_;
   PassTimer timer_;
 };
 

@@ -33,7 +33,6 @@
   X(UNIT_LIGHTING_LIGHT_SHADOW, 4)                                                                      \
   X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, in bounce_gather.frag.glsl (its units 1, 2 above) */  \
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
-  X(UNIT_LIGHTING_BOUNCE_EXIT, 10)    /* bounce.glsl: where the light's ray first leaves the stone */   \
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \

@@ -17,9 +17,17 @@
 #include "marble/core/allocator_tuning.h"
 #include "marble/core/message_text.h"
 #include "marble/render/mesh_detail.h"
+#include "marble/render/renderer.h"
 #include "viewer/cmd_view.h"
 
 namespace {
+
+// A setting's value for a help text as a person writes it (0.5, not std::to_string's 0.500000).
+std::string helpNumber(float v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
+  return text;
+}
 
 int run(int argc, char** argv) {
   using namespace marble;  // before any GL context: llvmpipe frees and re-faults its buffers per frame
@@ -61,7 +69,8 @@ int run(int argc, char** argv) {
   viewCmd->add_option("--interaction-resolution", view.interactionResolution,
                       "While the camera, object or light moves, draw every pass at this fraction of the view's width "
                       "and height, stretched to the view, and at the full resolution on the first still frame "
-                      "(default " + std::to_string(kDefaultInteractionResolution).substr(0, 3) + "; 1: off; at least 0.25)");
+                      "(default " + helpNumber(kDefaultInteractionResolution) + "; 1: off; at least " +
+                          helpNumber(Renderer::kMinResolutionScale) + ")");
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;

@@ -74,7 +74,7 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   gl::setSurfaceOnlyScreenPassState();
   glViewport(0, 0, width_, height_);
   // The taps: the diffusion profile's marginal (subsurface_profile.h) out to its reach, with as
-  // many taps as that reach spans on screen (the dragon filling an 800-pixel frame: all 9).
+  // many taps as that reach spans on screen (the dragon filling an 800-pixel frame: 6 per side).
   // Cut again only when the stone or the tap count changes.
   const glm::vec3 d = burleyShapeD(scene.material);
   const int taps = subsurfaceTaps(camera, scene, height);

@@ -34,7 +34,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-uniform float u_bounce_texel_world;  // world size of the map's finest texel
 
 const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
@@ -57,37 +56,6 @@ const float BOUNCE_LOD_FINER = 3.0;
 // curved stone's normals spread the reflection over tens of degrees anyway. The flux is right
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
 const float BOUNCE_GLOSS = 4.0;
-
-// Visibility between an emitter xp and a receiver P, attenuated by the stone between them
-// (session 10 candidate, docs/quality.md "Tenth session"; bounce_gather.frag.glsl supplies
-// bounce_behind_camera_surface). A point inside the stone lies behind the first surface the
-// light sees along its ray AND behind the first surface the camera sees along its ray (session 9's
-// test, commit 955c513). Instead of hiding the emitter when any of BOUNCE_VISIBILITY_STEPS points
-// is inside, the stone length l = (points inside / steps) x |xp - P| attenuates it by the light a
-// slab of that thickness lets through relative to what it reflects, T(l) / R_inf: the emitter's
-// light re-emerges past the stone as the random walk carries it through. T(l) / R_inf here is a fit
-// to Cycles' own slab renders of the issue's stone (docs/quality.md, "Transmission from a random
-// walk"; mean of the three channels): exp(-0.73 l_mm^0.65), within 3 % of them at 2, 5 and 20 mm,
-// 17 % low at 10 mm. Valid for that stone at 100 mm per unit only (a candidate, not kept).
-const int BOUNCE_VISIBILITY_STEPS = 3;
-const float BOUNCE_VISIBILITY_BIAS = 2.0;  // tolerance, in the map's finest texels
-const float BOUNCE_MM_PER_UNIT = 100.0;  // the reference scenes' (candidate only)
-float bounce_visible(vec3 xp, vec3 P, float size) {
-  float bias = BOUNCE_VISIBILITY_BIAS * u_bounce_texel_world;
-  int inside = 0;
-  for (int i = 1; i <= BOUNCE_VISIBILITY_STEPS; ++i) {
-    vec3 q = mix(xp, P, float(i) / float(BOUNCE_VISIBILITY_STEPS + 1));
-    vec4 clip = u_light_view_proj * vec4(q, 1.0);
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
-    vec4 pw = textureLod(u_bounce_position, uv, 0.0);
-    if (pw.w <= 0.0) continue;  // the light sees nothing there: air
-    if (light_distance_of(q) <= light_distance_of(pw.xyz / pw.w) + bias) continue;  // lit air
-    if (bounce_behind_camera_surface(q, bias)) inside++;
-  }
-  float l_mm = float(inside) / float(BOUNCE_VISIBILITY_STEPS) * distance(xp, P) * BOUNCE_MM_PER_UNIT;
-  return exp(-0.73 * pow(l_mm, 0.65));
-}
 
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
@@ -113,8 +81,6 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
   if (cosP <= 0.0 || cosX <= 0.0) return vec3(0.0);
-  float vis = bounce_visible(xp, P, size);
-  if (vis <= 0.0) return vec3(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
@@ -123,7 +89,7 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float cosR = max(dot(mirror, d), 0.0) * inversesqrt(r2);
   float lobe = (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosR, BOUNCE_GLOSS);
   float glossy = lobe * cosX * inversesqrt(r2) / (r2 + A / PI);
-  return vis * falloff * vec3(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa);
+  return falloff * vec3(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa);
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,

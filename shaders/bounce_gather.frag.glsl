@@ -10,25 +10,10 @@
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
+#include "bounce.glsl"
+
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
-uniform mat4 u_view_proj;  // the camera's
-
-// Whether q lies farther than `bias` behind the first surface the camera sees along its ray
-// (bounce.glsl's visibility test). Off the frame: not known, taken as not behind.
-bool bounce_behind_camera_surface(vec3 q, float bias) {
-  vec4 clip = u_view_proj * vec4(q, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return false;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  ivec2 size = textureSize(u_depth, 0);
-  float depth = texelFetch(u_depth, min(ivec2(uv * vec2(size)), size - 1), 0).r;
-  if (depth >= 1.0) return false;  // the background: nothing in front
-  vec3 s = surface_point(uv, depth);
-  return distance(q, u_camera_pos) > distance(s, u_camera_pos) + bias;
-}
-
-#include "bounce.glsl"
 uniform int u_scale;  // full-resolution pixels per texel of this pass
 // rgb: the gathered bounce per unit of the light's radiance (irradiance / PI: diffuse before the
 // emitters' albedo, glossy in two parts before the Fresnel factor; bounce.glsl); a: 1 where a

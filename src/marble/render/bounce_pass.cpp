@@ -38,9 +38,6 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
-  program_.set("u_view_proj", camera.viewProj);
-  // World size of the reflective shadow map's finest texel: the visibility test's tolerance.
-  program_.set("u_bounce_texel_world", 2.0f * kBoundingRadius / static_cast<float>(in.bounceMapSize));
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();

@@ -16,7 +16,6 @@ namespace marble {
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
-  int bounceMapSize;  // the reflective shadow map's finest level, texels across
 };
 
 class BouncePass {

@@ -309,8 +309,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     passes_->bounce.resize(width, height, scale);
     if (stale(Pass::Bounce)) {
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
-                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
-                           passes_->lightDepth.bounceSize()},
+                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture()},
                           camera, light, scene.light, lightTexelWorld, rect);
       ran(Pass::Bounce);
     }

@@ -69,9 +69,9 @@ const float BOUNCE_GLOSS = 4.0;
 // degrees: the same 33 samples cannot resolve it, and the curved receivers' normals spread the
 // image they mirror over tens of degrees within one gather texel anyway (the emitters' lobe above,
 // the same reasoning and exponent). A sharper lobe (m = 16) measured worse (buddha-front relative
-// RMSE +0.018). The emitters' own glossy light is not mirrored again (it is a few percent of
-// theirs), and the receiver's lobe is not shadowed or masked (GGX's Smith term at grazing views
-// takes 10-30 % off at roughness 0.15; not modelled).
+// RMSE 0.174 -> 0.192, on a first version with the mirrored part PI too strong). The emitters' own
+// glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
+// shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
 
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);

@@ -7,20 +7,15 @@
 // dielectric's exact Fresnel factor (as Cycles' Principled BSDF), and the environment's blurred
 // reflection weighted by the split-sum BRDF (Schlick-based: Karis's fit). E: the light's
 // irradiance at normal incidence; visible: its PCF visibility; ior: the stone's index.
-// footprint_a2: added to the distribution's alpha^2 for the normal's spread over the pixel (0:
-// none). Only the distribution takes it: the spread is of the surface's own normals across the
-// pixel, not of its microfacets, so the microfacets' masking and shadowing (Smith) keep the
-// stone's alpha (with it widened too, the back-lit scenes' grazing glints lost a third of their
-// light: buddha-back's energy ratio 0.72 against 0.94; docs/quality.md, "Tenth session").
+// footprint_a2: added to GGX's alpha^2 for the normal's spread over the pixel (0: none).
 vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, float footprint_a2,
                       float env_intensity) {
   float NoV = max(dot(N, V), 1e-4);
   float nl = max(dot(N, L), 0.0);
   vec3 H = normalize(V + L);
-  float a = max(roughness * roughness, 0.002);
-  float a_pixel = sqrt(min(a * a + footprint_a2, 1.0));
+  float a = sqrt(min(max(roughness * roughness, 0.002) * max(roughness * roughness, 0.002) + footprint_a2, 1.0));
   float F = fresnel_dielectric(dot(H, V), ior);
-  vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a_pixel) * smith_ggx_visibility(NoV, nl, a) * F);
+  vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F);
   if (env_intensity > 0.0)
     r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, NoV);
   return r;

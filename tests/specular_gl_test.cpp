@@ -139,13 +139,14 @@ TEST(Specular, SubPixelHighlightKeepsItsPower) {
   // pixel covers) falls between pixel centres. Point-sampled, the picture's highlight is whatever
   // its samples hit: nearly nothing when they miss the core (1-2 % of the light here), many times
   // too much when one hits it. With the lobe widened by the pixel's normals each pixel carries its
-  // share: the picture's mean light is the integrated one (measured 0.82-0.85 of it: the widened
-  // lobe's own shadowing and the built-in sphere's facets).
+  // share: the picture's mean light is the integrated one (measured 0.82-0.85 of it on llvmpipe: the
+  // widened lobe's own shadowing and the built-in sphere's facets; ±0.25 leaves room for a driver
+  // whose derivatives are per pixel rather than per 2x2 quad, and still fails a point-sampled 0.01).
   for (float dy : {0.0f, 0.013f, 0.027f}) {  // the light moved by fractions of a pixel's normals
     Scene s = glintScene(48);
     s.light.position.y += dy;
     const double integrated = meanGreenIntegrated(s), rendered = meanGreen(renderHdr(renderer, s));
-    EXPECT_NEAR(rendered / integrated, 1.0, 0.2) << "light +" << dy << ": rendered " << rendered << ", integrated " << integrated;
+    EXPECT_NEAR(rendered / integrated, 1.0, 0.25) << "light +" << dy << ": rendered " << rendered << ", integrated " << integrated;
     std::cout << "[          ] light +" << dy << ": mean light " << rendered << ", integrated " << integrated << "\n";
   }
 }

@@ -490,107 +490,6 @@ PatCells pat_voronoi(vec3 p, uint salt) {
 }
 
 
-// Half the side of the cube each feature point is jittered over, in the lattice's own units
-// (nearest sites sqrt(3)/2 apart): 5/32, so that 2 r / 1024 is exact in float (see pat_voronoi).
-const float PAT_CELL_JITTER = 0.15625f;
-
-// A jitter in [-r, r) from 10 bits of the hash h (r = PAT_CELL_JITTER; 2 r / 1024 exact).
-float pat_cell_jitter(uint bits) { return float(bits & 1023u) * 0.00030517578125f - PAT_CELL_JITTER; }
-
-
-// The offset from the point to the feature point of the lattice site with hash h, the point
-// being at x from the site (both unskewed, lattice units).
-vec3 pat_site_offset(uint h, vec3 x) {
-  return vec3(pat_cell_jitter(h) - x.x, pat_cell_jitter(h >> 10u) - x.y, pat_cell_jitter(h >> 20u) - x.z);
-}
-
-// The hash and the feature point (unskewed, in the lattice's units) of the lattice site at skewed
-// integer coordinates c, as pat_voronoi computes them (it sums the hash's argument from partial
-// products: the same sum mod 2^32); for the tests' exhaustive search.
-uint pat_site_hash(vec3 c, uint salt) {
-  return pat_hash(uint(c.x + 1048576.0f) * 0x8da6b343u + uint(c.y + 1048576.0f) * 0xd8163841u +
-                  uint(c.z + 1048576.0f) * 0xcb1ab31fu + salt);
-}
-vec3 pat_site_point(vec3 c, uint salt) {
-  uint h = pat_site_hash(c, salt);
-  float u = (c.x + c.y + c.z) * 0.16666667f;
-  return vec3(c.x - u + pat_cell_jitter(h), c.y - u + pat_cell_jitter(h >> 10u), c.z - u + pat_cell_jitter(h >> 20u));
-}
-
-// 3D Voronoi F1/F2 at p (cell units), feature points from the site hash; `salt` picks the family.
-//
-// The sites are the body-centred cubic lattice (the lattice of 3D simplex noise: Z^3 skewed by
-// (x+y+z)/3, unskewed by -(x+y+z)/6; two sites per unit cube of its own units), each moved by a
-// jitter of at most r = 5/32 along each axis, and the search looks only at the 4 corners of the
-// lattice tetrahedron (the simplex) that contains the point, instead of the previous 2 x 2 x 2
-// block of 8 cube cells with feature points jittered over 80 % of each cell: half the cells.
-// p is scaled by 0.824 into the lattice's units (1.12 sites per unit volume of p) so that the
-// network's face area per unit volume -- the veins' length per unit area in any slice -- is the
-// previous search's: 2.70 against 2.71 per cell unit (the fraction of random points within
-// e/2 of a face, divided by e). No jitter r > 0 keeps the two nearest feature points always
-// among the 4 corners (near a site its 8 nearest neighbours are equally far and only 3 are
-// corners), but near a face, where a vein is drawn, they almost always are: against a search
-// of all 125 sites around the point (2 million random points), the pair is wrong at 0.7-1.2 %
-// of the points within 0.05-0.3 cell units of a face, against 2.4-2.8 % for the previous 8-cell
-// search (tests/vein_voronoi_test.cpp checks the rate and the face area). Where it is wrong a
-// vein shows a short straight cut, hidden by the warp. The jitter trades irregularity (r = 0:
-// exact, and a regular foam of truncated octahedra) against those cuts (r = 0.175: 1.4-2.1 %).
-PatCells pat_voronoi4(vec3 p, uint salt) {
-  vec3 q = p * 0.824f;
-  float skew = (q.x + q.y + q.z) * 0.33333334f;
-  vec3 i = floor(vec3(q.x + skew, q.y + skew, q.z + skew));
-  float unskew = (i.x + i.y + i.z) * 0.16666667f;
-  // The point from the simplex's first corner, unskewed.
-  vec3 x0 = vec3(q.x - i.x + unskew, q.y - i.y + unskew, q.z - i.z + unskew);
-  // The simplex: corners i, i + a, i + a + b, i + 1, a and b the unit steps along the axes of the
-  // largest and second-largest x0 component (ties to the lower axis: a strict order, so the four
-  // corners are always distinct).
-  float gxy = x0.x >= x0.y ? 1.0f : 0.0f;
-  float gyz = x0.y >= x0.z ? 1.0f : 0.0f;
-  float gxz = x0.x >= x0.z ? 1.0f : 0.0f;
-  vec3 e1 = vec3(gxy * gxz, (1.0f - gxy) * gyz, (1.0f - gxz) * (1.0f - gyz));
-  vec3 e2 = vec3(max(gxy, gxz), max(1.0f - gxy, gyz), 1.0f - gxz * gyz);
-  vec3 x1 = vec3(x0.x - e1.x + 0.16666667f, x0.y - e1.y + 0.16666667f, x0.z - e1.z + 0.16666667f);
-  vec3 x2 = vec3(x0.x - e2.x + 0.33333334f, x0.y - e2.y + 0.33333334f, x0.z - e2.z + 0.33333334f);
-  vec3 x3 = vec3(x0.x - 0.5f, x0.y - 0.5f, x0.z - 0.5f);
-  // A site's hash is lowbias32 of x*K1 + y*K2 + z*K3 + salt over its skewed integer coordinates
-  // (offset by 2^20 so negative ones hash as distinct uints), a sum mod 2^32.
-  uint a0 = uint(i.x + 1048576.0f) * 0x8da6b343u + uint(i.y + 1048576.0f) * 0xd8163841u +
-            uint(i.z + 1048576.0f) * 0xcb1ab31fu + salt;
-  uint a1 = a0 + uint(e1.x) * 0x8da6b343u + uint(e1.y) * 0xd8163841u + uint(e1.z) * 0xcb1ab31fu;
-  uint a2 = a0 + uint(e2.x) * 0x8da6b343u + uint(e2.y) * 0xd8163841u + uint(e2.z) * 0xcb1ab31fu;
-  uint a3 = a0 + 0x30d79ea3u;  // K1 + K2 + K3 mod 2^32
-  uint h0 = pat_hash(a0);
-  vec3 v0 = pat_site_offset(h0, x0);
-  uint h1 = pat_hash(a1);
-  vec3 v1 = pat_site_offset(h1, x1);
-  float d0 = pat_sq(v0);
-  float d1 = pat_sq(v1);
-  // The first two sorted, the earlier winning ties; then the others inserted in corner order.
-  PatCells c;
-  bool swap = d1 < d0;
-  c.f1 = swap ? d1 : d0;
-  c.h1 = swap ? h1 : h0;
-  c.v1 = swap ? v1 : v0;
-  c.f2 = swap ? d0 : d1;
-  c.h2 = swap ? h0 : h1;
-  c.v2 = swap ? v0 : v1;
-  uint h = pat_hash(a2);
-  vec3 v = pat_site_offset(h, x2);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
-  h = pat_hash(a3);
-  v = pat_site_offset(h, x3);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
-  // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
-  // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
-  // Back to p's units (1 / 0.824).
-  vec3 dv = c.v2 - c.v1;
-  c.edge = (c.f2 - c.f1) / max(sqrt(dot(dv, dv)), 1e-6f) * 1.2135922f;
-  c.f1 = sqrt(c.f1) * 1.2135922f;
-  c.f2 = sqrt(c.f2) * 1.2135922f;
-  return c;
-}
-
 // 1 at the heart of a vein of full width w (object units) at e = twice the distance to its
 // crack (PatCells.edge, in object units), 0 outside, a smooth edge of relative width `soft`.
 float pat_vein_cover(float e, float w, float soft) {
@@ -690,7 +589,7 @@ float pat_cells_cover(PatParams P, PatCells c, float spacing, float stretch, flo
 float pat_family_cover(PatParams P, vec3 p, float spacing, float stretch, float w, float density, float m, uint salt,
                        vec3 ray, float k) {
   if (w <= 0.0f || density <= 0.0f) return 0.0f;
-  PatCells c = pat_voronoi4(pat_stretch(p, P.veinNormal, stretch) * (1.0f / spacing), salt);
+  PatCells c = pat_voronoi(pat_stretch(p, P.veinNormal, stretch) * (1.0f / spacing), salt);
   if (pat_face_random(c) >= density) return 0.0f;
   // Swell and pinch: width from (1 - pinch) to (1 + pinch) times w as m goes 0 -> 1; at pinch
   // 1 the vein fades out where m is low.

@@ -1,5 +1,5 @@
 # The C++ copy of shaders/pattern_core.glsl (src/marble/noise/marble_pattern.cpp compiles the
-# pattern as C++: one source for CPU and GPU) with one change: two functions' definitions
+# pattern as C++: one source for CPU and GPU) with one change: three functions' definitions
 # are renamed NAME_direct, and NAME -- what the rest of the pattern calls -- is only declared,
 # on the same line (line numbers stay the file's). marble_pattern.cpp defines each NAME: the
 # function itself, or, inside a batched row, the same arithmetic with what neighbouring points
@@ -22,7 +22,8 @@ function(_pattern_core_replace_once TEXT FROM TO WHO)
 endfunction()
 
 file(READ ${_core} _text)
-foreach(_hook IN ITEMS "PatCells|pat_voronoi|vec3 p, uint salt" "float|pat_value3|vec3 p, float period, uint seedHash")
+foreach(_hook IN ITEMS "PatCells|pat_voronoi|vec3 p, uint salt" "float|pat_value3|vec3 p, float period, uint seedHash"
+                      "float|pat_grain|vec3 p, uint seedHash")
   string(REPLACE "|" ";" _parts "${_hook}")
   list(GET _parts 0 _type)
   list(GET _parts 1 _name)

@@ -157,6 +157,34 @@ float pat_value3(vec3 p, float period, uint seedHash) {
                   pat_value3_column(pat_next(x0, period), h00, h10, h01, h11, f.y, f.z), f.x);
 }
 
+// The grain: one octave of value noise on a lattice of period 2^20, pat_value3(p, 2^20, seedHash)
+// bit for bit for lattice indices in [-2^20, 2^20) (the Voronoi search's range too), without
+// pat_wrap's division and corrections (a GPU runs those on every point: llvmpipe executes both
+// sides of its early return): the index plus 2^20 is an exact integer float there, and its low
+// 20 bits are the wrapped index.
+float pat_grain(vec3 p, uint seedHash) {
+  vec3 i = floor(p);
+  vec3 f = p - i;
+  uint x0 = uint(i.x + 1048576.0f) & 1048575u;
+  uint y0 = uint(i.y + 1048576.0f) & 1048575u;
+  uint z0 = uint(i.z + 1048576.0f) & 1048575u;
+  uint x1 = (x0 + 1u) & 1048575u;
+  uint y1 = (y0 + 1u) & 1048575u;
+  uint z1 = (z0 + 1u) & 1048575u;
+  // pat_hash_yz and pat_value3_column's sums and lerps, in their order.
+  uint h00 = y0 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash;
+  uint h10 = y1 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash;
+  uint h01 = y0 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash;
+  uint h11 = y1 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash;
+  uint a = x0 * 0x8da6b343u;
+  uint b = x1 * 0x8da6b343u;
+  float c0 = pat_lerp(pat_lerp(pat_unit(pat_hash(a + h00)), pat_unit(pat_hash(a + h10)), f.y),
+                      pat_lerp(pat_unit(pat_hash(a + h01)), pat_unit(pat_hash(a + h11)), f.y), f.z);
+  float c1 = pat_lerp(pat_lerp(pat_unit(pat_hash(b + h00)), pat_unit(pat_hash(b + h10)), f.y),
+                      pat_lerp(pat_unit(pat_hash(b + h01)), pat_unit(pat_hash(b + h11)), f.y), f.z);
+  return pat_lerp(c0, c1, f.x);
+}
+
 // ---- smooth noise: Perlin's improved noise (Perlin 2002) ----------------------------------
 // Same algorithm (quintic fade, the 12 edge gradients of a cube picked by 4 hash bits), with the
 // integer hash in place of the permutation table so the lattice wraps with any period.
@@ -359,30 +387,33 @@ struct PatCells {
 
 // The two nearest of a Voronoi search so far, updated with one more cell (squared distance d,
 // hash h, offset v from the point to its feature point): strict `<`, so of equal distances the
-// earlier cell stays first.
+// earlier cell stays first. Written as selects and mins, not as `if (d < f1) ... else if (d <
+// f2)`: the same values (where d is not the nearest, the second is min(d, f2), its hash and
+// offset replaced only if d is strictly nearer; an equal distance keeps the value it had), with
+// fewer operations where the lanes of a SIMD unit take different sides (llvmpipe runs both).
 PatCells pat_cells_insert(PatCells c, float d, uint h, vec3 v) {
-  if (d < c.f1) {
-    c.f2 = c.f1;
-    c.h2 = c.h1;
-    c.v2 = c.v1;
-    c.f1 = d;
-    c.h1 = h;
-    c.v1 = v;
-  } else if (d < c.f2) {
-    c.f2 = d;
-    c.h2 = h;
-    c.v2 = v;
-  }
+  bool first = d < c.f1;
+  bool second = d < c.f2;
+  c.f2 = first ? c.f1 : min(d, c.f2);
+  c.h2 = first ? c.h1 : (second ? h : c.h2);
+  c.v2 = first ? c.v1 : (second ? v : c.v2);
+  c.f1 = min(d, c.f1);
+  c.h1 = first ? h : c.h1;
+  c.v1 = first ? v : c.v1;
   return c;
 }
 
-// The offset from the point (at f in its cell) to the feature point of the cell at offset
-// (ox, oy, oz) with hash h: three 10-bit jitters in [0.1, 0.9).
-vec3 pat_cell_offset(uint h, float ox, float oy, float oz, vec3 f) {
-  float jx = 0.1f + 0.8f * float(h & 1023u) * (1.0f / 1024.0f);
-  float jy = 0.1f + 0.8f * float((h >> 10u) & 1023u) * (1.0f / 1024.0f);
-  float jz = 0.1f + 0.8f * float((h >> 20u) & 1023u) * (1.0f / 1024.0f);
-  return vec3(ox + jx - f.x, oy + jy - f.y, oz + jz - f.z);
+// The feature points are jittered over the central 80 % of their cells: 0.1 + 0.8 j / 1024 along
+// each axis for a 10-bit j. The step 0.8 / 1024 (the float nearest 0.8f / 1024, which scaling
+// by a power of two leaves exact).
+const float PAT_JITTER_STEP = 0.00078125f;
+
+// The offset from the point to the feature point of a cell with hash h, given per axis the
+// offset from the point to the cell's corner plus 0.1 (o = cell corner + 0.1 - point): three
+// 10-bit jitters, one multiply-add each.
+vec3 pat_cell_offset(uint h, float ox, float oy, float oz) {
+  return vec3(ox + float(h & 1023u) * PAT_JITTER_STEP, oy + float((h >> 10u) & 1023u) * PAT_JITTER_STEP,
+              oz + float((h >> 20u) & 1023u) * PAT_JITTER_STEP);
 }
 
 // |v|^2 summed in the search's order.
@@ -396,9 +427,14 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   float bx = f.x < 0.5f ? -1.0f : 0.0f;
   float by = f.y < 0.5f ? -1.0f : 0.0f;
   float bz = f.z < 0.5f ? -1.0f : 0.0f;
-  float cx = bx + 1.0f;
-  float cy = by + 1.0f;
-  float cz = bz + 1.0f;
+  // Per axis, the offset from the point to the lower and the upper cell's corner plus 0.1 (the
+  // jitter's start): computed once, not per cell.
+  float ax = bx + 0.1f - f.x;
+  float ay = by + 0.1f - f.y;
+  float az = bz + 0.1f - f.z;
+  float cx = ax + 1.0f;
+  float cy = ay + 1.0f;
+  float cz = az + 1.0f;
   // A cell's hash is lowbias32 of x*K1 + y*K2 + z*K3 + salt over its integer coordinates
   // (offset by 2^20 so negative cells hash as distinct uints): the sum mod 2^32 is computed
   // from one product per axis, the block's upper cell adding K (the coordinates are integers
@@ -411,9 +447,9 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   uint z1 = z0 + 0xcb1ab31fu;
   // The eight cells in the order x fastest, then y, then z (which of equal distances wins).
   uint h0 = pat_hash(x0 + y0 + z0);
-  vec3 v0 = pat_cell_offset(h0, bx, by, bz, f);
+  vec3 v0 = pat_cell_offset(h0, ax, ay, az);
   uint h1 = pat_hash(x1 + y0 + z0);
-  vec3 v1 = pat_cell_offset(h1, cx, by, bz, f);
+  vec3 v1 = pat_cell_offset(h1, cx, ay, az);
   float d0 = pat_sq(v0);
   float d1 = pat_sq(v1);
   // The first two cells sorted: what inserting them into an empty pair (distances 1e9) gives,
@@ -427,22 +463,22 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   c.h2 = swap ? h0 : h1;
   c.v2 = swap ? v0 : v1;
   uint h = pat_hash(x0 + y1 + z0);
-  vec3 v = pat_cell_offset(h, bx, cy, bz, f);
+  vec3 v = pat_cell_offset(h, ax, cy, az);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   h = pat_hash(x1 + y1 + z0);
-  v = pat_cell_offset(h, cx, cy, bz, f);
+  v = pat_cell_offset(h, cx, cy, az);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   h = pat_hash(x0 + y0 + z1);
-  v = pat_cell_offset(h, bx, by, cz, f);
+  v = pat_cell_offset(h, ax, ay, cz);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   h = pat_hash(x1 + y0 + z1);
-  v = pat_cell_offset(h, cx, by, cz, f);
+  v = pat_cell_offset(h, cx, ay, cz);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   h = pat_hash(x0 + y1 + z1);
-  v = pat_cell_offset(h, bx, cy, cz, f);
+  v = pat_cell_offset(h, ax, cy, cz);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   h = pat_hash(x1 + y1 + z1);
-  v = pat_cell_offset(h, cx, cy, cz, f);
+  v = pat_cell_offset(h, cx, cy, cz);
   c = pat_cells_insert(c, pat_sq(v), h, v);
   // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
   // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
@@ -671,7 +707,7 @@ vec4 pat_vein_shade_seen(PatParams P, vec3 objectPos, float t0, float t1, float 
     c = pat_mix3(c, P.veinColor, cov.x);
   }
   // Grain: one octave of value noise at 1.5 texels, a multiplicative speckle.
-  float g = pat_value3(pat_texel_pos(P, objectPos) * 0.6667f, 1048576.0f, 0x3c6ef372u);
+  float g = pat_grain(pat_texel_pos(P, objectPos) * 0.6667f, 0x3c6ef372u);
   c = c * (1.0f + P.grainAmount * (g - 0.5f));
   return vec4(c.x, c.y, c.z, 1.0f - max(cov.x, max(cov.y, cov.z)));
 }

@@ -22,13 +22,15 @@ constexpr float kTapsPerRootTexel = 1.5f;
 }  // namespace
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
-    : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
+    : programs_(shaders,
+                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
   program(kMaxTaps);  // so a broken shader shows at once
 }
 
 const gl::Program& SubsurfaceBlurPass::program(int taps) {
-  return programs_.get(static_cast<uint32_t>(taps), [taps] { return std::vector<std::string>{"BLUR_TAPS " + std::to_string(taps)}; });
+  return programs_.get(static_cast<uint32_t>(taps),
+                       [taps] { return std::vector<std::string>{"BLUR_TAPS " + std::to_string(taps)}; });
 }
 
 void SubsurfaceBlurPass::compileAll() {

@@ -10,7 +10,11 @@
 // so a crease's near side tends to the emitter's radiosity instead of the point law's
 // singularity. Since session 9 each texel is also a glossy emitter: the light its surface
 // reflects, flux E(d) x area x cos x F(cos) (Schlick; the stone's F0), sent around the mirror
-// direction (bounce_sample: the lobe and its error). Approximations, each stated:
+// direction (bounce_sample: the lobe and its error). Since session 10 the receiver is glossy too:
+// the camera sees the lit parts mirrored in the stone's surface (light -> emitter -> the
+// receiver's specular layer -> camera), which a diffuse receiver leaves out and which is most of
+// what back-lit stone shows between its lit rims (docs/quality.md, "Tenth session"; bounce_sample).
+// Approximations, each stated:
 // - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
 //   between two parts that cannot see each other; the cosines already drop every emitter behind
 //   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
@@ -57,22 +61,36 @@ const float BOUNCE_LOD_FINER = 3.0;
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
 const float BOUNCE_GLOSS = 4.0;
 
+// The glossy receiver (session 10): the emitters' diffuse radiance reflected toward the camera by
+// the receiver's specular layer, a normalized Phong lobe (m + 1) / (2 PI) cos^m of exponent
+// BOUNCE_GLOSS around the mirror direction R of the view at P (as f cos: its integral over the
+// sphere is 1, so the layer reflects F of an even surround, F Schlick's at the view's cosine,
+// applied by bounce_upsample.glsl). Cycles' lobe is GGX at alpha = roughness^2 = 0.0225, a few
+// degrees: the same 33 samples cannot resolve it, and the curved receivers' normals spread the
+// image they mirror over tens of degrees within one gather texel anyway (the emitters' lobe above,
+// the same reasoning and exponent). A sharper lobe (m = 16) measured worse (buddha-front relative
+// RMSE 0.174 -> 0.192, on a first version with the mirrored part PI too strong). The emitters' own
+// glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
+// shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
+
 // Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
 // y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
-// depends on the material). Read BOUNCE_LOD_FINER levels finer than the level of that area
-// (bilinear within the level: continuous in uv).
-vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);  // off the map: no light
+// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
+// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
+// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
+// within the level: continuous in uv).
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   float texels = dA * size * size;
   float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
-  if (pw.w <= 0.0) return vec3(0.0);
+  if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
   vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
   float nl = length(np);
-  if (nl < 1e-4) return vec3(0.0);
+  if (nl < 1e-4) return vec4(0.0);
   np /= nl;
   float A = pw.w * texels;  // the w the sample stands for
   float Aa = na.w * texels;  // and the a
@@ -80,7 +98,7 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float r2 = max(dot(d, d), 1e-12);
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
-  if (cosP <= 0.0 || cosX <= 0.0) return vec3(0.0);
+  if (cosP <= 0.0 || cosX <= 0.0) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
@@ -89,31 +107,38 @@ vec3 bounce_sample(vec3 P, vec3 N, vec2 uv, float dA, float size, float maxLod) 
   float cosR = max(dot(mirror, d), 0.0) * inversesqrt(r2);
   float lobe = (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosR, BOUNCE_GLOSS);
   float glossy = lobe * cosX * inversesqrt(r2) / (r2 + A / PI);
-  return falloff * vec3(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa);
+  // Mirrored: the emitter's radiance albedo x E x w / (PI area) over its solid angle area cos_p / r^2
+  // (softened as the diffuse law), times the receiver's lobe toward it: the area cancels.
+  float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
+  float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
+  return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
 // (bounce_upsample.glsl applies those: the gather then reads no material parameter, and a colour
-// or ior change re-runs only the lighting pass).
-vec3 bounce_gather(vec3 P, vec3 N) {
+// or ior change re-runs only the lighting pass); w, the radiance P's specular layer mirrors toward
+// the camera at V, before the emitters' albedo and P's Fresnel factor.
+vec4 bounce_gather(vec3 P, vec3 N, vec3 V) {
+  vec3 R = reflect(-V, N);
   vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
   float size = float(textureSize(u_bounce_position, 0).x);
   float maxLod = log2(size);
-  vec3 sum = vec3(0.0);
+  vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
-  sum += bounce_sample(P, N, centre, PI * inner * inner, size, maxLod);
+  sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod);
   for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
       float phi = 2.0 * PI * (float(k) + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
-      sum += bounce_sample(P, N, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
+      sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
     }
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light
-  // (the environment's 41/42, marble_light.glsl) and the pass stores irradiance / PI.
-  return sum * (41.0 / 42.0) / PI;
+  // (the environment's 41/42, marble_light.glsl) and the pass stores irradiance / PI. The mirrored
+  // part is a radiance already (light_falloff holds E = PI x the light's radiance).
+  return vec4(sum.xyz * (41.0 / 42.0) / PI, sum.w);
 }

@@ -16,23 +16,24 @@ layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 uniform int u_scale;  // full-resolution pixels per texel of this pass
 // rgb: the gathered bounce per unit of the light's radiance (irradiance / PI: diffuse before the
-// emitters' albedo, glossy in two parts before the Fresnel factor; bounce.glsl); a: 1 where a
-// surface was gathered for, 0 on the background.
+// emitters' albedo, glossy in two parts before the Fresnel factor; bounce.glsl); a: the radiance
+// the surface's specular layer mirrors of it (before the emitters' albedo and the Fresnel factor;
+// >= 0) where a surface was gathered for, -1 on the background (BouncePass clears to it).
 layout(location = 0) out vec4 o_bounce;
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
   ivec2 size = textureSize(u_depth, 0);
   if (any(greaterThanEqual(px, size))) {
-    o_bounce = vec4(0.0);
+    o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {
-    o_bounce = vec4(0.0);
+    o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   vec3 P = surface_point((vec2(px) + 0.5) / vec2(size), depth);
   vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
-  o_bounce = vec4(bounce_gather(P, N), 1.0);
+  o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P));
 }

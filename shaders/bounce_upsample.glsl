@@ -35,7 +35,8 @@ uniform float u_ior;            // the emitters' Fresnel F0 (their glossy reflec
 const float BOUNCE_MIN_WEIGHT = 0.05;
 
 // Irradiance / PI that one bounce brings to the surface at full-resolution pixel px (point P,
-// normal N), before P's own albedo and entry.
+// normal N), before P's own albedo and entry; with it, over P's albedo, the bounce's light that P's
+// specular layer mirrors toward the camera (bounce.glsl, since session 10).
 vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   vec2 t = vec2(px) / float(u_bounce_scale);  // coarse texel i stands for pixel i * scale
   ivec2 i0 = ivec2(floor(t));
@@ -47,14 +48,14 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   vec2 uv = (vec2(px) + 0.5) / vec2(fullSize);
   float pixel = length(surface_point(uv + vec2(1.0 / float(fullSize.x), 0.0), texelFetch(u_depth, px, 0).r) - P);
   float reach = pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
-  vec3 sum = vec3(0.0), best = vec3(0.0), any = vec3(0.0);
+  vec4 sum = vec4(0.0), best = vec4(0.0), any = vec4(0.0);
   float weight = 0.0, bestMatch = 0.0, anyCount = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 ic = min(i0 + c, last);
     vec4 b = texelFetch(u_bounce, ic, 0);
-    if (b.a <= 0.0) continue;  // the background
-    any += b.rgb;
+    if (b.a < 0.0) continue;  // the background
+    any += b;
     anyCount += 1.0;
     ivec2 ps = ic * u_bounce_scale;
     vec3 Ps = surface_point((vec2(ps) + 0.5) / vec2(fullSize), texelFetch(u_depth, ps, 0).r);
@@ -69,15 +70,22 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
     float near = clamp(2.0 - dist / (reach * (length(vec2(ps - px)) + 1.0)), 0.0, 1.0);
     float match = cn * cn * plane * near;
     float wb = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
-    sum += wb * match * b.rgb;
+    sum += wb * match * b;
     weight += wb * match;
     if (match > bestMatch) {
       bestMatch = match;
-      best = b.rgb;
+      best = b;
     }
   }
-  vec3 b = weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
+  vec4 b = weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
   // The gather's scalars (bounce.glsl): diffuse x albedo, glossy x Schlick's F split by F0.
   float F0 = f0_from_ior(u_ior).x;
-  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z);
+  // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected
+  // light, but returned with the light entering the stone, which the post pass multiplies by the
+  // albedo at P, so divided by it: taken as the emitters' (the base colour), the two cancel. Exact
+  // for a flat stone; on a veined one the mirror image is tinted by the vein under it (off by the
+  // vein's contrast to the base colour), and it is spread by the subsurface blur's millimetres.
+  float m = 1.0 - clamp(dot(N, normalize(u_camera_pos - P)), 0.0, 1.0), m2 = m * m;
+  float Fv = F0 + (1.0 - F0) * m2 * m2 * m;
+  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z + Fv * b.a);
 }

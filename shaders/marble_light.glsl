@@ -3,18 +3,21 @@
 // Needs from the includer: marble_shading.glsl (BRDF pieces) and environment.glsl.
 #include "principled_entry.glsl"
 
-// Light the surface reflects (`marble` mode, linear HDR): GGX from the light, shadowed, and
-// the environment's blurred reflection weighted by the split-sum BRDF. E: the light's
-// irradiance at normal incidence; visible: its PCF visibility.
-vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, vec3 F0, float roughness, float env_intensity) {
+// Light the surface reflects (`marble` mode, linear HDR): GGX from the light, shadowed, with the
+// dielectric's exact Fresnel factor (as Cycles' Principled BSDF), and the environment's blurred
+// reflection weighted by the split-sum BRDF (Schlick-based: Karis's fit). E: the light's
+// irradiance at normal incidence; visible: its PCF visibility; ior: the stone's index.
+// footprint_a2: added to GGX's alpha^2 for the normal's spread over the pixel (0: none).
+vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, float footprint_a2,
+                      float env_intensity) {
   float NoV = max(dot(N, V), 1e-4);
   float nl = max(dot(N, L), 0.0);
   vec3 H = normalize(V + L);
-  float a = max(roughness * roughness, 0.002);
-  vec3 F = fresnel_schlick(F0, dot(H, V));
-  vec3 r = E * nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F;
+  float a = sqrt(min(max(roughness * roughness, 0.002) * max(roughness * roughness, 0.002) + footprint_a2, 1.0));
+  float F = fresnel_dielectric(dot(H, V), ior);
+  vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F);
   if (env_intensity > 0.0)
-    r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(F0, roughness, NoV);
+    r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, NoV);
   return r;
 }
 

@@ -18,11 +18,36 @@ float smith_ggx_visibility(float NoV, float NoL, float a) {
   return 0.5 / max(gv + gl, 1e-6);
 }
 
-// Fresnel-Schlick with cos = H.V (Schlick 1994).
-vec3 fresnel_schlick(vec3 F0, float c) {
-  float m = 1.0 - clamp(c, 0.0, 1.0);
-  float m2 = m * m;
-  return F0 + (1.0 - F0) * (m2 * m2 * m);  // m^5 by multiplication: pow() is exp2(5 log2 m)
+// Fresnel reflectance of a dielectric of relative index eta for unpolarized light arriving at
+// cosine c (c = H.V for a microfacet): the exact formula (Walter et al. 2007, eq. 22), as Cycles'
+// fresnel_dielectric_cos, which its Principled BSDF uses for the specular layer (its
+// interpolate_fresnel_color with Specular = F0 / 0.08 and no tint reduces to exactly this).
+// Schlick's (1994) F0 + (1 - F0)(1 - c)^5, used before session 10, is 13 % low at c = 0.75 and
+// 22 % low at c = 0.5 for eta = 1.5: the side-lit scenes' highlights (c = 0.6-0.8) came out
+// 0.66-0.88 of Cycles' (docs/quality.md, "Tenth session"). eta = 1 gives 0, c = 0 gives 1.
+float fresnel_dielectric(float c, float eta) {
+  c = clamp(c, 0.0, 1.0);
+  float g = sqrt(max(eta * eta - 1.0 + c * c, 0.0));  // eta >= 1 (ior's range): no total reflection
+  float a = (g - c) / max(g + c, 1e-6);
+  float b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return 0.5 * a * a * (1.0 + b * b);
+}
+
+// Geometric specular antialiasing (Kaplanyan et al. 2016; Tokuyoshi & Kaplanyan 2019, "Improved
+// Geometric Specular Antialiasing"): a pixel's highlight is the GGX lobe averaged over the normals
+// its footprint covers; their spread widens the lobe, alpha^2 += 2 sigma^2 (GGX's alpha^2 as twice
+// the slopes' variance, Beckmann's relation). sigma^2: the normal's variance over a box one pixel
+// wide, |dN/dx|^2 / 12 + |dN/dy|^2 / 12 (a box pixel: what --supersample's block average and
+// Cycles' --box reference integrate). Without it a highlight narrower than a pixel is point-sampled:
+// on the side-lit reference scenes (a highlight's core ~ a pixel of the 800^2 frame) marble's
+// highlights landed on different pixels than Cycles' (docs/quality.md, "Tenth session").
+// A neighbour off the object (on = 0) is left out; a jump to another surface (a depth edge) is
+// capped at SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's kappa, 0.18).
+const float SPECULAR_FOOTPRINT_MAX_A2 = 0.18;
+float specular_footprint_a2(vec3 dndx, vec3 dndy, float dx_on, float dy_on) {
+  float vx = dx_on == 0.0 ? dot(dndx, dndx) : 0.0;
+  float vy = dy_on == 0.0 ? dot(dndy, dndy) : 0.0;
+  return min(2.0 * (vx + vy) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
 }
 
 // F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.

@@ -78,25 +78,34 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #endif
 }
 
-// The `marble` frame at a surface pixel: the diffuse part + reflected light.
-vec3 marble_compose(float depth) {
+// The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
+// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2).
+vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 P = surface_point(v_uv, depth);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
   return marble_diffuse(px, depth, N) +
-         marble_reflected(N, V, L, E, visible, f0_from_ior(u_ior), u_roughness, u_env_intensity);
+         marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
 }
 
 void main() {
   float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   bool surface = depth < 1.0;
   vec3 c;
-  if (u_compose_marble == 1) c = surface ? marble_compose(depth) : vec3(0.0);
-  else c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+  if (u_compose_marble == 1) {
+    // The normal's screen derivatives are taken here, where every pixel of a 2x2 quad runs (no
+    // derivative is defined inside a branch some of them skip); background pixels hold 0 and
+    // their differences are left out (specular_footprint_a2).
+    vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
+    float on = surface ? 1.0 : 0.0;
+    float a2 = specular_footprint_a2(dFdx(N), dFdy(N), dFdx(on), dFdy(on));
+    c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
+  } else {
+    c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+  }
   if (u_output_linear == 1) {
     // Coverage: where the camera saw the object. The light-depth view (no background to
     // paint) shows the light's map: all of it is content.

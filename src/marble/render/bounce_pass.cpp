@@ -28,9 +28,10 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
   gl::setScreenPassState();
-  // Outside the rectangle there is no surface: alpha 0, which the upsample leaves out.
-  const float zero[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+  // Outside the rectangle there is no surface: alpha -1, which the upsample leaves out (alpha >= 0
+  // is a surface's mirrored bounce, bounce_gather.frag.glsl).
+  const float none[4] = {0, 0, 0, -1};
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, none);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_NORMAL, in.normal);
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);

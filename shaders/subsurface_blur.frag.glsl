@@ -24,7 +24,12 @@ layout(location = 0) out vec4 o_color;
 // blur's resolution; alpha: view depth, 0 off the stone.
 layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_entering;
 uniform vec2 u_direction;          // (1,0) then (0,1)
-uniform int u_taps;                // taps per side, 1..MAX_TAPS (as many as the reach spans in texels)
+// Taps per side, 1..MAX_TAPS (as many as the reach spans in texels): a constant of the program
+// (BLUR_TAPS, defined by SubsurfaceBlurPass), so that the loop is unrolled and each tap reads its
+// offset and weight below at a constant index. With the count a uniform, the index was the loop's
+// counter, which llvmpipe cannot know to be the same in every lane: it gathered both arrays lane
+// by lane, four 8-lane gathers per tap (docs/performance.md, "Tenth session").
+const int u_taps = BLUR_TAPS;
 uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
 uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
 

@@ -210,3 +210,21 @@ TEST(RendererGl, ASecondContextDroppedLeavesTheFirstCurrentAndWorking) {
   const ImageRGBA8 again = renderImage(before, s);  // the first context's objects are still there
   EXPECT_EQ(meanAbsDiff(again, reference), 0.0);
 }
+
+// The subsurface blur is one program per tap count (BLUR_TAPS): its taps' offsets and weights
+// are uniforms of each program, uploaded every frame. A frame with fewer taps after one with more
+// must equal a fresh renderer's: the first frame's weights beyond the second's count must not be
+// read (they are, if the pass kept drawing with the first frame's program).
+TEST_F(RendererFixture, BlurWithFewerTapsAfterMoreEqualsAFreshRender) {
+  useMesh("sculpture");
+  Scene many = smallScene(RenderMode::Marble, "builtin:sculpture", 256);
+  Scene few = smallScene(RenderMode::Marble, "builtin:sculpture", 48);
+  auto taps = [](const Scene& s) { return subsurfaceTaps(cameraMatrices(s.camera, 1.0f), s, s.render.height); };
+  ASSERT_GT(taps(many), taps(few));
+  renderImage(renderer, many);
+  const ImageRGBA8 after = renderImage(renderer, few);
+  Renderer fresh;
+  fresh.setMesh(builtinMesh("sculpture"));
+  const ImageRGBA8 alone = renderImage(fresh, few);
+  EXPECT_EQ(after.pixels, alone.pixels);
+}

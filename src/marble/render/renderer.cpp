@@ -192,6 +192,7 @@ void Renderer::reloadShaders() {
   fresh->albedo.compileAll();
   fresh->lighting.compileAll();
   fresh->post.compileAll();
+  fresh->blur.compileAll();
   passes_ = std::move(fresh);
   invalidate();  // new passes: nothing they stored survives
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "marble/render/shader_constants.h"
 
@@ -20,8 +22,20 @@ constexpr float kTapsPerRootTexel = 1.5f;
 }  // namespace
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
-    : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
-      emptyVao_(gl::VertexArray::create()) {}
+    : programs_(shaders,
+                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
+      emptyVao_(gl::VertexArray::create()) {
+  program(kMaxTaps);  // so a broken shader shows at once
+}
+
+const gl::Program& SubsurfaceBlurPass::program(int taps) {
+  return programs_.get(static_cast<uint32_t>(taps),
+                       [taps] { return std::vector<std::string>{"BLUR_TAPS " + std::to_string(taps)}; });
+}
+
+void SubsurfaceBlurPass::compileAll() {
+  for (int taps = 1; taps <= kMaxTaps; ++taps) program(taps);
+}
 
 int subsurfaceScale(const RenderSettings& settings) {
   return settings.subsurface_resolution == SubsurfaceResolution::Half ? 2 : 1;
@@ -85,11 +99,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
     kernelReachMm_ = reachMm;
     kernelValid_ = true;
   }
-  glProgramUniform3fv(program_.id(), program_.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
-  glProgramUniform1fv(program_.id(), program_.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
-  program_.set("u_taps", kernel_.taps);
-  setSubsurfaceUniforms(program_, camera, scene, height);
-  glUseProgram(program_.id());
+  // The tap count is a constant of the program (BLUR_TAPS): shaders/subsurface_blur.frag.glsl says why.
+  const gl::Program& p = program(kernel_.taps);
+  glProgramUniform3fv(p.id(), p.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
+  glProgramUniform1fv(p.id(), p.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
+  setSubsurfaceUniforms(p, camera, scene, height);
+  glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
 
   // Outside the (half-resolution) rectangle: no surface, zero light and zero coverage.
@@ -98,12 +113,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   glClearNamedFramebufferfv(resultFbo_.id(), GL_COLOR, 0, zero);
   scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, in.entering);
-  program_.set("u_direction", glm::vec2(1, 0));
+  p.set("u_direction", glm::vec2(1, 0));
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, horizontal_.id());
-  program_.set("u_direction", glm::vec2(0, 1));
+  p.set("u_direction", glm::vec2(0, 1));
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   scissorOff();

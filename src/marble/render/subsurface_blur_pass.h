@@ -3,7 +3,7 @@
 // light that entered the stone (shaders/subsurface_blur.frag.glsl), at half resolution, on the
 // surface inside the mesh's screen rectangle; alpha is the view depth. The post pass upsamples it (depth-aware),
 // multiplies by the albedo and adds the reflected light.
-#include "marble/gl/program.h"
+#include "marble/gl/program_variants.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
 #include "marble/render/subsurface_profile.h"
@@ -28,9 +28,13 @@ public:
   GLuint resultTexture() const { return result_.id(); }
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
   PassTimer& timer() { return timer_; }
+  // Every tap count's program now (reloadShaders: an error must show while the old ones are in use).
+  void compileAll();
 
 private:
-  gl::Program program_;
+  // One program per tap count (1..MAX_TAPS), built at its first use.
+  gl::ProgramVariants programs_;
+  const gl::Program& program(int taps);
   gl::VertexArray emptyVao_;
   gl::Texture horizontal_, result_;
   gl::Framebuffer horizontalFbo_, resultFbo_;

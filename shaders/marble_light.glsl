@@ -13,7 +13,8 @@ vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, 
   float NoV = max(dot(N, V), 1e-4);
   float nl = max(dot(N, L), 0.0);
   vec3 H = normalize(V + L);
-  float a = sqrt(min(max(roughness * roughness, 0.002) * max(roughness * roughness, 0.002) + footprint_a2, 1.0));
+  float a_stone = max(roughness * roughness, 0.002);
+  float a = sqrt(min(a_stone * a_stone + footprint_a2, 1.0));  // the lobe widened by the pixel's footprint
   float F = fresnel_dielectric(dot(H, V), ior);
   vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F);
   if (env_intensity > 0.0)

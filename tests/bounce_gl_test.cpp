@@ -77,30 +77,35 @@ Scene cornerScene(float albedo, float h = kHeight, float lightElevationDeg = 90.
   return s;
 }
 
-// ∫ cosθ_p cosθ_x / (π r²) dA over the plate's top face (normal +y) seen from the probe (normal
-// +x) at height h: midpoint rule on a 400 x 800 grid, converged to 0.1 %.
-double viewFactorOfPlate(float h) {
-  const glm::vec3 q = probe(h);
+// The midpoint rule over the plate's top face (x from kWall to 1, z from -1 to 1) on a 400 x 800
+// grid: the sum of f(x, z) dA (converged to 0.1 % for the integrands below).
+template <class Integrand>
+double overThePlate(Integrand f) {
   const int nx = 400, nz = 800;
   const double dx = (1.0 - kWall) / nx, dz = 2.0 / nz;
   double sum = 0.0;
   for (int i = 0; i < nx; ++i)
-    for (int k = 0; k < nz; ++k) {
-      const double x = kWall + (i + 0.5) * dx, z = -1.0 + (k + 0.5) * dz;
-      const double ux = x - q.x, uy = kPlateTop - q.y, uz = z - q.z;  // probe -> emitter
-      const double r2 = ux * ux + uy * uy + uz * uz;
-      const double cosX = ux / std::sqrt(r2), cosP = -uy / std::sqrt(r2);
-      sum += cosP * cosX / (M_PI * r2) * dx * dz;
-    }
+    for (int k = 0; k < nz; ++k) sum += f(kWall + (i + 0.5) * dx, -1.0 + (k + 0.5) * dz) * dx * dz;
   return sum;
+}
+
+// ∫ cosθ_p cosθ_x / (π r²) dA over the plate's top face (normal +y) seen from the probe (normal
+// +x) at height h.
+double viewFactorOfPlate(float h) {
+  const glm::vec3 q = probe(h);
+  return overThePlate([&](double x, double z) {
+    const double ux = x - q.x, uy = kPlateTop - q.y, uz = z - q.z;  // probe -> emitter
+    const double r2 = ux * ux + uy * uy + uz * uz;
+    const double cosX = ux / std::sqrt(r2), cosP = -uy / std::sqrt(r2);
+    return cosP * cosX / (M_PI * r2);
+  });
 }
 
 // The light the plate sends the probe per unit of the probe's albedo x 41/42, when the light (a
 // sun of irradiance PI at normal incidence) comes from +z at elevation e, grazing the plate at
 // cos c = sin e: the diffuse re-emission albedo x E c principled_entry(c) (Lambertian) and the
 // glossy reflection E c F(c) (Schlick, F0 of ior 1.5) into bounce.glsl's Phong lobe of exponent
-// kGloss around the mirror direction (0, sin e, -cos e). Midpoint rule on the plate's top face,
-// converged to 0.1 %. Returns {diffuse part, glossy part}.
+// kGloss around the mirror direction (0, sin e, -cos e). Returns {diffuse part, glossy part}.
 constexpr double kGloss = 4.0;
 std::pair<double, double> grazingBounceOfPlate(float albedo, float h, float elevationDeg) {
   const glm::vec3 q = probe(h);
@@ -108,21 +113,19 @@ std::pair<double, double> grazingBounceOfPlate(float albedo, float h, float elev
   const double m5 = std::pow(1.0 - c, 5.0), F0 = 0.04;
   const double diffuseFlux = albedo * M_PI * c * (1.0 - 0.5 * m5), glossyFlux = M_PI * c * (F0 + (1.0 - F0) * m5);
   const double rx = 0.0, ry = std::sin(e), rz = -std::cos(e);  // the mirror direction
-  const int nx = 400, nz = 800;
-  const double dx = (1.0 - kWall) / nx, dz = 2.0 / nz;
-  double diffuse = 0.0, glossy = 0.0;
-  for (int i = 0; i < nx; ++i)
-    for (int k = 0; k < nz; ++k) {
-      const double x = kWall + (i + 0.5) * dx, z = -1.0 + (k + 0.5) * dz;
+  // part(0): the diffuse re-emission's integrand, part(1): the glossy one's.
+  const auto part = [&](int glossyPart) {
+    return overThePlate([&](double x, double z) {
       const double ux = q.x - x, uy = q.y - kPlateTop, uz = q.z - z;  // emitter -> probe
       const double r2 = ux * ux + uy * uy + uz * uz, r = std::sqrt(r2);
       const double cosP = uy / r, cosX = -ux / r;
+      if (glossyPart == 0) return diffuseFlux * cosP / M_PI * cosX / r2;
       const double cosR = std::max((rx * ux + ry * uy + rz * uz) / r, 0.0);
-      diffuse += diffuseFlux * cosP / M_PI * cosX / r2 * dx * dz;
-      glossy += glossyFlux * (kGloss + 1.0) / (2.0 * M_PI) * std::pow(cosR, kGloss) * cosX / r2 * dx * dz;
-    }
+      return glossyFlux * (kGloss + 1.0) / (2.0 * M_PI) * std::pow(cosR, kGloss) * cosX / r2;
+    });
+  };
   // Irradiance / PI, as the stone takes in diffuse light.
-  return {diffuse / M_PI, glossy / M_PI};
+  return {part(0) / M_PI, part(1) / M_PI};
 }
 
 // The radiance the probe's specular layer mirrors of the plate's diffuse light (bounce.glsl, the
@@ -130,24 +133,19 @@ std::pair<double, double> grazingBounceOfPlate(float albedo, float h, float elev
 // from +z at elevation e (as grazingBounceOfPlate; from above at 90): the plate's radiance
 // albedo x E c principled_entry(c) / PI, times F(n.v) (Schlick, F0 0.04) and the receiver's lobe
 // ∫ (kGloss + 1) / (2π) cos^kGloss θ_r cosθ_p / r² dA over the plate's top face, θ_r from the
-// mirror direction of v about the face's normal (+x). Midpoint rule, converged to 0.1 %.
+// mirror direction of v about the face's normal (+x).
 double mirroredPlate(float albedo, float h, glm::dvec3 v, float elevationDeg = 90.0f) {
   const glm::vec3 q = probe(h);
   const glm::dvec3 r(v.x, -v.y, -v.z);  // reflect(-v, +x)
   const double m = 1.0 - v.x, F = 0.04 + 0.96 * m * m * m * m * m;
   const double c = std::sin(elevationDeg * M_PI / 180.0), radiance = albedo * c * (1.0 - 0.5 * std::pow(1.0 - c, 5.0));
-  const int nx = 400, nz = 800;
-  const double dx = (1.0 - kWall) / nx, dz = 2.0 / nz;
-  double sum = 0.0;
-  for (int i = 0; i < nx; ++i)
-    for (int k = 0; k < nz; ++k) {
-      const double x = kWall + (i + 0.5) * dx, z = -1.0 + (k + 0.5) * dz;
-      const glm::dvec3 u(x - q.x, kPlateTop - q.y, z - q.z);  // probe -> emitter
-      const double r2 = glm::dot(u, u), len = std::sqrt(r2);
-      const double cosR = std::max(glm::dot(r, u) / len, 0.0), cosP = -u.y / len;
-      sum += (kGloss + 1.0) / (2.0 * M_PI) * std::pow(cosR, kGloss) * cosP / r2 * dx * dz;
-    }
-  return radiance * F * sum;
+  const double lobe = overThePlate([&](double x, double z) {
+    const glm::dvec3 u(x - q.x, kPlateTop - q.y, z - q.z);  // probe -> emitter
+    const double r2 = glm::dot(u, u), len = std::sqrt(r2);
+    const double cosR = std::max(glm::dot(r, u) / len, 0.0), cosP = -u.y / len;
+    return (kGloss + 1.0) / (2.0 * M_PI) * std::pow(cosR, kGloss) * cosP / r2;
+  });
+  return radiance * F * lobe;
 }
 // The corner scene's camera looks at the probe face head-on.
 const glm::dvec3 kHeadOn(1.0, 0.0, 0.0);

@@ -7,12 +7,9 @@
 // pixels (GPUs lose the same way, in 2x2 quads).
 #include "gbuffer.glsl"
 
-in vec3 v_world_pos;
 in vec3 v_world_normal;
 
-// xy: the interpolated (shading) normal; zw: the triangle's own (geometric) normal, for Cycles'
-// rule at silhouettes where the shading normal faces away from the camera (valid_reflection_normal).
-layout(location = 0) out vec4 o_normal;
+layout(location = 0) out vec2 o_normal;
 
 void main() {
   // Not normalized: the octahedral encoding divides by the L1 norm, whatever the length (a
@@ -20,9 +17,5 @@ void main() {
   vec3 n = v_world_normal;
   // Meshes with inward or inconsistent winding: face the normal toward the viewer.
   if (!gl_FrontFacing) n = -n;
-  // The triangle's plane from the position's screen derivatives: exact inside a triangle (a 2x2
-  // quad's helper pixels extrapolate the same plane). Its sign is set by the reader (toward the
-  // viewer), so the winding does not matter.
-  vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));
-  o_normal = vec4(encode_normal(n), encode_normal(ng));
+  o_normal = encode_normal(n);
 }

@@ -1,9 +1,8 @@
 #pragma once
 // Pass 2: the mesh seen from the camera into a lean G-buffer:
-//   normals RGBA16_SNORM   8 bytes  (octahedral, world space: the interpolated shading normal
-//                                    in xy, the triangle's own normal in zw)
+//   normal  RG16_SNORM     4 bytes  (octahedral, world space)
 //   depth   DEPTH32F       4 bytes  (position is reconstructed from it)
-// The albedo (RGBA8, 4 bytes) is added by the AlbedoPass: 12 bytes per pixel plus depth.
+// The albedo (RGBA8, 4 bytes) is added by the AlbedoPass: 8 bytes per pixel plus depth.
 #include "marble/gl/program.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/pass_timer.h"
@@ -18,7 +17,7 @@ public:
   void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera);
   GLuint normalTexture() const { return normal_.id(); }
   GLuint depthTexture() const { return depth_.id(); }
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 12; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
   PassTimer& timer() { return timer_; }
 
 private:

@@ -10,11 +10,8 @@
 // footprint_a2: added to GGX's alpha^2 for the normal's spread over the pixel (0: none).
 vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, float footprint_a2,
                       float env_intensity) {
-  // N: the shading normal as Cycles bends it (valid_reflection_normal); like Cycles' GGX, no
-  // reflection where it still faces away from the viewer or the light.
-  float NoV = dot(N, V);
-  float nl = NoV > 0.0 ? max(dot(N, L), 0.0) : 0.0;
-  NoV = max(NoV, 1e-4);
+  float NoV = max(dot(N, V), 1e-4);
+  float nl = max(dot(N, L), 0.0);
   vec3 H = normalize(V + L);
   float a = sqrt(min(max(roughness * roughness, 0.002) * max(roughness * roughness, 0.002) + footprint_a2, 1.0));
   float F = fresnel_dielectric(dot(H, V), ior);

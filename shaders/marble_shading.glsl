@@ -50,35 +50,6 @@ float specular_footprint_a2(vec3 dndx, vec3 dndy, float dx_on, float dy_on) {
   return min(2.0 * (vx + vy) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
 }
 
-// Cycles' rule for a shading normal N that would mirror the view below the surface (the
-// interpolated normal of a silhouette can face away from the camera while the triangle faces it):
-// N is turned toward the geometric normal Ng, in the plane of the two, just far enough that the
-// view's reflection R = 2 (N.V) N - V rises to t = min(0.9 Ng.V, 0.01) above the surface (Ng.R = t).
-// The formula is Cycles 3.4's ensure_valid_reflection (kernel/closure/bsdf_util.h): with Ng as z
-// and N in the x-z plane, 2 (sqrt(1 - z^2) Vx + z Vz) z - Vz = t is solved for z = N'.z (two roots
-// in the upper hemisphere; the one whose reflection is above the surface, the shallower if both
-// are). Ng must face the viewer (Ng.V >= 0). Unchanged where R already clears the surface.
-vec3 valid_reflection_normal(vec3 N, vec3 Ng, vec3 V) {
-  float t = min(0.9 * dot(Ng, V), 0.01);
-  if (dot(Ng, 2.0 * dot(N, V) * N - V) >= t) return N;
-  vec3 X = N - dot(N, Ng) * Ng;
-  X *= inversesqrt(max(dot(X, X), 1e-20));
-  float vx = dot(V, X), vz = dot(V, Ng);
-  float a = vx * vx + vz * vz;
-  float b = sqrt(max(vx * vx * (a - t * t), 0.0));
-  float c = vz * t + a;
-  float z1 = 0.5 * (c + b) / a, z2 = 0.5 * (c - b) / a;
-  bool ok1 = z1 > 1e-5 && z1 <= 1.0 + 1e-5, ok2 = z2 > 1e-5 && z2 <= 1.0 + 1e-5;
-  if (!ok1 && !ok2) return Ng;
-  vec2 n1 = vec2(sqrt(max(1.0 - z1, 0.0)), sqrt(z1)), n2 = vec2(sqrt(max(1.0 - z2, 0.0)), sqrt(z2));
-  vec2 n = ok1 ? n1 : n2;
-  if (ok1 && ok2) {
-    float r1 = 2.0 * dot(n1, vec2(vx, vz)) * n1.y - vz, r2 = 2.0 * dot(n2, vec2(vx, vz)) * n2.y - vz;
-    n = (r1 >= 1e-5 && r2 >= 1e-5) ? (r1 < r2 ? n1 : n2) : (r1 > r2 ? n1 : n2);
-  }
-  return n.x * X + n.y * Ng;
-}
-
 // F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.
 vec3 f0_from_ior(float ior) {
   float r = (ior - 1.0) / (ior + 1.0);

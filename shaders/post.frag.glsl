@@ -78,48 +78,17 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #endif
 }
 
-// Along the pixel axis e, the step to the neighbour that continues this pixel's surface: the
-// quad partner's (dP, dz: fine derivatives, the forward difference whichever of the two this pixel
-// is) or the neighbour on the other side's (one depth read), whichever depth is nearer this
-// pixel's. At a silhouette or a depth edge the partner may be background or another part; the
-// other side then is the surface. `ok` is cleared where neither neighbour is a surface.
-vec3 surface_step(ivec2 px, ivec2 e, bool odd, float depth, vec3 P, vec3 dP, float dz, inout bool ok) {
-  ivec2 size = textureSize(u_depth, 0);
-  int s = odd ? 1 : -1;  // the side outside this pixel's quad
-  ivec2 q = px + s * e;
-  bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
-  float dq = inside ? texelFetch(u_depth, q, 0).r : 1.0;
-  bool other = inside && dq < 1.0 && abs(dq - depth) < abs(dz);
-  ok = ok && (other || (odd ? depth - dz : depth + dz) < 1.0);  // the partner's depth
-  return other ? float(s) * (surface_point(v_uv + vec2(s * e) / vec2(size), dq) - P) : dP;
-}
-
-// The geometric normal at a surface pixel, facing the viewer: the G-buffer stores only the
-// interpolated one, so it is rebuilt from the depth buffer's surface points (surface_step along x
-// and y). vec3(0) where the pixel has no surface neighbour on an axis (a one-pixel sliver).
-vec3 geometric_normal(ivec2 px, float depth, vec3 P, vec3 V, vec3 dPdx, vec3 dPdy, float dzdx, float dzdy) {
-  bool ok = true;
-  vec3 tx = surface_step(px, ivec2(1, 0), (px.x & 1) == 1, depth, P, dPdx, dzdx, ok);
-  vec3 ty = surface_step(px, ivec2(0, 1), (px.y & 1) == 1, depth, P, dPdy, dzdy, ok);
-  vec3 n = cross(tx, ty);
-  float len2 = dot(n, n);
-  if (!ok || len2 == 0.0) return vec3(0.0);
-  n *= inversesqrt(len2);
-  return dot(n, V) < 0.0 ? -n : n;
-}
-
-// The `marble` frame at a surface pixel (shading normal N, geometric normal Ng or 0): the diffuse
-// part + reflected light, the highlight's lobe widened by the normal's spread over the pixel
-// (specular_footprint_a2) and its normal bent as Cycles bends it (valid_reflection_normal).
-vec3 marble_compose(float depth, vec3 P, vec3 N, vec3 Ng, float footprint_a2) {
+// The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
+// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2).
+vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
+  vec3 P = surface_point(v_uv, depth);
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  vec3 Ns = Ng == vec3(0.0) ? N : valid_reflection_normal(N, Ng, V);
   return marble_diffuse(px, depth, N) +
-         marble_reflected(Ns, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+         marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
 }
 
 void main() {
@@ -133,17 +102,7 @@ void main() {
     vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
     float on = surface ? 1.0 : 0.0;
     float a2 = specular_footprint_a2(dFdx(N), dFdy(N), dFdx(on), dFdy(on));
-    // The surface point's and the depth's fine derivatives, for the geometric normal (every pixel
-    // of the quad runs this; a background pixel's point lies on the far plane).
-    vec3 P = surface_point(v_uv, depth);
-    vec3 dPdx = dFdxFine(P), dPdy = dFdyFine(P);
-    float dzdx = dFdxFine(depth), dzdy = dFdyFine(depth);
-    if (surface) {
-      vec3 Ng = geometric_normal(ivec2(gl_FragCoord.xy), depth, P, normalize(u_camera_pos - P), dPdx, dPdy, dzdx, dzdy);
-      c = marble_compose(depth, P, N, Ng, a2);
-    } else {
-      c = vec3(0.0);
-    }
+    c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
   } else {
     c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
   }

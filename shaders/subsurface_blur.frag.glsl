@@ -12,10 +12,9 @@
 // runs them at full resolution). Blur texel h stands for the full-resolution pixel h * scale.
 // Alpha is that pixel's view depth (0: no stone) in the input, between the passes and after
 // them: it says which taps are on the same surface here and, in the post pass, which texels
-// the depth-aware upsample may use (subsurface_common.glsl). Two reads per tap: the colour
-// (bilinear) and its four texels' depths (a gather), which weight the tap by how much of it is
-// this surface (there was a third, of the G-buffer's depth: on llvmpipe each texture read
-// costs about as much over the frame as the rest of a tap; docs/performance.md).
+// the depth-aware upsample may use (subsurface_common.glsl). One read per tap, then (there was
+// a second, of the G-buffer's depth): on llvmpipe each texture read costs about as much over
+// the frame as the rest of a tap.
 // Only the surface is shaded (its depth test: BlurDepthPass).
 #include "gbuffer.glsl"
 #include "subsurface_common.glsl"
@@ -45,29 +44,16 @@ void main() {
   // 0.765 against 0.757; docs/quality.md).
   float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));
   vec3 sum = vec3(0.0), weight = vec3(0.0);
-  float reach = u_reach_mm / u_mm_per_unit;  // scene units
   for (int i = -u_taps; i <= u_taps; ++i) {
     vec2 t = vec2(h) + 0.5 + u_direction * (sign(float(i)) * u_offsets_mm[abs(i)] * texels_per_mm);
     vec4 e = texture(u_entering, t / input_size);
-    // How much of the tap is this surface: the bilinear weights of its four texels that are
-    // stone within the reach in depth. A texel off the stone (alpha 0, colour 0) or on another
-    // surface (a depth jump) is left out by its own weight, so the tap fades continuously as it
-    // slides across a silhouette. The whole tap switched off at one blended depth instead (a
-    // bilinear read there is depth x coverage), which made a step from one texel to the next
-    // (docs/quality.md, "Tenth session: the back-lit rims kept").
-    vec4 a = textureGather(u_entering, t / input_size, 3);  // (0,1) (1,1) (1,0) (0,0)
-    vec2 f = fract(t - 0.5);
-    vec4 bilinear = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-    vec4 stone = vec4(greaterThan(a, vec4(0.0)));
-    vec4 kept = stone * vec4(lessThanEqual(abs(a - depth), vec4(reach)));
-    float stoneShare = dot(bilinear, stone), keptShare = dot(bilinear, kept);
-    if (keptShare <= 0.0) continue;
-    // e.rgb is the stone texels' colours, bilinearly weighted (the background's is 0): over the
-    // kept share when every stone texel is kept (the silhouette against the background: exact);
-    // across a depth jump the other surface's texels are assumed to carry the same colour.
+    // Off the stone, or across a silhouette (more than the reach away in depth): left out. A
+    // tap between stone and background reads a depth scaled down by its coverage, so it is
+    // left out unless nearly all stone.
+    if (e.a <= 0.0 || abs(e.a - depth) * u_mm_per_unit > u_reach_mm) continue;
     vec3 w = u_weights[abs(i)];
-    sum += w * (keptShare / stoneShare) * e.rgb;
-    weight += w * keptShare;
+    sum += w * e.rgb;
+    weight += w;
   }
   o_color = depth > 0.0 ? vec4(sum / max(weight, vec3(1e-8)), depth) : vec4(0.0);
 }

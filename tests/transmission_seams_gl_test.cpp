@@ -296,25 +296,3 @@ TEST(TransmissionSeamsControl, WithoutTheInwardOffsetThereAreSeams) {
 TEST(TransmissionSeamsControl, WithTheLightMapReadNearestThereAreSeams) {
   expectSeamsWithBrokenShader("lighting.frag.glsl", "vec2 f = t - base;", "vec2 f = step(0.5, t - base);", "nearest");
 }
-
-// The subsurface blur's silhouette taps (issue 15, docs/quality.md "Tenth session: the back-lit
-// rims kept"): a tap is weighted by the bilinear share of its four texels that are stone at this
-// depth, so it fades as it slides across the sphere's silhouette. The control puts back the old
-// rule, the whole tap kept or left out by its blended depth (depth x coverage there): it switches
-// from one column to the next near the sphere's top and makes a seam under the point light, where
-// the back-lit weight of issue 15 keeps the rim bright (measured: 1.28x the threshold).
-TEST(TransmissionSeamsControl, WithTheBlursTapsKeptWholeThereIsASeam) {
-  glContext();
-  const auto dir = brokenShaders("subsurface_blur.frag.glsl",
-                                 "float stoneShare = dot(bilinear, stone), keptShare = dot(bilinear, kept);",
-                                 "float stoneShare = 1.0, keptShare = (e.a <= 0.0 || abs(e.a - depth) > reach) ? 0.0 : 1.0;");
-  ASSERT_FALSE(dir.empty()) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
-  Renderer renderer{ShaderLibrary(dir.string())};
-  const Case& c = kCases[1];
-  ASSERT_STREQ(c.name, "sphere_point");
-  const SeamReport r = renderAndMeasure(renderer, c, "-taps-whole");
-  std::cout << "[          ] taps kept whole, " << c.name << ": " << r.seams << " seams, worst " << r.worst << " ("
-            << r.where << ")\n";
-  std::filesystem::remove_all(dir);
-  EXPECT_GT(r.seams, 0) << "the measure missed the blur's silhouette step";
-}

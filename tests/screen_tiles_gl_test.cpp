@@ -3,6 +3,9 @@
 // less than the rectangle; a cell behind the camera gives the whole target.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl_support.h"
@@ -82,4 +85,42 @@ TEST(ScreenTiles, ACellBehindTheCameraGivesTheWholeTarget) {
 TEST(ScreenTiles, AnEmptyMeshHasNoCells) {
   EXPECT_TRUE(OccupancyGrid(Mesh{}).lowerCorners().empty());
   EXPECT_TRUE(coveredSpans(OccupancyGrid(Mesh{}), glm::mat4(1.0f), 64, 64, 2).empty());
+}
+
+TEST(ScreenTiles, CellsInsideTheOccupiedRegionAreLeftOut) {
+  // One triangle across the unit cube's diagonal: its bounding box is the whole grid, so every
+  // cell is occupied and only the grid's outer layer has an empty face neighbour.
+  Mesh mesh;
+  mesh.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 0.0f}, {0.0f, 1.0f, 1.0f}, {1.0f, 0.0f, 1.0f}};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  const int n = OccupancyGrid::kCells;
+  EXPECT_EQ(OccupancyGrid(mesh).lowerCorners().size(), static_cast<size_t>(n * n * n - (n - 2) * (n - 2) * (n - 2)));
+}
+
+TEST(ScreenTiles, SpansAreThoseOfEveryCellsProjectedBox) {
+  // coveredSpans projects a cell's corners with its own arithmetic; the tiles must be those of
+  // projectBox (screen_rect.h) over the same cells, bit for bit, from near and far.
+  const Mesh mesh = builtinMesh("sculpture");
+  const OccupancyGrid grid(mesh);
+  for (const glm::vec3 eye : {glm::vec3(1.3f, 0.9f, 2.4f), glm::vec3(-0.4f, 0.3f, 1.6f), glm::vec3(0.0f, 5.0f, 0.5f)}) {
+    Camera camera;
+    camera.position = eye;
+    const glm::mat4 mvp = cameraMatrices(camera, 640.0f / 480.0f).viewProj;
+    std::vector<uint8_t> marked(40 * 30, 0);
+    for (const glm::vec3& lower : grid.lowerCorners()) {
+      glm::vec2 lo, hi;
+      ASSERT_TRUE(projectBox(lower, lower + grid.cellSize(), mvp, 640, 480, lo, hi));
+      for (int ty = std::clamp(static_cast<int>(std::floor((lo.y - 2.0f) / 16.0f)), 0, 29);
+           ty <= std::clamp(static_cast<int>(std::floor((hi.y + 2.0f) / 16.0f)), 0, 29); ++ty)
+        for (int tx = std::clamp(static_cast<int>(std::floor((lo.x - 2.0f) / 16.0f)), 0, 39);
+             tx <= std::clamp(static_cast<int>(std::floor((hi.x + 2.0f) / 16.0f)), 0, 39); ++tx)
+          if (hi.x + 2.0f >= 0.0f && hi.y + 2.0f >= 0.0f && lo.x - 2.0f < 640.0f && lo.y - 2.0f < 480.0f)
+            marked[ty * 40 + tx] = 1;
+    }
+    std::vector<uint8_t> fromSpans(40 * 30, 0);
+    for (const ScreenRect& r : coveredSpans(grid, mvp, 640, 480, 2))
+      for (int y = r.y; y < r.y + r.height; y += 16)
+        for (int x = r.x; x < r.x + r.width; x += 16) fromSpans[(y / 16) * 40 + x / 16] = 1;
+    EXPECT_EQ(fromSpans, marked) << "eye " << eye.x << "," << eye.y << "," << eye.z;
+  }
 }

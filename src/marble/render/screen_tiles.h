@@ -1,10 +1,11 @@
 #pragma once
 // Which parts of the screen a mesh can cover, finer than its bounding rectangle: the mesh is
 // cut into a coarse grid of cells (object space, at load), and each frame the cells holding
-// part of a triangle are projected; the 16x16-pixel tiles they touch, merged into spans per row,
-// are where FXAA draws (on the dragon at 800x800, 69 % of the rectangle). Conservative: every
-// pixel the mesh covers, and its neighbours, lie in a span; on llvmpipe a pixel outside every
-// span costs nothing, where a branch on "is this background?" would cost the whole shader.
+// part of a triangle (but not those enclosed by six such cells) are projected; the 16x16-pixel
+// tiles they touch, merged into spans per row, are where FXAA draws (on the dragon at 800x800,
+// 69 % of the rectangle). Conservative: every pixel the mesh covers, and its neighbours, lie in
+// a span; on llvmpipe a pixel outside every span costs nothing, where a branch on "is this
+// background?" would cost the whole shader.
 #include <cstdint>
 #include <vector>
 
@@ -21,7 +22,8 @@ public:
   OccupancyGrid() = default;
   // Marks every cell that a triangle's bounding box overlaps (conservative).
   explicit OccupancyGrid(const Mesh& mesh);
-  // The occupied cells' corners: cell i spans [lower[i], lower[i] + cellSize].
+  // The occupied cells' corners, less cells whose six face neighbours are all occupied (they
+  // project inside their neighbours): cell i spans [lower[i], lower[i] + cellSize].
   const std::vector<glm::vec3>& lowerCorners() const { return lower_; }
   glm::vec3 cellSize() const { return cellSize_; }
 

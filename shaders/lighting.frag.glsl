@@ -119,6 +119,23 @@ vec3 slab_transport(float s_mm) {
   return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
+// Whether the camera sees the surface point `entry` (where the transmitted light entered the
+// stone): the depth buffer's surface at its pixel lies within `tolerance` of it. The subsurface
+// blur spreads the light entering every surface the camera sees over its neighbours, so light
+// whose entry the camera sees is, near that entry, already in the picture (docs/quality.md,
+// "Tenth session: the back-lit glow").
+bool entry_seen_by_camera(vec3 entry, float tolerance) {
+  vec4 clip = u_view_proj * vec4(entry, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return false;
+  ivec2 size = textureSize(u_depth, 0);
+  ivec2 pixel = min(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), size - 1);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  if (depth >= 1.0) return false;
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+  return distance(surface_point(uv, depth), entry) < tolerance;
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
@@ -135,7 +152,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
   // surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
-  // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
+  // already carries that light (weight after Barre-Brisebois & Bouchard 2011). That weight,
+  // (1/2 - N.L/2)^2, is 1/4 where the light grazes, so it also dimmed the rims of thin parts seen
+  // against the light, where the chord is shortest and Cycles' glow brightest. Facing away, the
+  // slab's transport does not depend on the exit's orientation, so the weight is 1 there unless
+  // the camera sees where the light entered: then the subsurface blur already spreads that
+  // entry's light across the terminator, and the weight keeps it from being counted twice.
   // The light's falloff is taken where it entered, s before the (offset) exit point.
   // The entry is principled_entry, Cycles' coupling for light entering the walk, since session 8;
   // before, the Fresnel transmittance 1 - F(cos), because with the dipole's transport the
@@ -149,6 +171,10 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   float s_mm = s * u_mm_per_unit;
   vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
+  // The entry, s back toward the light along its ray, is where the light's map puts it to within
+  // the inward offset and the map's interpolation (a few texels): hence the tolerance.
+  if (NoL < 0.0 && s > 0.0 && !entry_seen_by_camera(P_in + light_vector(P_in) * s, 4.0 * u_light_texel_world))
+    away = 1.0;
   return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * away * away *
                         u_translucency;
 }

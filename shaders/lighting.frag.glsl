@@ -119,21 +119,23 @@ vec3 slab_transport(float s_mm) {
   return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
-// Whether the camera sees the surface point `entry` (where the transmitted light entered the
-// stone): the depth buffer's surface at its pixel lies within `tolerance` of it. The subsurface
-// blur spreads the light entering every surface the camera sees over its neighbours, so light
-// whose entry the camera sees is, near that entry, already in the picture (docs/quality.md,
-// "Tenth session: the back-lit glow").
-bool entry_seen_by_camera(vec3 entry, float tolerance) {
+// How far the surface the camera sees in the direction of `entry` (where the transmitted light
+// entered the stone) lies from it: about 0 where the camera sees the entry, the thickness of
+// stone in front of it where the object hides it, and "far" (1e30) off screen or against the
+// background. The subsurface blur spreads the light entering every surface the camera sees over
+// its neighbours, so light whose entry the camera sees is, near that entry, already in the
+// picture (docs/quality.md, "Tenth session: the back-lit glow"). The distance, not a yes/no,
+// so that the weight built on it changes smoothly where an entry passes behind a silhouette.
+float entry_hidden_by(vec3 entry) {
   vec4 clip = u_view_proj * vec4(entry, 1.0);
   vec3 ndc = clip.xyz / clip.w;
-  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return false;
+  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1e30;
   ivec2 size = textureSize(u_depth, 0);
   ivec2 pixel = min(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), size - 1);
   float depth = texelFetch(u_depth, pixel, 0).r;
-  if (depth >= 1.0) return false;
+  if (depth >= 1.0) return 1e30;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
-  return distance(surface_point(uv, depth), entry) < tolerance;
+  return distance(surface_point(uv, depth), entry);
 }
 
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
@@ -171,11 +173,17 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   float s_mm = s * u_mm_per_unit;
   vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  // The entry, s back toward the light along its ray, is where the light's map puts it to within
-  // the inward offset and the map's interpolation (a few texels): hence the tolerance.
-  if (NoL < 0.0 && s > 0.0 && !entry_seen_by_camera(P_in + light_vector(P_in) * s, 4.0 * u_light_texel_world))
-    away = 1.0;
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * away * away *
+  float weight = away * away;
+  if (NoL < 0.0 && s > 0.0) {
+    // The entry, s back toward the light along its ray, is where the light's map puts it to within
+    // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
+    // from 12. Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
+    float tol = 4.0 * u_light_texel_world;
+    float hidden = smoothstep(tol, 3.0 * tol, entry_hidden_by(P_in + light_vector(P_in) * s)) *
+                   (1.0 - smoothstep(-0.1, 0.0, NoL));
+    weight = mix(weight, 1.0, hidden);
+  }
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * weight *
                         u_translucency;
 }
 

@@ -49,9 +49,10 @@ uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 // Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):
-// output texel h is lit at full-resolution pixel h * u_scale, the pixel the subsurface blur
-// takes it to stand for (subsurface_common.glsl, representative_depth).
+// output texel h is lit at the full-resolution pixel the subsurface blur takes it to stand for
+// (blur_texel.glsl).
 uniform int u_scale;
+#include "blur_texel.glsl"
 
 // MODE_PAPER, MODE_MARBLE, ...: marble::RenderMode's numbers (render/shader_constants.h).
 
@@ -202,7 +203,7 @@ void main() {
     o_color = vec4(vec3(t), 1.0);
     return;
   }
-  ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
+  ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {

@@ -11,9 +11,6 @@ uniform int u_scale;                          // 2: the blur runs at half resolu
 
 float view_depth(float z) { return linear_depth(z, u_near_far); }  // scene units along the view axis
 
-// Depth-buffer value of the full-resolution pixel a blur texel h stands for (pixel h * scale).
-float representative_depth(ivec2 h) { return texelFetch(u_depth, u_scale * h, 0).r; }
-
 // The blurred light at full-resolution pixel `px` (depth-buffer value z there): the up to
 // four blur texels around it, weighted bilinearly (at full resolution: the one texel),
 // keeping only those on stone at about the same depth (a joint bilateral upsample, Kopf et

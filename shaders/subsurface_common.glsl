@@ -18,7 +18,7 @@ float view_depth(float z) { return linear_depth(z, u_near_far); }  // scene unit
 // qualifies (slivers thinner than a texel), the one on stone nearest in depth -- light from a
 // neighbouring surface rather than none; zero if all four are background.
 vec3 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
-  vec2 t = vec2(px) / float(u_scale);  // texel h stands for pixel h * scale
+  vec2 t = vec2(px) / float(u_scale);  // texel h sits at pixel h * scale (blur_texel.glsl)
   ivec2 i0 = ivec2(floor(t));
   vec2 f = t - vec2(i0);
   ivec2 last = textureSize(blurred, 0) - 1;

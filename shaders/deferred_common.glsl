@@ -2,6 +2,7 @@
 // rebuild a surface point from the depth buffer, and the light. Set by
 // marble::setFrameUniforms (src/marble/render/frame_uniforms.h).
 uniform mat4 u_inv_view_proj;
+uniform mat4 u_view_proj;  // world to the camera's clip space (the inverse of the above)
 uniform vec3 u_camera_pos;
 uniform mat4 u_light_view_proj;
 uniform vec3 u_light_pos;

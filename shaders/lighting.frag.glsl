@@ -49,9 +49,10 @@ uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
 uniform float u_translucency;
 uniform float u_env_intensity;   // 0 = no environment light
 // Full-resolution pixels per output texel: 1, or for `marble` the blur's scale (2 by default):
-// output texel h is lit at full-resolution pixel h * u_scale, the pixel the subsurface blur
-// takes it to stand for (subsurface_common.glsl, representative_depth).
+// output texel h is lit at the full-resolution pixel the subsurface blur takes it to stand for
+// (blur_texel.glsl).
 uniform int u_scale;
+#include "blur_texel.glsl"
 
 // MODE_PAPER, MODE_MARBLE, ...: marble::RenderMode's numbers (render/shader_constants.h).
 
@@ -119,6 +120,25 @@ vec3 slab_transport(float s_mm) {
   return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
+// How far the surface the camera sees in the direction of `entry` (where the transmitted light
+// entered the stone) lies from it: about 0 where the camera sees the entry, the thickness of
+// stone in front of it where the object hides it, and "far" (1e30) off screen or against the
+// background. The subsurface blur spreads the light entering every surface the camera sees over
+// its neighbours, so light whose entry the camera sees is, near that entry, already in the
+// picture (docs/quality.md, "Tenth session: the back-lit glow"). The distance, not a yes/no,
+// so that the weight built on it changes smoothly where an entry passes behind a silhouette.
+float entry_hidden_by(vec3 entry) {
+  vec4 clip = u_view_proj * vec4(entry, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1e30;
+  ivec2 size = textureSize(u_depth, 0);
+  ivec2 pixel = min(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), size - 1);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  if (depth >= 1.0) return 1e30;
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+  return distance(surface_point(uv, depth), entry);
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
@@ -135,7 +155,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
   // surface's own depth sample out (no acne).
   // It reaches the side facing away from the light; facing the light, the direct term
-  // already carries that light (weight after Barre-Brisebois & Bouchard 2011).
+  // already carries that light (weight after Barre-Brisebois & Bouchard 2011). That weight,
+  // (1/2 - N.L/2)^2, is 1/4 where the light grazes, so it also dimmed the rims of thin parts seen
+  // against the light, where the chord is shortest and Cycles' glow brightest. Facing away, the
+  // slab's transport does not depend on the exit's orientation, so the weight is 1 there unless
+  // the camera sees where the light entered: then the subsurface blur already spreads that
+  // entry's light across the terminator, and the weight keeps it from being counted twice.
   // The light's falloff is taken where it entered, s before the (offset) exit point.
   // The entry is principled_entry, Cycles' coupling for light entering the walk, since session 8;
   // before, the Fresnel transmittance 1 - F(cos), because with the dipole's transport the
@@ -149,7 +174,17 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   float s_mm = s * u_mm_per_unit;
   vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * away * away *
+  float weight = away * away;
+  if (NoL < 0.0 && s > 0.0) {
+    // The entry, s back toward the light along its ray, is where the light's map puts it to within
+    // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
+    // from 12. Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
+    float tol = 4.0 * u_light_texel_world;
+    float hidden = smoothstep(tol, 3.0 * tol, entry_hidden_by(P_in + light_vector(P_in) * s)) *
+                   (1.0 - smoothstep(-0.1, 0.0, NoL));
+    weight = mix(weight, 1.0, hidden);
+  }
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * weight *
                         u_translucency;
 }
 
@@ -168,7 +203,7 @@ void main() {
     o_color = vec4(vec3(t), 1.0);
     return;
   }
-  ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
+  ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {

@@ -9,7 +9,8 @@
 //
 // Both passes run at half resolution by default, as the lighting pass that feeds them: the
 // profile is smooth, so a quarter of the pixels carry it (render.subsurface_resolution "full"
-// runs them at full resolution). Blur texel h stands for the full-resolution pixel h * scale.
+// runs them at full resolution). Blur texel h stands for one of its full-resolution pixels
+// (blur_texel.glsl: h * scale, or another of its 2x2 where that one is background).
 // Alpha is that pixel's view depth (0: no stone) in the input, between the passes and after
 // them: it says which taps are on the same surface here and, in the post pass, which texels
 // the depth-aware upsample may use (subsurface_common.glsl). One read per tap, then (there was

@@ -11,9 +11,6 @@ uniform int u_scale;                          // 2: the blur runs at half resolu
 
 float view_depth(float z) { return linear_depth(z, u_near_far); }  // scene units along the view axis
 
-// Depth-buffer value of the full-resolution pixel a blur texel h stands for (pixel h * scale).
-float representative_depth(ivec2 h) { return texelFetch(u_depth, u_scale * h, 0).r; }
-
 // The blurred light at full-resolution pixel `px` (depth-buffer value z there): the up to
 // four blur texels around it, weighted bilinearly (at full resolution: the one texel),
 // keeping only those on stone at about the same depth (a joint bilateral upsample, Kopf et
@@ -21,7 +18,7 @@ float representative_depth(ivec2 h) { return texelFetch(u_depth, u_scale * h, 0)
 // qualifies (slivers thinner than a texel), the one on stone nearest in depth -- light from a
 // neighbouring surface rather than none; zero if all four are background.
 vec3 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
-  vec2 t = vec2(px) / float(u_scale);  // texel h stands for pixel h * scale
+  vec2 t = vec2(px) / float(u_scale);  // texel h sits at pixel h * scale (blur_texel.glsl)
   ivec2 i0 = ivec2(floor(t));
   vec2 f = t - vec2(i0);
   ivec2 last = textureSize(blurred, 0) - 1;

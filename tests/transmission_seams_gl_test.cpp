@@ -296,3 +296,20 @@ TEST(TransmissionSeamsControl, WithoutTheInwardOffsetThereAreSeams) {
 TEST(TransmissionSeamsControl, WithTheLightMapReadNearestThereAreSeams) {
   expectSeamsWithBrokenShader("lighting.frag.glsl", "vec2 f = t - base;", "vec2 f = step(0.5, t - base);", "nearest");
 }
+
+// The half-resolution silhouette's staircase (docs/quality.md, "Tenth session: the rims kept, the
+// half-resolution silhouette"): with a blur texel standing for its first pixel alone, the stone
+// texels' top row jumps by a texel from column to column near the sphere's top, and the vertical
+// blur's renormalization leaves a step there under the point light (1.28x the threshold).
+TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
+  glContext();
+  const auto dir = brokenShaders("blur_texel.glsl", "if (texelFetch(depth, p, 0).r < 1.0) return p;", "");
+  ASSERT_FALSE(dir.empty()) << "blur_texel.glsl no longer has the line this control breaks";
+  Renderer renderer{ShaderLibrary(dir.string())};
+  const Case& c = *std::find_if(std::begin(kCases), std::end(kCases),
+                                [](const Case& k) { return std::string(k.name) == "sphere_point"; });
+  const SeamReport r = renderAndMeasure(renderer, c, "-first-pixel");
+  std::filesystem::remove_all(dir);
+  std::cout << "[          ] first-pixel, " << c.name << ": " << r.seams << " seams, worst " << r.worst << "\n";
+  EXPECT_GT(r.seams, 0) << "the measure missed the half-resolution silhouette's staircase";
+}

@@ -174,3 +174,32 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
       falloff * s.material.base_color * slabTransport(s.material, crossedMm());
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], expected[c], 0.06f * expected[c]) << "channel " << c;
 }
+
+// Light from behind at 70 degrees off the slab's normal: the face away from the light has
+// N.L = -0.34, where the Barre-Brisebois & Bouchard weight (1/2 - N.L/2)^2 the transmission had
+// until session 10 is 0.45. Facing away from the light, the slab's transport does not depend on
+// the exit's orientation, and the camera (head-on, in front) does not see the face the light
+// enters, so nothing else carries that light: the face must read albedo · cos · principled_entry(cos)
+// · T(s) / R_inf with the slanted chord s the light's map measures (the renderer's slab model), at
+// weight 1. With the old weight it reads 0.45 of that (checked: the test then fails). The slab is
+// 4 mm thick here (20 mm per unit), so that the slanted chord, 11.7 mm, lets light through in all
+// three channels.
+TEST_F(TransmissionSlab, SlantedLightBehindIsNotDimmedByTheExitsOrientation) {
+  Scene s = slabScene();
+  s.mm_per_unit = 20.0f;
+  const float theta = glm::radians(70.0f);
+  s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};  // the light travels along (-sin, 0, cos)
+  const ImageRGBF img = render(s);
+  const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
+  const float c = std::cos(theta);
+  const float m = 1.0f - c;
+  const float entry = c * (1.0f - 0.5f * m * m * m * m * m);  // cos · principled_entry(cos)
+  const float crossed = crossedMm() / kMmPerUnit * s.mm_per_unit / c;
+  const glm::vec3 expected = entry * s.material.base_color * slabTransport(s.material, crossed);
+  for (int ch = 0; ch < 3; ++ch) {
+    EXPECT_GT(expected[ch], 1e-4f) << "the slab must let some light through in channel " << ch;
+    EXPECT_NEAR(centre[ch], expected[ch], 0.08f * expected[ch]) << "channel " << ch;
+  }
+  std::cout << "[          ] slanted: centre " << centre.r << " " << centre.g << " " << centre.b << ", model " << expected.r
+            << " " << expected.g << " " << expected.b << "\n";
+}

@@ -5,6 +5,7 @@ namespace marble {
 void setFrameUniforms(const gl::Program& p, const CameraMatrices& camera, const LightMatrices& lightM,
                       const Light& light, float lightTexelWorld) {
   p.set("u_inv_view_proj", camera.invViewProj);
+  p.set("u_view_proj", camera.viewProj);
   p.set("u_camera_pos", camera.position);
   p.set("u_light_view_proj", lightM.viewProj);
   p.set("u_light_pos", lightM.position);

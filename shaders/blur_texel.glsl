@@ -1,0 +1,22 @@
+// Which full-resolution pixel a texel of the subsurface blur's resolution stands for (scale 2
+// by default, 1 at full resolution): pixel h * scale, its first, when that is stone; otherwise
+// the first of its other scale x scale pixels that is (in row order), so that a texel is stone
+// when any of its pixels is. Lighting (lighting.frag.glsl) and the blur's depth buffer
+// (blur_depth.frag.glsl) take the same pixel. With pixel h * scale alone, the half-resolution
+// silhouette crossed the full-resolution one, jumping by a texel from column to column; the
+// blur's renormalization jumped with it and left a step of about 0.002 a few pixels inside the
+// sphere's back-lit rim (tests/transmission_seams_gl_test.cpp; docs/quality.md "Tenth session:
+// the rims kept, the half-resolution silhouette"). Now the blur's silhouette lies on or outside
+// the full-resolution one. Of the alternatives measured there, the pixel nearest the camera left
+// the step at 1.13x the test's threshold and the farthest took the far side of the torus across
+// its occlusion edges; this one changes no texel that was already stone.
+ivec2 blur_texel_pixel(sampler2D depth, ivec2 h, int scale) {
+  ivec2 last = textureSize(depth, 0) - 1;
+  ivec2 first = min(h * scale, last);
+  if (texelFetch(depth, first, 0).r < 1.0) return first;  // 1: the cleared background
+  for (int k = 1; k < scale * scale; ++k) {
+    ivec2 p = min(h * scale + ivec2(k % scale, k / scale), last);
+    if (texelFetch(depth, p, 0).r < 1.0) return p;
+  }
+  return first;
+}

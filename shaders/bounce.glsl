@@ -61,10 +61,6 @@ const float BOUNCE_LOD_FINER = 3.0;
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
 const float BOUNCE_GLOSS = 4.0;
 
-// The light's cosine below which an emitter's area is not divided further (the view factor
-// bounce_gather returns for the further bounces, bounce_upsample.glsl).
-const float BOUNCE_VIEW_COS_MIN = 0.1;
-
 // The glossy receiver (session 10): the emitters' diffuse radiance reflected toward the camera by
 // the receiver's specular layer, a normalized Phong lobe (m + 1) / (2 PI) cos^m of exponent
 // BOUNCE_GLOSS around the mirror direction R of the view at P (as f cos: its integral over the
@@ -84,7 +80,7 @@ const float BOUNCE_VIEW_COS_MIN = 0.1;
 // view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
 // P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
 // within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod, inout float view) {
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   float texels = dA * size * size;
   float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
@@ -104,11 +100,6 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
   float cosX = -dot(N, d);  // x |d|
   if (cosP <= 0.0 || cosX <= 0.0) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
-  // The view factor of the sample's surface from P (the further bounces, bounce_gather): its area
-  // is area x cos over the light's cosine at xp (the map holds w + a / 2 = area x cos), which the
-  // floor keeps finite where the light grazes (there it undercounts the area).
-  float area = (A + 0.5 * Aa) / max(dot(np, light_vector(xp)), BOUNCE_VIEW_COS_MIN);
-  view += area * cosP * cosX / (r2 * (PI * r2 + area));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
   // mirror direction of the light's direction at xp, with the same softened distance law.
@@ -128,7 +119,7 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
 // (bounce_upsample.glsl applies those: the gather then reads no material parameter, and a colour
 // or ior change re-runs only the lighting pass); w, the radiance P's specular layer mirrors toward
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
-vec4 bounce_gather(vec3 P, vec3 N, vec3 V, out float view) {
+vec4 bounce_gather(vec3 P, vec3 N, vec3 V) {
   vec3 R = reflect(-V, N);
   vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
@@ -136,15 +127,14 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, out float view) {
   float maxLod = log2(size);
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
-  view = 0.0;
-  sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod, view);
+  sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod);
   for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
       float phi = 2.0 * PI * (float(k) + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
-      sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod, view);
+      sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
     }
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light

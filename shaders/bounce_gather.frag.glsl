@@ -20,25 +20,20 @@ uniform int u_scale;  // full-resolution pixels per texel of this pass
 // the surface's specular layer mirrors of it (before the emitters' albedo and the Fresnel factor;
 // >= 0) where a surface was gathered for, -1 on the background (BouncePass clears to it).
 layout(location = 0) out vec4 o_bounce;
-// The view factor of the lit surfaces the gather saw from the point (bounce.glsl; 0 on the
-// background): the lighting pass's estimate of the further bounces (bounce_upsample.glsl).
-layout(location = 1) out float o_view;
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy) * u_scale;
   ivec2 size = textureSize(u_depth, 0);
   if (any(greaterThanEqual(px, size))) {
     o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
-    o_view = 0.0;
     return;
   }
   float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {
     o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
-    o_view = 0.0;
     return;
   }
   vec3 P = surface_point((vec2(px) + 0.5) / vec2(size), depth);
   vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
-  o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P), o_view);
+  o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P));
 }

@@ -28,26 +28,11 @@
 // marble_shading.glsl (f0_from_ior).
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;
-layout(binding = UNIT_LIGHTING_BOUNCE_VIEW) uniform sampler2D u_bounce_view;
 uniform int u_bounce_scale;     // full-resolution pixels per texel of the bounce pass
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
 uniform float u_ior;            // the emitters' Fresnel F0 (their glossy reflection)
 
 const float BOUNCE_MIN_WEIGHT = 0.05;
-// The most of the receiver's hemisphere the further bounces count as stone (the view factor's
-// estimate can pass 1 where the fixed pattern's sectors overlap a large near emitter).
-const float BOUNCE_VIEW_MAX = 0.8;
-
-// The first bounce's irradiance times this is every bounce's: the geometric series
-// 1 + rho F + (rho F)^2 + ... = 1 / (1 - rho F) of a point that sees stone over a view factor F
-// whose every point receives the first bounce it receives itself (the neighbourhood's radiosity
-// taken as the point's own: the assumption of Jimenez et al. 2016's multi-bounce fit, and of the
-// uniform enclosure, where it is exact). F: the lit surfaces the gather saw (bounce.glsl), a
-// lower bound of the stone P sees (the unlit parts are not in the light's map); rho: the base
-// colour. Error: docs/quality.md, "Eleventh session".
-vec3 bounce_further(float view) {
-  return 1.0 / (1.0 - u_pat_base_color * clamp(view, 0.0, BOUNCE_VIEW_MAX));
-}
 
 // Irradiance / PI that one bounce brings to the surface at full-resolution pixel px (point P,
 // normal N), before P's own albedo and entry; with it, over P's albedo, the bounce's light that P's
@@ -64,16 +49,13 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   float pixel = length(surface_point(uv + vec2(1.0 / float(fullSize.x), 0.0), texelFetch(u_depth, px, 0).r) - P);
   float reach = pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
   vec4 sum = vec4(0.0), best = vec4(0.0), any = vec4(0.0);
-  float sumView = 0.0, bestView = 0.0, anyView = 0.0;
   float weight = 0.0, bestMatch = 0.0, anyCount = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 ic = min(i0 + c, last);
     vec4 b = texelFetch(u_bounce, ic, 0);
     if (b.a < 0.0) continue;  // the background
-    float v = texelFetch(u_bounce_view, ic, 0).r;
     any += b;
-    anyView += v;
     anyCount += 1.0;
     ivec2 ps = ic * u_bounce_scale;
     vec3 Ps = surface_point((vec2(ps) + 0.5) / vec2(fullSize), texelFetch(u_depth, ps, 0).r);
@@ -89,17 +71,13 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
     float match = cn * cn * plane * near;
     float wb = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
     sum += wb * match * b;
-    sumView += wb * match * v;
     weight += wb * match;
     if (match > bestMatch) {
       bestMatch = match;
       best = b;
-      bestView = v;
     }
   }
   vec4 b = weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
-  float view = weight >= BOUNCE_MIN_WEIGHT ? sumView / weight : (bestMatch > 0.0 ? bestView : anyView / max(anyCount, 1.0));
-  vec3 further = bounce_further(view);
   // The gather's scalars (bounce.glsl): diffuse x albedo, glossy x Schlick's F split by F0.
   float F0 = f0_from_ior(u_ior).x;
   // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected
@@ -109,5 +87,5 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   // vein's contrast to the base colour), and it is spread by the subsurface blur's millimetres.
   float m = 1.0 - clamp(dot(N, normalize(u_camera_pos - P)), 0.0, 1.0), m2 = m * m;
   float Fv = F0 + (1.0 - F0) * m2 * m2 * m;
-  return u_light_radiance * ((u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z) * further + Fv * b.a);
+  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z + Fv * b.a);
 }

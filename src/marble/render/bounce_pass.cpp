@@ -18,12 +18,8 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   scale_ = scale;
   // Nearest: the upsample reads texels by index and weighs them itself.
   bounce_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
-  view_ = gl::makeTexture2D(GL_R16F, w, h, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, view_.id(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
 }
 
 void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
@@ -36,7 +32,6 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   // is a surface's mirrored bounce, bounce_gather.frag.glsl).
   const float none[4] = {0, 0, 0, -1};
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, none);
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, none);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_NORMAL, in.normal);
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);

@@ -27,16 +27,14 @@ public:
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            float lightTexelWorld, const ScreenRect& rect);
   GLuint bounceTexture() const { return bounce_.id(); }
-  // R16F: the view factor of the lit surfaces the gather saw (bounce.glsl, the further bounces).
-  GLuint viewTexture() const { return view_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * (8 + 2); }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
   PassTimer& timer() { return timer_; }
 
 private:
   gl::Program program_;
   gl::VertexArray emptyVao_;
-  gl::Texture bounce_, view_;
+  gl::Texture bounce_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0, scale_ = 0;
   PassTimer timer_;

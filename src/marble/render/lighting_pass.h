@@ -20,7 +20,6 @@ namespace marble {
 struct LightingInputs {
   GLuint albedo, normal, depth, lightDistance, lightDepth;
   GLuint bounce;    // `marble`: the bounce pass's gather (BouncePass)
-  GLuint bounceView;  // and the view factor it saw
   int bounceScale;  // and its full-resolution pixels per texel
 };
 

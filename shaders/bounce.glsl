@@ -38,7 +38,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-uniform mat4 u_bounce_view_proj;  // the reflective shadow map's (view_setup.h: fitBounceMap)
 
 const int BOUNCE_RINGS = 4;
 const int BOUNCE_ANGLES = 8;
@@ -122,7 +121,7 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
 vec4 bounce_gather(vec3 P, vec3 N, vec3 V) {
   vec3 R = reflect(-V, N);
-  vec4 clip = u_bounce_view_proj * vec4(P, 1.0);
+  vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
   float size = float(textureSize(u_bounce_position, 0).x);
   float maxLod = log2(size);

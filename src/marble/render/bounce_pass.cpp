@@ -39,7 +39,6 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
-  program_.set("u_bounce_view_proj", lightM.bounceViewProj);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();

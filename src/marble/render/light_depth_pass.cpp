@@ -83,7 +83,6 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 1, zero);
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 2, zero);
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_DEPTH, 0, &one);
-  program_.set("u_view_proj", light.bounceViewProj);
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());

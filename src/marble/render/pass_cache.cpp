@@ -23,8 +23,7 @@ bool sameInput(PassInput i, const FrameInputs& a, const FrameInputs& b) {
     case PassInput::Model: return sameMatrix(a.model, b.model);
     case PassInput::LightMatrices:
       // `direction` is set for a directional light only (view_setup.cpp leaves it unset otherwise).
-      return sameMatrix(a.light.viewProj, b.light.viewProj) && sameMatrix(a.light.bounceViewProj, b.light.bounceViewProj) &&
-             a.light.position == b.light.position &&
+      return sameMatrix(a.light.viewProj, b.light.viewProj) && a.light.position == b.light.position &&
              a.light.directional == b.light.directional &&
              (!a.light.directional || a.light.direction == b.light.direction) && a.light.near == b.light.near &&
              a.light.far == b.light.far;

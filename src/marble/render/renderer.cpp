@@ -266,9 +266,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   }
   const bool marble = scene.render.mode == RenderMode::Marble;
   // `marble` sees the vein models through the polish: their albedo depends on the scattering too.
-  LightMatrices lightM = lightMatrices(scene.light);
-  fitBounceMap(lightM, scene.light, mesh_->boundsMin(), mesh_->boundsMax(), model);
-  const FrameInputs now{scene, model, camera, lightM, width, height, marble ? seenVeinAttenuation(scene) : 0.0f};
+  const FrameInputs now{scene, model, camera, lightMatrices(scene.light), width, height,
+                        marble ? seenVeinAttenuation(scene) : 0.0f};
   // Whether a cached pass must run; and that it ran.
   auto stale = [&](Pass p) { return !cache_.current(p, now); };
   auto ran = [&](Pass p) {

@@ -22,10 +22,6 @@ struct CameraMatrices {
 
 struct LightMatrices {
   glm::mat4 viewProj;
-  // The reflective shadow map's (the bounce's emitters, LightDepthPass): the same view, its frustum
-  // fitted to the object's box as the light sees it (fitBounceMap) rather than to the bounding
-  // sphere, so a thin object fills the map's width; viewProj until fitted.
-  glm::mat4 bounceViewProj;
   glm::vec3 position;   // point light
   glm::vec3 direction;  // directional light: unit direction of travel
   bool directional = false;
@@ -34,8 +30,5 @@ struct LightMatrices {
 
 CameraMatrices cameraMatrices(const Camera& camera, float aspect);
 LightMatrices lightMatrices(const Light& light);
-// Fits m.bounceViewProj to the box [lo, hi] under `model`: a square frustum (square texels) about
-// the box's projection on the light's view plane, with the same near and far planes.
-void fitBounceMap(LightMatrices& m, const Light& light, glm::vec3 lo, glm::vec3 hi, const glm::mat4& model);
 
 }  // namespace marble

@@ -29,8 +29,11 @@
 //   turned half a step from the last), each sample standing for its ring sector (read
 //   BOUNCE_LOD_FINER levels finer than the level of the sector's size, since session 9): the disk
 //   is covered without gaps, finely near the point (where the emitters that matter most are; D&S
-//   2005 also sample densest there) and coarsely far away. The same pattern for every pixel, so
-//   the error is a fixed pattern that moves with the light, not noise.
+//   2005 also sample densest there) and coarsely far away. The pattern is turned by a quarter of
+//   its angular step from one gather texel to the next in each 2 x 2 block (interleaved sampling,
+//   Keller & Heidrich 2001; since session 11: bounce_gather's `turn`), and the upsample's bilinear
+//   weights mix four neighbouring texels, so most pixels average four turns of the pattern: its
+//   error, a fixed pattern that moves with the light, shrinks where the four agree on the surface.
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_falloff, light_vector, light_distance_of,
@@ -115,11 +118,12 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
+// the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
 // (bounce_upsample.glsl applies those: the gather then reads no material parameter, and a colour
 // or ior change re-runs only the lighting pass); w, the radiance P's specular layer mirrors toward
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
-vec4 bounce_gather(vec3 P, vec3 N, vec3 V) {
+vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec3 R = reflect(-V, N);
   vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
@@ -133,7 +137,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V) {
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      float phi = 2.0 * PI * (float(k) + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
+      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
       sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
     }
   }

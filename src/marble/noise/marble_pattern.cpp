@@ -493,7 +493,7 @@ void accumulateOctave(const float* xs, int count, float size, float inv, float p
     return;
   }
   thread_local std::vector<float> lattice;
-  table.resize(static_cast<size_t>(span));
+  table.resize(static_cast<size_t>(span) + simd::kLanes);  // lerpOctave reads up to 8 floats past a column
   lattice.resize(static_cast<size_t>(span));
   float w = patglsl::pat_wrap(static_cast<float>(lo), period);
   for (int64_t j = 0; j < span; ++j) {

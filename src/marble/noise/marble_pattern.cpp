@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 // ONE SOURCE OF TRUTH. shaders/pattern_core.glsl is the body of the pattern; the GPU compiles
@@ -162,6 +163,15 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 // leave the point loop).
 thread_local VeinRowCounts threadVeinRowCounts;
 
+// The four samples of each point held as four arrays (the evaluated rows and the grid rows along
+// x): shadeRow copies a batch's samples with four 8-float copies instead of point by point.
+struct SampleArrays {
+  const float* t[4];
+  void operator()(int i, glm::vec3, float* out) const {
+    for (int k = 0; k < 4; ++k) out[k] = t[k][i];
+  }
+};
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
@@ -173,30 +183,38 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
     if (valueOut) valueOut[i] = shade.w;
   };
+  auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
-    glm::vec3 ps[N];
-    float ts[N][4];
-    for (int j = 0; j < N; ++j) {
-      ps[j] = origin + static_cast<float>(i + j) * step;
-      samples(i + j, ps[j], ts[j]);
-      b.px[j] = ps[j].x;
-      b.py[j] = ps[j].y;
-      b.pz[j] = ps[j].z;
-      for (int k = 0; k < 4; ++k) b.t[k][j] = ts[j][k];
+    // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
+    // operations), in loops the compiler vectorizes.
+    for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;
+    for (int j = 0; j < N; ++j) b.py[j] = origin.y + static_cast<float>(i + j) * step.y;
+    for (int j = 0; j < N; ++j) b.pz[j] = origin.z + static_cast<float>(i + j) * step.z;
+    if constexpr (std::is_same_v<Samples, SampleArrays>) {
+      for (int k = 0; k < 4; ++k) std::memcpy(b.t[k], samples.t[k] + i, sizeof b.t[k]);
+    } else {
+      for (int j = 0; j < N; ++j) {
+        float ts[4];
+        samples(i + j, point(i + j), ts);
+        for (int k = 0; k < 4; ++k) b.t[k][j] = ts[k];
+      }
     }
     ++counts.laneBatches;
     if (patlanes::shadeBatch(lanes, b)) {
       for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
     } else {
       ++counts.divergedBatches;
-      for (int j = 0; j < N; ++j) put(i + j, shadeInlined(P, ps[j], ts[j]));
+      for (int j = 0; j < N; ++j) {
+        const float ts[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
+        put(i + j, shadeInlined(P, point(i + j), ts));
+      }
     }
   }
   for (; i < count; ++i) {
-    const glm::vec3 p = origin + static_cast<float>(i) * step;
+    const glm::vec3 p = point(i);
     float t[4];
     samples(i, p, t);
     put(i, shadeInlined(P, p, t));  // colour and value at once
@@ -231,9 +249,8 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
     turbulence[k].resize(static_cast<size_t>(count));
     veinTurbulenceRow(m, xs.data(), q.y, q.z, count, turbulence[k].data());
   }
-  shadeRow(P, origin, step, count, out, valueOut, [&](int i, glm::vec3, float* t) {
-    for (int k = 0; k < 4; ++k) t[k] = turbulence[k][static_cast<size_t>(i)];
-  });
+  shadeRow(P, origin, step, count, out, valueOut,
+           SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
 }
 
 float whiteNoise(const Material& m, glm::vec2 q) {
@@ -388,9 +405,9 @@ void AlbedoSampler::veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::ve
           s[i] = patglsl::pat_lerp(t[j], t[j + 1], fractions[static_cast<size_t>(i)]) * (1.0f / 65535.0f);
         }
       }
-      shadeRow(P, origin, step, count, out, valueOut, [&](int i, glm::vec3, float* t) {
-        for (int k = 0; k < 4; ++k) t[k] = samples[static_cast<size_t>(k) * static_cast<size_t>(count) + static_cast<size_t>(i)];
-      });
+      const size_t c = static_cast<size_t>(count);
+      shadeRow(P, origin, step, count, out, valueOut,
+               SampleArrays{{samples.data(), samples.data() + c, samples.data() + 2 * c, samples.data() + 3 * c}});
       return;
     }
   }
@@ -495,10 +512,19 @@ void accumulateOctave(const float* xs, int count, float size, float inv, float p
   thread_local std::vector<float> lattice;
   table.resize(static_cast<size_t>(span) + simd::kLanes);  // lerpOctave reads up to 8 floats past a column
   lattice.resize(static_cast<size_t>(span));
-  float w = patglsl::pat_wrap(static_cast<float>(lo), period);
-  for (int64_t j = 0; j < span; ++j) {
-    lattice[static_cast<size_t>(j)] = w;
-    w = patglsl::pat_next(w, period);
+  // The lattice indices pat_wrap(lo), then pat_next of each: integers below 2^24 (exact in
+  // float) counting up from the first and back to 0 at the period, so written run by run from
+  // an integer count (a loop the compiler vectorizes) instead of by pat_next's float chain,
+  // whose add-compare-select latency each column waited on (half of this function's time).
+  {
+    const auto per = static_cast<int64_t>(period);
+    auto v = static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period));
+    float* __restrict l = lattice.data();
+    for (int64_t j = 0; j < span; v = 0) {
+      const int64_t run = std::min(span - j, per - v);
+      for (int64_t k = 0; k < run; ++k) l[j + k] = static_cast<float>(static_cast<int32_t>(v + k));
+      j += run;
+    }
   }
   columns(lattice.data(), static_cast<int>(span), table.data());
   if (patlanes::lanesAvailable()) {

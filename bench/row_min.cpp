@@ -7,11 +7,15 @@
 // row by row; a function's time is the sum over rows of each row's fastest run. That is the
 // time on a quiet core with warm caches, which is what both sides are compared at.
 //
-//   build/bench/marble_row_min [REPS]     (default 200)
+//   build/bench/marble_row_min [REPS] [ftz]     (default 200; `ftz`: flush denormals to zero
+//   and read them as zero, a diagnostic of whether any of the three meets them: the rows'
+//   results are then no longer the reference's where one would occur)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #include <noise.h>
 #pragma GCC diagnostic pop
+
+#include <xmmintrin.h>
 
 #include <algorithm>
 #include <chrono>
@@ -40,6 +44,7 @@ struct Candidate {
 
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
+  if (argc > 2 && std::string(argv[2]) == "ftz") _mm_setcsr(_mm_getcsr() | 0x8040);  // FTZ | DAZ
   noise::module::Perlin perlin;
   perlin.SetOctaveCount(6);
   perlin.SetFrequency(1.0 / 32.0);

@@ -73,7 +73,11 @@ struct LaneF {
     if (std::is_constant_evaluated()) {
       v = F8{s, s, s, s, s, s, s, s};
     } else {
+#if defined(__clang__)
+      v = __builtin_shufflevector(F8{s}, F8{s}, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
       v = __builtin_shuffle(F8{s}, U8{});
+#endif
     }
   }
   __attribute__((always_inline)) constexpr explicit LaneF(F8 x) : v(x) {}
@@ -93,7 +97,11 @@ struct LaneU {
     if (std::is_constant_evaluated()) {
       v = U8{s, s, s, s, s, s, s, s};
     } else {
+#if defined(__clang__)
+      v = __builtin_shufflevector(U8{s}, U8{s}, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
       v = __builtin_shuffle(U8{s}, U8{});
+#endif
     }
   }
   __attribute__((always_inline)) constexpr explicit LaneU(U8 x) : v(x) {}

@@ -17,6 +17,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>  // the AVX2 gather (vein_lanes.inc)
 #endif
@@ -61,7 +62,24 @@ struct LaneU;
 struct LaneF {
   F8 v;
   LaneF() = default;
-  __attribute__((always_inline)) constexpr LaneF(float s) : v(F8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor): literals as in GLSL
+  // A scalar in every lane. At run time a shuffle of lane 0: GCC 12 builds the equivalent
+  // vector literal {s, s, ...} from a register with seven inserts (and in a loop short of
+  // registers rebuilds it every iteration: 8 of lerpOctave's 17 loop instructions were that),
+  // the shuffle with one broadcast. Constant evaluation keeps the literal. (Assigned in the body,
+  // not returned by a helper: a function returning a 32-byte vector trips -Wpsabi in baseline
+  // translation units that include this header.)
+  // NOLINTNEXTLINE(google-explicit-constructor): literals as in GLSL
+  __attribute__((always_inline)) constexpr LaneF(float s) : v() {
+    if (std::is_constant_evaluated()) {
+      v = F8{s, s, s, s, s, s, s, s};
+    } else {
+#if defined(__clang__)
+      v = __builtin_shufflevector(F8{s}, F8{s}, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
+      v = __builtin_shuffle(F8{s}, U8{});
+#endif
+    }
+  }
   __attribute__((always_inline)) constexpr explicit LaneF(F8 x) : v(x) {}
   explicit LaneF(LaneU u);
   __attribute__((always_inline)) explicit LaneF(Mask m) : v(__builtin_convertvector(m.v & 1, F8)) {}  // float(bool): 1 or 0
@@ -74,7 +92,18 @@ struct LaneF {
 struct LaneU {
   U8 v;
   LaneU() = default;
-  __attribute__((always_inline)) constexpr LaneU(uint32_t s) : v(U8{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor)
+  // NOLINTNEXTLINE(google-explicit-constructor): as LaneF's
+  __attribute__((always_inline)) constexpr LaneU(uint32_t s) : v() {
+    if (std::is_constant_evaluated()) {
+      v = U8{s, s, s, s, s, s, s, s};
+    } else {
+#if defined(__clang__)
+      v = __builtin_shufflevector(U8{s}, U8{s}, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
+      v = __builtin_shuffle(U8{s}, U8{});
+#endif
+    }
+  }
   __attribute__((always_inline)) constexpr explicit LaneU(U8 x) : v(x) {}
   // uint(f) for 0 <= f < 2^31 (cell and lattice indices; the scalar cast's range too).
   __attribute__((always_inline)) explicit LaneU(LaneF f) : v(reinterpret_cast<U8>(__builtin_convertvector(f.v, I8))) {}

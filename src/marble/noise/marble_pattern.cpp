@@ -3,12 +3,17 @@
 #include "marble/noise/lanes.h"
 #include "marble/noise/turbulence_grid.h"
 
+#if defined(__x86_64__)
+#include <emmintrin.h>  // SSE2 (every x86-64): AlbedoSampler::gridColumns
+#endif
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 // ONE SOURCE OF TRUTH. shaders/pattern_core.glsl is the body of the pattern; the GPU compiles
@@ -162,6 +167,15 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 // leave the point loop).
 thread_local VeinRowCounts threadVeinRowCounts;
 
+// The four samples of each point held as four arrays (the evaluated rows and the grid rows along
+// x): shadeRow copies a batch's samples with four 8-float copies instead of point by point.
+struct SampleArrays {
+  const float* t[4];
+  void operator()(int i, glm::vec3, float* out) const {
+    for (int k = 0; k < 4; ++k) out[k] = t[k][i];
+  }
+};
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
@@ -173,30 +187,38 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     if (out) out[i] = glm::vec3(shade.x, shade.y, shade.z);
     if (valueOut) valueOut[i] = shade.w;
   };
+  auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
-    glm::vec3 ps[N];
-    float ts[N][4];
-    for (int j = 0; j < N; ++j) {
-      ps[j] = origin + static_cast<float>(i + j) * step;
-      samples(i + j, ps[j], ts[j]);
-      b.px[j] = ps[j].x;
-      b.py[j] = ps[j].y;
-      b.pz[j] = ps[j].z;
-      for (int k = 0; k < 4; ++k) b.t[k][j] = ts[j][k];
+    // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
+    // operations), in loops the compiler vectorizes.
+    for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;
+    for (int j = 0; j < N; ++j) b.py[j] = origin.y + static_cast<float>(i + j) * step.y;
+    for (int j = 0; j < N; ++j) b.pz[j] = origin.z + static_cast<float>(i + j) * step.z;
+    if constexpr (std::is_same_v<Samples, SampleArrays>) {
+      for (int k = 0; k < 4; ++k) std::memcpy(b.t[k], samples.t[k] + i, sizeof b.t[k]);
+    } else {
+      for (int j = 0; j < N; ++j) {
+        float ts[4];
+        samples(i + j, point(i + j), ts);
+        for (int k = 0; k < 4; ++k) b.t[k][j] = ts[k];
+      }
     }
     ++counts.laneBatches;
     if (patlanes::shadeBatch(lanes, b)) {
       for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
     } else {
       ++counts.divergedBatches;
-      for (int j = 0; j < N; ++j) put(i + j, shadeInlined(P, ps[j], ts[j]));
+      for (int j = 0; j < N; ++j) {
+        const float ts[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
+        put(i + j, shadeInlined(P, point(i + j), ts));
+      }
     }
   }
   for (; i < count; ++i) {
-    const glm::vec3 p = origin + static_cast<float>(i) * step;
+    const glm::vec3 p = point(i);
     float t[4];
     samples(i, p, t);
     put(i, shadeInlined(P, p, t));  // colour and value at once
@@ -231,9 +253,8 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
     turbulence[k].resize(static_cast<size_t>(count));
     veinTurbulenceRow(m, xs.data(), q.y, q.z, count, turbulence[k].data());
   }
-  shadeRow(P, origin, step, count, out, valueOut, [&](int i, glm::vec3, float* t) {
-    for (int k = 0; k < 4; ++k) t[k] = turbulence[k][static_cast<size_t>(i)];
-  });
+  shadeRow(P, origin, step, count, out, valueOut,
+           SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
 }
 
 float whiteNoise(const Material& m, glm::vec2 q) {
@@ -315,6 +336,36 @@ float AlbedoSampler::gridColumn(const GridAxes& a, int x, int channel) const {
                            patglsl::pat_lerp(at(a.y0, a.z1), at(a.y1, a.z1), a.f.y), a.f.z);
 }
 
+void AlbedoSampler::gridColumns(const GridAxes& a, int32_t first, size_t n, size_t stride, float* table) const {
+  // gridColumn(a, x, k) for the n columns x = first, first + 1, ... (wrapped) and the four
+  // channels k, into table[k * stride + j]: the four channels of a texel are adjacent, so each
+  // corner's four 16-bit values convert and lerp as one 4-float vector (SSE2, any x86-64):
+  // per channel the same operations on the same operands as gridColumn.
+  typedef float F4 __attribute__((vector_size(16)));
+  const int w = resolution_;
+  const size_t c = static_cast<size_t>(channels_);
+  auto texel = [&](int x, int y, int z) {
+    // The texel's four 16-bit channels widened to 32 bits and converted together (each exactly,
+    // as gridColumn's casts): SSE2, part of every x86-64.
+    const uint16_t* texel = &grid_[((static_cast<size_t>(z) * w + y) * w + x) * c];
+#if defined(__x86_64__)
+    const __m128i t = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(texel));
+    return reinterpret_cast<F4>(_mm_cvtepi32_ps(_mm_unpacklo_epi16(t, _mm_setzero_si128())));
+#else
+    return F4{static_cast<float>(texel[0]), static_cast<float>(texel[1]), static_cast<float>(texel[2]),
+              static_cast<float>(texel[3])};
+#endif
+  };
+  auto lerp = [](F4 p, F4 q, float t) { return p + (q - p) * t; };  // pat_lerp per channel
+  int x = first % w;  // the column's grid index, wrapped as gridColumn's callers do
+  x = x < 0 ? x + w : x;
+  for (size_t j = 0; j < n; ++j, x = x + 1 == w ? 0 : x + 1) {
+    const F4 v = lerp(lerp(texel(x, a.y0, a.z0), texel(x, a.y1, a.z0), a.f.y),
+                      lerp(texel(x, a.y0, a.z1), texel(x, a.y1, a.z1), a.f.y), a.f.z);
+    for (int k = 0; k < 4; ++k) table[static_cast<size_t>(k) * stride + j] = v[k];
+  }
+}
+
 float AlbedoSampler::gridTurbulence(glm::vec3 g, int channel) const {
   const GridAxes a = gridAxes(g);
   return patglsl::pat_lerp(gridColumn(a, a.x0, channel), gridColumn(a, a.x1, channel), a.f.x) * (1.0f / 65535.0f);
@@ -372,25 +423,27 @@ void AlbedoSampler::veinRow(glm::vec3 origin, glm::vec3 step, int count, glm::ve
     const int64_t span = static_cast<int64_t>(*hi) - first + 2;
     if (span <= 2 * static_cast<int64_t>(count) + 16) {
       const GridAxes a = gridAxes(gridPoint(origin));  // the row's y and z
-      const int w = resolution_;
       const size_t n = static_cast<size_t>(span);
-      table.resize(4 * n);
-      for (size_t j = 0; j < n; ++j) {
-        const int x = (first + static_cast<int32_t>(j)) % w;
-        for (int k = 0; k < 4; ++k) table[static_cast<size_t>(k) * n + j] = gridColumn(a, x < 0 ? x + w : x, k);
-      }
+      // Each channel's table padded by 8 floats (patlanes::lerpTable reads up to 8 past a column).
+      const size_t stride = n + simd::kLanes;
+      table.assign(4 * stride, 0.0f);
+      gridColumns(a, first, n, stride, table.data());
       std::vector<float> samples(4 * static_cast<size_t>(count));
       for (int k = 0; k < 4; ++k) {
-        const float* __restrict t = table.data() + static_cast<size_t>(k) * n;
+        const float* __restrict t = table.data() + static_cast<size_t>(k) * stride;
         float* __restrict s = samples.data() + static_cast<size_t>(k) * static_cast<size_t>(count);
+        if (patlanes::lanesAvailable()) {
+          patlanes::lerpTable(cells.data(), fractions.data(), count, first, t, 1.0f / 65535.0f, s);
+          continue;
+        }
         for (int i = 0; i < count; ++i) {
           const int32_t j = cells[static_cast<size_t>(i)] - first;
           s[i] = patglsl::pat_lerp(t[j], t[j + 1], fractions[static_cast<size_t>(i)]) * (1.0f / 65535.0f);
         }
       }
-      shadeRow(P, origin, step, count, out, valueOut, [&](int i, glm::vec3, float* t) {
-        for (int k = 0; k < 4; ++k) t[k] = samples[static_cast<size_t>(k) * static_cast<size_t>(count) + static_cast<size_t>(i)];
-      });
+      const size_t c = static_cast<size_t>(count);
+      shadeRow(P, origin, step, count, out, valueOut,
+               SampleArrays{{samples.data(), samples.data() + c, samples.data() + 2 * c, samples.data() + 3 * c}});
       return;
     }
   }
@@ -493,12 +546,21 @@ void accumulateOctave(const float* xs, int count, float size, float inv, float p
     return;
   }
   thread_local std::vector<float> lattice;
-  table.resize(static_cast<size_t>(span));
+  table.resize(static_cast<size_t>(span) + simd::kLanes);  // lerpOctave reads up to 8 floats past a column
   lattice.resize(static_cast<size_t>(span));
-  float w = patglsl::pat_wrap(static_cast<float>(lo), period);
-  for (int64_t j = 0; j < span; ++j) {
-    lattice[static_cast<size_t>(j)] = w;
-    w = patglsl::pat_next(w, period);
+  // The lattice indices pat_wrap(lo), then pat_next of each: integers below 2^24 (exact in
+  // float) counting up from the first and back to 0 at the period, so written run by run from
+  // an integer count (a loop the compiler vectorizes) instead of by pat_next's float chain,
+  // whose add-compare-select latency each column waited on (half of this function's time).
+  {
+    const auto per = static_cast<int64_t>(period);
+    auto v = static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period));
+    float* __restrict l = lattice.data();
+    for (int64_t j = 0; j < span; v = 0) {
+      const int64_t run = std::min(span - j, per - v);
+      for (int64_t k = 0; k < run; ++k) l[j + k] = static_cast<float>(static_cast<int32_t>(v + k));
+      j += run;
+    }
   }
   columns(lattice.data(), static_cast<int>(span), table.data());
   if (patlanes::lanesAvailable()) {

@@ -124,6 +124,9 @@ class AlbedoSampler {
   };
   GridAxes gridAxes(glm::vec3 g) const;  // g in grid texels (vein models: q / 2)
   float gridColumn(const GridAxes& a, int x, int channel) const;  // raw 16-bit units
+  // gridColumn of the four channels at the n columns from `first` (wrapped), channel k's at
+  // table[k * stride + j]; the grid has four channels (the vein models').
+  void gridColumns(const GridAxes& a, int32_t first, size_t n, size_t stride, float* table) const;
   float gridTurbulence(glm::vec3 g, int channel) const;
   Material material_;
   std::vector<uint16_t> grid_;  // W^3, x fastest; empty: evaluated per point

@@ -158,20 +158,20 @@ vec3 slab_transport(float s_mm) {
 // 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). Not right for a slanted flat slab
 // (TransmissionSlab.SlantedLight...): the taps' sectors are too coarse for entries whose depth
 // varies across them.
-const int GLOW_RINGS = 2;
-const int GLOW_ANGLES = 6;
+const int GLOW_RINGS = 3;
+const int GLOW_ANGLES = 8;
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
 vec3 gathered_transport(vec3 P_in, float s0, float cos0) {
   float mm = u_mm_per_unit;
-  vec3 t0 = slab_transport(s0 * mm);
-  vec3 straight = cos0 * principled_entry(cos0) * t0;
+  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
   float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
   if (blend <= 0.0) return straight;  // most of a lit or thin picture: no taps
   float S = max(s0, max(GLOW_MIN_RADIUS_MM / mm, 4.0 * u_light_texel_world));
-  const float bounds[3] = float[3](0.5, 1.5, 1e6);
-  const float radii[2] = float[2](1.118, 2.2);  // sqrt((a^2 + b^2) / 2), the last 2.2
-  vec3 sum = cos0 * principled_entry(cos0) * (t0 - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
+  const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
+  const float radii[3] = float[3](0.7906, 1.5811, 2.5);  // sqrt((a^2 + b^2) / 2), the last 2.5
+  vec3 sum = cos0 * principled_entry(cos0) *
+             (slab_transport(s0 * mm) - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
   vec3 L = light_vector(P_in);
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);

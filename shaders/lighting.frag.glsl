@@ -160,35 +160,110 @@ vec3 slab_transport(float s_mm) {
 // varies across them.
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
+const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
-vec3 gathered_transport(vec3 P_in, float s0, float cos0) {
+
+// The gather's scale S for a chord s0 (scene units).
+float glow_scale(float s0) {
+  return max(s0, max(GLOW_MIN_RADIUS_MM / u_mm_per_unit, 4.0 * u_light_texel_world));
+}
+
+// This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
+// place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
+// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared).
+vec3 glow_ring_quarter(vec3 P_in, float s0, int lane) {
   float mm = u_mm_per_unit;
-  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
-  float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
-  if (blend <= 0.0) return straight;  // most of a lit or thin picture: no taps
-  float S = max(s0, max(GLOW_MIN_RADIUS_MM / mm, 4.0 * u_light_texel_world));
+  float S = glow_scale(s0);
   const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
   const float radii[3] = float[3](0.7906, 1.5811, 2.5);  // sqrt((a^2 + b^2) / 2), the last 2.5
-  vec3 sum = cos0 * principled_entry(cos0) *
-             (slab_transport(s0 * mm) - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
   vec3 L = light_vector(P_in);
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);
+  vec3 sum = vec3(0.0);
   for (int i = 0; i < GLOW_RINGS; ++i) {
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
-    for (int k = 0; k < GLOW_ANGLES; ++k) {
-      float phi = (float(k) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
+    for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
+      float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
       vec3 q = P_in + rho * (cos(phi) * t1 + sin(phi) * t2);
       vec3 e = light_entry_at(q);
-      if (e.z <= 0.0) continue;
       float sk = light_distance_of(q) - e.x;
       vec3 ring = slab_transport(sqrt(sk * sk + a * a) * mm);
       if (i + 1 < GLOW_RINGS) ring -= slab_transport(sqrt(sk * sk + b * b) * mm);
-      sum += (e.z * e.y * principled_entry(e.y) / float(GLOW_ANGLES)) * max(ring, vec3(0.0));
+      // e.z = 0 where no light enters (a select, not a branch: the quad's texels stay in step).
+      sum += (e.z > 0.0 ? e.z * e.y * principled_entry(e.y) / float(GLOW_ANGLES) : 0.0) * max(ring, vec3(0.0));
     }
   }
-  return mix(straight, sum, blend);
+  return sum;
+}
+
+// The other texel of the 2 x 2 quad across x (or y): a fine derivative is the difference between
+// the quad's two texels along that axis, so v +- it is the neighbour's value (to rounding).
+vec4 quad_across_x(vec4 v) {
+  vec4 d = dFdxFine(v);
+  return (int(gl_FragCoord.x) & 1) == 0 ? v + d : v - d;
+}
+vec4 quad_across_y(vec4 v) {
+  vec4 d = dFdyFine(v);
+  return (int(gl_FragCoord.y) & 1) == 0 ? v + d : v - d;
+}
+
+// The gather's rings for the texel at full-resolution pixel px, shared across its 2 x 2 quad:
+// each texel reads a quarter of the 24 taps (glow_ring_quarter) and takes the other quarters from
+// the quad's texels whose exit lies on its own part of the stone (centres within S / 4 of each
+// other, chords within S / 4); quarters it cannot take are made up by scaling what it has
+// (4 / the quarters taken), as a gather of fewer angles. The quad's centres are a lighting texel
+// (2 pixels) apart, small against S (2 mm and more). A quarter of the taps per texel: the lighting
+// pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
+// session"). Must run in uniform control flow (derivatives): main() calls it before any texel
+// returns, and background texels take part with nothing (a select keeps NaNs out).
+vec3 glow_rings_shared(ivec2 px, float depth) {
+  bool stone = depth < 1.0;
+  vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));
+  vec3 P = surface_point(uv, stone ? depth : 0.5);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P_in = P - N * (2.0 * u_light_texel_world);
+  float s0 = transmission_thickness(P_in).x;
+  bool ok = stone && s0 > 0.0;
+  // The taps only where some texel of the quad blends them in (gathered_transport: from
+  // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
+  // and llvmpipe, which shades a block's lanes in step, skips it where the whole block is thin or lit.
+  vec4 chord = vec4(ok ? s0 : 0.0);
+  chord = max(chord, quad_across_x(chord));
+  chord = max(chord, quad_across_y(chord));
+  if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
+  int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
+  vec3 mine = glow_ring_quarter(P_in, s0, lane);
+  bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);
+  ok = ok && finite;
+  vec4 a = ok ? vec4(mine, s0) : vec4(0.0, 0.0, 0.0, -1.0);  // chord -1: nothing to take
+  vec4 b = ok ? vec4(P_in, 0.0) : vec4(0.0);
+  vec4 ax = quad_across_x(a), bx = quad_across_x(b);
+  vec4 ay = quad_across_y(a), by = quad_across_y(b);
+  vec4 axy = quad_across_y(ax), bxy = quad_across_y(bx);
+  float tol = 0.25 * glow_scale(s0);
+  vec3 sum = a.xyz;
+  float taken = 1.0;
+  vec4 others_a[3] = vec4[3](ax, ay, axy);
+  vec4 others_b[3] = vec4[3](bx, by, bxy);
+  for (int k = 0; k < 3; ++k) {
+    bool take = others_a[k].w > 0.0 && abs(others_a[k].w - s0) <= tol && distance(others_b[k].xyz, P_in) <= tol;
+    sum += take ? others_a[k].xyz : vec3(0.0);
+    taken += take ? 1.0 : 0.0;
+  }
+  return ok ? sum * (4.0 / taken) : vec3(0.0);
+}
+
+// The gather at the exit P_in (chord s0, entry cosine cos0), its rings given (glow_rings_shared).
+vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
+  float mm = u_mm_per_unit;
+  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
+  float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
+  if (blend <= 0.0) return straight;  // most of a lit or thin picture
+  float S = glow_scale(s0);
+  vec3 sum = cos0 * principled_entry(cos0) *
+             (slab_transport(s0 * mm) - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
+  return mix(straight, sum + rings, blend);
 }
 
 // How far the surface the camera sees in the direction of `entry` (where the transmitted light
@@ -214,7 +289,7 @@ float entry_hidden_by(vec3 entry) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
@@ -254,7 +329,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
                    (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
   }
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in) * weight *
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight *
                         u_translucency;
 }
 
@@ -276,6 +351,9 @@ void main() {
   ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
+  // Before any texel returns: the quad shares it (derivatives need all four in step).
+  vec3 glow_rings = vec3(0.0);
+  if (u_mode == MODE_MARBLE) glow_rings = glow_rings_shared(px, depth);
   if (depth >= 1.0) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
@@ -292,7 +370,7 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L, px), linear_depth(depth, u_camera_near_far));
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, glow_rings), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

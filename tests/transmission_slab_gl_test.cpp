@@ -131,6 +131,11 @@ struct TransmissionSlab : ::testing::Test {
 // The lighting pass keeps the walk's table cut for the material between frames; another stone
 // (other coefficients) must get its own table: the cached renderer's second frame equals a fresh
 // renderer's, and differs from the first (a stale table would leave it as it was).
+// Equal to rounding, not bit for bit: the cached renderer's post pass reads the albedo its first
+// frame stored (DiffuseSource::StoredAlbedo) where the fresh one evaluates the pattern
+// (DiffuseSource::Pattern), and the two paths' float results, stored as half floats, differ by a
+// half-float step at a few pixels (2 of 16,384, 7e-4 relative, with the gather sharing its taps
+// across quads; the 24-tap gather happened to round alike). The table's change is 20 % and more.
 TEST_F(TransmissionSlab, AnotherStoneGetsItsOwnTransportAndMatchesAFreshRender) {
   Scene s = slabScene();
   const ImageRGBF first = render(s);
@@ -142,7 +147,10 @@ TEST_F(TransmissionSlab, AnotherStoneGetsItsOwnTransportAndMatchesAFreshRender) 
   renderImage(fresh, s);
   const ImageRGBF expected = fresh.readHdr();
   ASSERT_EQ(cached.pixels.size(), expected.pixels.size());
-  EXPECT_TRUE(cached.pixels == expected.pixels) << "the cached renderer used a stale transport table";
+  int differing = 0;
+  for (size_t i = 0; i < cached.pixels.size(); ++i)
+    differing += std::abs(cached.pixels[i] - expected.pixels[i]) > 2e-3f * std::abs(expected.pixels[i]) + 1e-6f;
+  EXPECT_EQ(differing, 0) << "the cached renderer used a stale transport table";
   const glm::vec3 before = linearRgbAround(first, s, {0, 0, kHalfThickness});
   const glm::vec3 after = linearRgbAround(cached, s, {0, 0, kHalfThickness});
   EXPECT_LT(after.r, 0.8f * before.r) << "a shorter radius lets less light through the slab";

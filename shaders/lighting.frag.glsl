@@ -71,6 +71,29 @@ float thickness_at(vec3 p) {
 #include "marble_light.glsl"
 #include "bounce_upsample.glsl"
 
+// Where the light entered the stone along the light's ray through p, read from the light's map
+// as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
+// left out): .x its distance from the light, .y the cosine it entered at, .z the share of the
+// four texels' bilinear weight that saw the object (0 off the map or beyond the light's
+// silhouette: no light enters there; fractional across the silhouette, so a tap's weight fades
+// over a texel instead of switching).
+vec3 light_entry_at(vec3 p) {
+  vec4 clip = u_light_view_proj * vec4(p, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec3(0.0);
+  vec2 size = vec2(textureSize(u_light_distance, 0));
+  vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;
+  vec2 base = floor(t);
+  vec2 f = t - base;
+  vec4 entered = textureGather(u_light_distance, (base + 1.0) / size, 0);
+  vec4 cosines = textureGather(u_light_distance, (base + 1.0) / size, 1);
+  vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  w *= vec4(lessThan(entered, vec4(u_light_near_far.y + 1.0)));
+  float weight = w.x + w.y + w.z + w.w;
+  if (weight <= 0.0) return vec3(0.0);
+  return vec3(dot(w, entered) / weight, dot(w, cosines) / weight, weight);
+}
+
 // The thickness the transmission uses: as thickness_at(), but the light's distance map is
 // interpolated bilinearly between the four texels around p instead of read at the nearest one.
 // Within one texel the true entry distance changes by a texel times the surface's slope seen
@@ -81,25 +104,11 @@ float thickness_at(vec3 p) {
 // distances: the reason the map itself is sampled nearest); where none of the four saw the
 // object, nothing is in the way and s = 0, as in thickness_at().
 // Also returns, in .y, the cosine at which the light entered there (interpolated with the same
-// weights; light_depth.frag.glsl stores it beside the distance).
+// weights; light_depth.frag.glsl stores it beside the distance). light_entry_at: the reads.
 vec2 transmission_thickness(vec3 p) {
-  vec4 clip = u_light_view_proj * vec4(p, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec2(0.0);
-  vec2 size = vec2(textureSize(u_light_distance, 0));
-  vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;  // texel centres at integers
-  vec2 base = floor(t);
-  vec2 f = t - base;
-  // The four texels around p in one gather (the corner between them; clamped to the map's edge
-  // like the sampler), in textureGather's order: (0,1), (1,1), (1,0), (0,0).
-  vec4 entered = textureGather(u_light_distance, (base + 1.0) / size, 0);
-  vec4 cosines = textureGather(u_light_distance, (base + 1.0) / size, 1);
-  vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // bilinear
-  // "Nothing hit" is stored as far + 1000 (LightDepthPass): such texels weigh nothing.
-  w *= vec4(lessThan(entered, vec4(u_light_near_far.y + 1.0)));
-  float weight = w.x + w.y + w.z + w.w;
-  if (weight <= 0.0) return vec2(0.0);
-  return vec2(max(light_distance_of(p) - dot(w, entered) / weight, 0.0), dot(w, cosines) / weight);
+  vec3 e = light_entry_at(p);
+  if (e.z <= 0.0) return vec2(0.0);
+  return vec2(max(light_distance_of(p) - e.x, 0.0), e.y);
 }
 
 // Light carried through s mm of stone, relative to what the same stone reflects: Cycles' random
@@ -118,6 +127,143 @@ vec3 slab_transport(float s_mm) {
   vec3 lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
   vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
   return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
+}
+
+// The translucent shadow map's filter (Dachsbacher & Stamminger 2003): the light leaving at x is
+// the sum over the entry points x_j around it, seen in the light's map, of the light entering
+// there (E_j = cos_j principled_entry(cos_j) per unit of the light's cross-section, times the
+// cross-section A_j the tap stands for) times the stone's response R(|x - x_j|) for that 3D
+// distance. R is the one kernel that makes an evenly lit flat slab give the random walk's slab
+// transport T(s) (slab_transport): integrating over the entry plane, int R(sqrt(s^2 + rho^2))
+// 2 pi rho drho = T(s) for every s, i.e. R(r) = -T'(r) / (2 pi r), so the share of a ring
+// a <= rho < b at depth difference s is T(sqrt(s^2 + a^2)) - T(sqrt(s^2 + b^2)) and the rings
+// telescope to T(s) when every tap finds the slab's entry at the same s (the tests
+// TransmissionSlab.*). In a curved thin part (a handle, a horn) the taps find entries nearer in
+// 3D than the straight chord on the sides, and none beyond the light's silhouette: the walk's
+// shorter paths round the curve (whiter light) and the lit area's finite extent (less red, whose
+// kernel is widest). Taps: a centre disc of radius S/2 read at the exit's own chord s0
+// (transmission_thickness: the bilinear entry), and GLOW_RINGS rings with boundaries S/2, S, 2S,
+// infinity of GLOW_ANGLES taps each at the ring's area-weighted middle radius (the last at 2.5 S),
+// S = max(s0, GLOW_MIN_RADIUS_MM): the kernel's width scales with the chord, so the
+// pattern does too, and it moves continuously with s0. Each tap stands for its ring sector at the
+// depth difference it finds (an approximation: constant within the sector). Taps whose entry lies
+// beyond the exit (farther from the light) still count at their 3D distance.
+// Below GLOW_FROM_MM of chord the straight chord's value is kept, blended to the gather by
+// 2 GLOW_FROM_MM: such short chords are the rims of parts, where the taps inward fall on the thick
+// side and the gather's light is 0.3 of Cycles' (teapot-back, 0-5 mm chords; the straight chord
+// 0.8-0.9 of it). That the rims glow as Cycles' do is measured, not derived: a rim's entries lie
+// in a sliver of the light's view, and the kernel gives them little.
+// Measured (docs/quality.md, "Eleventh session"): a 10 mm rod's glow 0.88 / 1.01 / 1.00 of a
+// random walk in the rod (the straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords
+// 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). Not right for a slanted flat slab
+// (TransmissionSlab.SlantedLight...): the taps' sectors are too coarse for entries whose depth
+// varies across them.
+const int GLOW_RINGS = 3;
+const int GLOW_ANGLES = 8;
+const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
+const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
+const float GLOW_FROM_MM = 3.0;
+
+// The gather's scale S for a chord s0 (scene units).
+float glow_scale(float s0) {
+  return max(s0, max(GLOW_MIN_RADIUS_MM / u_mm_per_unit, 4.0 * u_light_texel_world));
+}
+
+// This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
+// place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
+// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared).
+vec3 glow_ring_quarter(vec3 P_in, float s0, int lane) {
+  float mm = u_mm_per_unit;
+  float S = glow_scale(s0);
+  const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
+  const float radii[3] = float[3](0.7906, 1.5811, 2.5);  // sqrt((a^2 + b^2) / 2), the last 2.5
+  vec3 L = light_vector(P_in);
+  vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(L, t1);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < GLOW_RINGS; ++i) {
+    float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
+    for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
+      float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
+      vec3 q = P_in + rho * (cos(phi) * t1 + sin(phi) * t2);
+      vec3 e = light_entry_at(q);
+      float sk = light_distance_of(q) - e.x;
+      vec3 ring = slab_transport(sqrt(sk * sk + a * a) * mm);
+      if (i + 1 < GLOW_RINGS) ring -= slab_transport(sqrt(sk * sk + b * b) * mm);
+      // e.z = 0 where no light enters (a select, not a branch: the quad's texels stay in step).
+      sum += (e.z > 0.0 ? e.z * e.y * principled_entry(e.y) / float(GLOW_ANGLES) : 0.0) * max(ring, vec3(0.0));
+    }
+  }
+  return sum;
+}
+
+// The other texel of the 2 x 2 quad across x (or y): a fine derivative is the difference between
+// the quad's two texels along that axis, so v +- it is the neighbour's value (to rounding).
+vec4 quad_across_x(vec4 v) {
+  vec4 d = dFdxFine(v);
+  return (int(gl_FragCoord.x) & 1) == 0 ? v + d : v - d;
+}
+vec4 quad_across_y(vec4 v) {
+  vec4 d = dFdyFine(v);
+  return (int(gl_FragCoord.y) & 1) == 0 ? v + d : v - d;
+}
+
+// The gather's rings for the texel at full-resolution pixel px, shared across its 2 x 2 quad:
+// each texel reads a quarter of the 24 taps (glow_ring_quarter) and takes the other quarters from
+// the quad's texels whose exit lies on its own part of the stone (centres within S / 4 of each
+// other, chords within S / 4); quarters it cannot take are made up by scaling what it has
+// (4 / the quarters taken), as a gather of fewer angles. The quad's centres are a lighting texel
+// (2 pixels) apart, small against S (2 mm and more). A quarter of the taps per texel: the lighting
+// pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
+// session"). Must run in uniform control flow (derivatives): main() calls it before any texel
+// returns, and background texels take part with nothing (a select keeps NaNs out).
+vec3 glow_rings_shared(ivec2 px, float depth) {
+  bool stone = depth < 1.0;
+  vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));
+  vec3 P = surface_point(uv, stone ? depth : 0.5);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P_in = P - N * (2.0 * u_light_texel_world);
+  float s0 = transmission_thickness(P_in).x;
+  bool ok = stone && s0 > 0.0;
+  // The taps only where some texel of the quad blends them in (gathered_transport: from
+  // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
+  // and llvmpipe, which shades a block's lanes in step, skips it where the whole block is thin or lit.
+  vec4 chord = vec4(ok ? s0 : 0.0);
+  chord = max(chord, quad_across_x(chord));
+  chord = max(chord, quad_across_y(chord));
+  if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
+  int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
+  vec3 mine = glow_ring_quarter(P_in, s0, lane);
+  bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);
+  ok = ok && finite;
+  vec4 a = ok ? vec4(mine, s0) : vec4(0.0, 0.0, 0.0, -1.0);  // chord -1: nothing to take
+  vec4 b = ok ? vec4(P_in, 0.0) : vec4(0.0);
+  vec4 ax = quad_across_x(a), bx = quad_across_x(b);
+  vec4 ay = quad_across_y(a), by = quad_across_y(b);
+  vec4 axy = quad_across_y(ax), bxy = quad_across_y(bx);
+  float tol = 0.25 * glow_scale(s0);
+  vec3 sum = a.xyz;
+  float taken = 1.0;
+  vec4 others_a[3] = vec4[3](ax, ay, axy);
+  vec4 others_b[3] = vec4[3](bx, by, bxy);
+  for (int k = 0; k < 3; ++k) {
+    bool take = others_a[k].w > 0.0 && abs(others_a[k].w - s0) <= tol && distance(others_b[k].xyz, P_in) <= tol;
+    sum += take ? others_a[k].xyz : vec3(0.0);
+    taken += take ? 1.0 : 0.0;
+  }
+  return ok ? sum * (4.0 / taken) : vec3(0.0);
+}
+
+// The gather at the exit P_in (chord s0, entry cosine cos0), its rings given (glow_rings_shared).
+vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
+  float mm = u_mm_per_unit;
+  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
+  float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
+  if (blend <= 0.0) return straight;  // most of a lit or thin picture
+  float S = glow_scale(s0);
+  vec3 sum = cos0 * principled_entry(cos0) *
+             (slab_transport(s0 * mm) - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
+  return mix(straight, sum + rings, blend);
 }
 
 // How far the surface the camera sees in the direction of `entry` (where the transmitted light
@@ -143,7 +289,7 @@ float entry_hidden_by(vec3 entry) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
@@ -171,8 +317,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
   vec2 s_cos = transmission_thickness(P_in);
   float s = s_cos.x;
-  float s_mm = s * u_mm_per_unit;
-  vec3 enters = vec3(s_cos.y * principled_entry(s_cos.y));
+  float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
   if (NoL < 0.0 && s > 0.0) {
@@ -184,7 +329,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px) {
                    (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
   }
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * enters * slab_transport(s_mm) * weight *
+  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight *
                         u_translucency;
 }
 
@@ -206,6 +351,9 @@ void main() {
   ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
+  // Before any texel returns: the quad shares it (derivatives need all four in step).
+  vec3 glow_rings = vec3(0.0);
+  if (u_mode == MODE_MARBLE) glow_rings = glow_rings_shared(px, depth);
   if (depth >= 1.0) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
@@ -222,7 +370,7 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L, px), linear_depth(depth, u_camera_near_far));
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, glow_rings), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

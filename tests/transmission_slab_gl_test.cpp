@@ -131,6 +131,11 @@ struct TransmissionSlab : ::testing::Test {
 // The lighting pass keeps the walk's table cut for the material between frames; another stone
 // (other coefficients) must get its own table: the cached renderer's second frame equals a fresh
 // renderer's, and differs from the first (a stale table would leave it as it was).
+// Equal to rounding, not bit for bit: the cached renderer's post pass reads the albedo its first
+// frame stored (DiffuseSource::StoredAlbedo) where the fresh one evaluates the pattern
+// (DiffuseSource::Pattern), and the two paths' float results, stored as half floats, differ by a
+// half-float step at a few pixels (2 of 16,384, 7e-4 relative, with the gather sharing its taps
+// across quads; the 24-tap gather happened to round alike). The table's change is 20 % and more.
 TEST_F(TransmissionSlab, AnotherStoneGetsItsOwnTransportAndMatchesAFreshRender) {
   Scene s = slabScene();
   const ImageRGBF first = render(s);
@@ -142,7 +147,10 @@ TEST_F(TransmissionSlab, AnotherStoneGetsItsOwnTransportAndMatchesAFreshRender) 
   renderImage(fresh, s);
   const ImageRGBF expected = fresh.readHdr();
   ASSERT_EQ(cached.pixels.size(), expected.pixels.size());
-  EXPECT_TRUE(cached.pixels == expected.pixels) << "the cached renderer used a stale transport table";
+  int differing = 0;
+  for (size_t i = 0; i < cached.pixels.size(); ++i)
+    differing += std::abs(cached.pixels[i] - expected.pixels[i]) > 2e-3f * std::abs(expected.pixels[i]) + 1e-6f;
+  EXPECT_EQ(differing, 0) << "the cached renderer used a stale transport table";
   const glm::vec3 before = linearRgbAround(first, s, {0, 0, kHalfThickness});
   const glm::vec3 after = linearRgbAround(cached, s, {0, 0, kHalfThickness});
   EXPECT_LT(after.r, 0.8f * before.r) << "a shorter radius lets less light through the slab";
@@ -184,6 +192,14 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
 // weight 1. With the old weight it reads 0.45 of that (checked: the test then fails). The slab is
 // 4 mm thick here (20 mm per unit), so that the slanted chord, 11.7 mm, lets light through in all
 // three channels.
+// Since session 11 the transmission at that chord is the gather over the light's map
+// (shaders/lighting.frag.glsl, gathered_transport), which for a slanted slab is not the chord's
+// model: it reads 0.73 / 0.95 / 1.28 of it (R G B; 0.0144 0.0074 0.0030). Neither is the truth:
+// Cycles' own render of this slab gives 0.063 0.045 0.032, since its walk enters cosine-weighted
+// whatever the light's slant, so a slanted slab passes what its thickness lets through
+// (docs/quality.md, "Eleventh session"). So the test now asks only what it was written for: the
+// face is not dimmed by the old weight, i.e. it reads between 0.65 and 1.5 of the chord's model in
+// every channel (the old weight: 0.33-0.58 of it).
 TEST_F(TransmissionSlab, SlantedLightBehindIsNotDimmedByTheExitsOrientation) {
   Scene s = slabScene();
   s.mm_per_unit = 20.0f;
@@ -198,7 +214,8 @@ TEST_F(TransmissionSlab, SlantedLightBehindIsNotDimmedByTheExitsOrientation) {
   const glm::vec3 expected = entry * s.material.base_color * slabTransport(s.material, crossed);
   for (int ch = 0; ch < 3; ++ch) {
     EXPECT_GT(expected[ch], 1e-4f) << "the slab must let some light through in channel " << ch;
-    EXPECT_NEAR(centre[ch], expected[ch], 0.08f * expected[ch]) << "channel " << ch;
+    EXPECT_GT(centre[ch], 0.65f * expected[ch]) << "channel " << ch;
+    EXPECT_LT(centre[ch], 1.5f * expected[ch]) << "channel " << ch;
   }
   std::cout << "[          ] slanted: centre " << centre.r << " " << centre.g << " " << centre.b << ", model " << expected.r
             << " " << expected.g << " " << expected.b << "\n";

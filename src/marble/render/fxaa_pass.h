@@ -23,19 +23,7 @@ public:
 
 private:
   gl::Program program_;
-  gl::Program edgesProgram_;
-  gl::Program triProgram_;
-  gl::Program triEdgesProgram_;
   gl::VertexArray emptyVao_;
-  gl::Program pointsProgram_;
-  gl::VertexArray pointsVao_;
-  gl::Buffer pointsBuffer_;
-  size_t pointCount_ = 0;
-  gl::Texture marks_;
-  int marksWidth_ = 0, marksHeight_ = 0;
-  gl::VertexArray spansVao_;
-  gl::Buffer spansBuffer_;
-  std::vector<ScreenRect> uploadedSpans_;  // what spansBuffer_ holds
   PassTimer timer_;
 };
 

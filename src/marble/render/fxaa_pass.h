@@ -23,9 +23,7 @@ public:
 
 private:
   gl::Program program_;
-  gl::VertexArray spansVao_;
-  gl::Buffer spansBuffer_;
-  std::vector<ScreenRect> uploadedSpans_;  // what spansBuffer_ holds
+  gl::VertexArray emptyVao_;
   PassTimer timer_;
 };
 

@@ -13,12 +13,7 @@
 // Each benchmark evaluates all 65,536 points per iteration; the counter "samples/s" is points
 // per second of wall time. "/threads:2" variants split the rows over std::threads.
 #include <benchmark/benchmark.h>
-// libnoise's headers (include dir /usr/include/libnoise, not a system dir) have unused
-// parameters; keep -Wextra -Werror builds clean.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <noise.h>
-#pragma GCC diagnostic pop
+#include "libnoise_reference.h"
 
 #include <algorithm>
 #include <thread>
@@ -85,11 +80,7 @@ const std::vector<float>& rowXs() {
 // libnoise: Perlin, 6 octaves, 3D.
 void BM_Libnoise_Perlin3D(benchmark::State& state) {
   noise::module::Perlin perlin;
-  perlin.SetOctaveCount(6);
-  perlin.SetFrequency(1.0 / 32.0);
-  perlin.SetLacunarity(2.0);
-  perlin.SetPersistence(0.5);
-  perlin.SetSeed(1);
+  marble::bench::configureReferencePerlin(perlin);
   runGrid(state, [&](int y, float* out) {
     for (int x = 0; x < kGrid; ++x) out[x] = static_cast<float>(perlin.GetValue(x, y, kZ));
   });

@@ -10,10 +10,7 @@
 //   build/bench/marble_row_min [REPS] [ftz]     (default 200; `ftz`: flush denormals to zero
 //   and read them as zero, a diagnostic of whether any of the three meets them: the rows'
 //   results are then no longer the reference's where one would occur)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <noise.h>
-#pragma GCC diagnostic pop
+#include "libnoise_reference.h"
 
 #include <xmmintrin.h>
 
@@ -46,11 +43,7 @@ int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::atoi(argv[1]) : 200;
   if (argc > 2 && std::string(argv[2]) == "ftz") _mm_setcsr(_mm_getcsr() | 0x8040);  // FTZ | DAZ
   noise::module::Perlin perlin;
-  perlin.SetOctaveCount(6);
-  perlin.SetFrequency(1.0 / 32.0);
-  perlin.SetLacunarity(2.0);
-  perlin.SetPersistence(0.5);
-  perlin.SetSeed(1);
+  marble::bench::configureReferencePerlin(perlin);
   const marble::Material carrara = marble::loadPreset("carrara");
   const marble::AlbedoSampler sampler(carrara, 1e12);
   std::vector<glm::vec3> colours(kGrid);

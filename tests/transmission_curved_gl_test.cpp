@@ -23,6 +23,7 @@
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
+#include "splitmix.h"
 #include "marble/mesh/vertex_normals.h"
 
 using namespace marble;
@@ -62,33 +63,7 @@ Mesh rod() {
   return m;
 }
 
-Scene rodScene() {
-  Scene s;
-  s.mesh = "test:rod";
-  s.mm_per_unit = kMmPerUnit;
-  s.render.width = s.render.height = kSize;
-  s.render.mode = RenderMode::Marble;
-  s.render.environment = Environment::None;
-  s.camera.position = {0, 0, 6};
-  s.camera.target = {0, 0, 0};
-  s.camera.fov_y_deg = 22;
-  s.light.type = LightType::Directional;
-  s.light.position = {0, 0, -1};  // from behind: the light travels along +z
-  s.light.intensity = 1.0f;
-  s.material = principledStone();
-  return s;
-}
-
-struct SplitMix {  // splitmix64: fixed seed, the same numbers everywhere
-  uint64_t state;
-  double next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-53;
-  }
-};
+Scene rodScene() { return test::backLitScene("test:rod", kMmPerUnit, kSize); }
 
 // Exitance at the rod's far side per unit irradiance (perpendicular to the light), over the arc
 // within kWindow of its middle: walks enter uniformly across the rod's width (its cross-section

@@ -20,6 +20,7 @@
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
+#include "splitmix.h"
 #include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
@@ -47,22 +48,7 @@ Mesh slab() {
   return m;
 }
 
-Scene slabScene() {
-  Scene s;
-  s.mesh = "test:slab";
-  s.mm_per_unit = kMmPerUnit;
-  s.render.width = s.render.height = kSize;
-  s.render.mode = RenderMode::Marble;
-  s.render.environment = Environment::None;
-  s.camera.position = {0, 0, 6};
-  s.camera.target = {0, 0, 0};
-  s.camera.fov_y_deg = 22;
-  s.light.type = LightType::Directional;
-  s.light.position = {0, 0, -1};  // from behind: the light travels along +z
-  s.light.intensity = 1.0f;
-  s.material = test::principledStone();
-  return s;
-}
+Scene slabScene() { return test::backLitScene("test:slab", kMmPerUnit, kSize); }
 
 // The stone the transmission crosses at the face's centre: the slab, less the exit point's inward
 // offset of two light-map texels (shaders/lighting.frag.glsl; the renderer's 1024² map spans the
@@ -71,18 +57,6 @@ float crossedMm() {
   const float texelWorld = 2.0f * kBoundingRadius / 1024.0f;
   return (2.0f * kHalfThickness - 2.0f * texelWorld) * kMmPerUnit;
 }
-
-// A small PRNG of the test's own (splitmix64): fixed seed, the same numbers on every platform.
-struct SplitMix {
-  uint64_t state;
-  double next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-53;  // [0, 1)
-  }
-};
 
 // Flux through a slab tau mean free paths thick, per unit entering (far face: first; near face:
 // second), by the walk described above, with sigma_t = 1.

@@ -169,27 +169,99 @@ float glow_scale(float s0) {
   return max(s0, max(GLOW_MIN_RADIUS_MM / u_mm_per_unit, 4.0 * u_light_texel_world));
 }
 
+// The slanted entry (docs/quality.md, "Twelfth session: the slanted slab"). Where the light enters
+// the stone's surface at cos0 off its normal, the entry surface, taken as its tangent plane, lies
+// at p = s0 cos0 from the exit (s0 the chord along the light): the slab's thickness, the depth
+// Cycles' walk crosses (it enters cosine-weighted about the normal whatever the light's slant; its
+// render of a 4 mm slab lit at 70 degrees matches cos principled_entry(cos) T(4 mm) within 6 %,
+// where T(chord) is 3-13x too dark). The entry depth along the light changes across the light's
+// plane with slope g, |g| = tan(theta), so the 3D distance from the exit to the entry at offset u
+// in that plane is r^2 = p^2 + |u' - f'|^2, the foot f = -s0 cos0^2 g (the perpendicular's foot
+// seen in the light's plane) and ' stretching the component along g by 1 / cos0: the rings of the
+// kernel lie on the entry plane around the foot, which the light's plane sees as ellipses shrunk
+// by cos0 along g. slanted_frame returns the foot (t1, t2 coordinates) in .xy and the unit
+// direction of g in .zw, or zero direction where the map gives none (an entry at normal incidence,
+// or the light's silhouette within two texels): then the rings are the light-plane circles round
+// the exit, the eleventh session's gather. The magnitude comes from the stored cosine, the
+// direction from the entry depth two texels along t1 and t2 (two more entry reads a texel).
+// Where the entry is not flat over the foot's reach (a curved part: a rod's tangent plane runs off
+// the rod), the plane's depth is not the walk's: slanted_frame also checks the plane at the foot,
+// where the light's map must find the entry at 3D distance p from the exit if the plane holds, and
+// scales the slant by `planar` (1 within 10 % of p, 0 from 30 %; 0 where the foot sees no entry).
+// Measured: without that check the 10 mm rod (TransmissionCurved) read 1.3-1.65x the walk.
+vec4 slanted_frame(vec3 P_in, float s0, float cos0, vec3 t1, vec3 t2, out float planar) {
+  float h = max(2.0 * u_light_texel_world, 0.5 * s0 * max(cos0, 0.05));
+  vec3 q1 = P_in + h * t1, q2 = P_in + h * t2;
+  vec3 e1 = light_entry_at(q1), e2 = light_entry_at(q2);
+  vec2 g = vec2(light_distance_of(q1) - e1.x - s0, light_distance_of(q2) - e2.x - s0);
+  float c = max(cos0, 0.05);
+  float tan_theta = sqrt(max(1.0 - c * c, 0.0)) / c;
+  float len = length(g);
+  vec2 dir = len > 0.0 ? g / len : vec2(1.0, 0.0);
+  vec2 foot = -s0 * c * c * tan_theta * dir;
+  vec3 qf = P_in + foot.x * t1 + foot.y * t2;
+  vec3 ef = light_entry_at(qf);
+  float sf = light_distance_of(qf) - ef.x;
+  float p = s0 * c;
+  // A plane: the secants' slope is the stored cosine's, the cosine the same at both secant points,
+  // and the foot's entry at 3D distance p; each check fades over a range, so planar is continuous.
+  float slope = h * tan_theta;
+  float fit = abs(len - slope) / max(slope, 1e-6 * h);
+  float bend = max(max(abs(e1.y - cos0), abs(e2.y - cos0)), abs(ef.y - cos0));
+  float miss = abs(sqrt(dot(foot, foot) + sf * sf) - p) / max(p, 1e-6);
+  planar = smoothstep(0.9, 1.0, min(min(e1.z, e2.z), ef.z)) * (1.0 - smoothstep(0.05, 0.15, fit)) *
+           (1.0 - smoothstep(0.01, 0.05, bend)) * (1.0 - smoothstep(0.05, 0.15, miss));
+  return vec4(planar * foot, dir);
+}
+
+// The depth the straight model and the centre disc cross: the chord s0 tilted toward the entry
+// plane's depth s0 cos0 as far as the plane holds (slanted_frame's `planar`).
+float slanted_depth(float s0, float cos0, float planar) {
+  return s0 * mix(1.0, cos0, planar);
+}
+
 // This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
 // place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
 // quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared).
-vec3 glow_ring_quarter(vec3 P_in, float s0, int lane) {
-  float mm = u_mm_per_unit;
-  float S = glow_scale(s0);
+// The rings lie on the entry's plane round the perpendicular's foot (slanted_frame): tap j at ring
+// radius rho finds its entry at 3D distance r_j, and counts as the plane's ring at depth
+// d_j = sqrt(r_j^2 - rho^2) (= p on a flat slab, so the rings telescope to T(p) there as they do
+// to T(s0) at normal incidence). Its weight is the light entering per unit of the light's
+// cross-section, principled_entry(cos_j), times the light's cross-section of the plane's ring,
+// cos0 times its area (the eleventh session's weight cos_j principled_entry(cos_j) counted the
+// slant twice: a slanted slab got cos^2).
+vec3 glow_ring_quarter(vec3 P_in, vec2 s_cos, int lane) {
+  float s0 = s_cos.x, cos0 = s_cos.y;
   const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
   const float radii[3] = float[3](0.7906, 1.5811, 2.5);  // sqrt((a^2 + b^2) / 2), the last 2.5
   vec3 L = light_vector(P_in);
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);
-  vec3 sum = vec3(0.0);
+  float planar;
+  vec4 frame = slanted_frame(P_in, s0, cos0, t1, t2, planar);
+  float p = slanted_depth(s0, cos0, planar);
+  float S = glow_scale(p);
+  // The light-plane circles shrunk by `shrink` along g: a linear map, so the 8 sectors of a ring
+  // keep equal areas, and the identity wherever planar = 0, whatever g's direction (a pattern
+  // turned with g would jump where g turns: seams on the torus under a point light).
+  float shrink = mix(1.0, max(cos0, 0.05), planar);
+  mat2 squash = mat2(1.0) - (1.0 - shrink) * outerProduct(frame.zw, frame.zw);
+  // The centre disc (radius S / 2 round the foot, at depth p), a quarter of it here: the quad's
+  // sharing adds four quarters (or scales what it takes by 4 / quarters taken) as for the rings.
+  float mm = u_mm_per_unit;
+  vec3 sum = 0.25 * cos0 * principled_entry(cos0) *
+             (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
   for (int i = 0; i < GLOW_RINGS; ++i) {
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
     for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
       float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
-      vec3 q = P_in + rho * (cos(phi) * t1 + sin(phi) * t2);
+      vec2 u = frame.xy + rho * (squash * vec2(cos(phi), sin(phi)));
+      vec3 q = P_in + u.x * t1 + u.y * t2;
       vec3 e = light_entry_at(q);
       float sk = light_distance_of(q) - e.x;
-      vec3 ring = slab_transport(sqrt(sk * sk + a * a) * mm);
-      if (i + 1 < GLOW_RINGS) ring -= slab_transport(sqrt(sk * sk + b * b) * mm);
+      float d = sqrt(max(dot(u, u) + sk * sk - rho * rho, 0.0));
+      vec3 ring = slab_transport(sqrt(d * d + a * a) * mm);
+      if (i + 1 < GLOW_RINGS) ring -= slab_transport(sqrt(d * d + b * b) * mm);
       // e.z = 0 where no light enters (a select, not a branch: the quad's texels stay in step).
       sum += (e.z > 0.0 ? e.z * e.y * principled_entry(e.y) / float(GLOW_ANGLES) : 0.0) * max(ring, vec3(0.0));
     }
@@ -223,7 +295,8 @@ vec3 glow_rings_shared(ivec2 px, float depth) {
   vec3 P = surface_point(uv, stone ? depth : 0.5);
   vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  float s0 = transmission_thickness(P_in).x;
+  vec2 s_cos = transmission_thickness(P_in);
+  float s0 = s_cos.x;
   bool ok = stone && s0 > 0.0;
   // The taps only where some texel of the quad blends them in (gathered_transport: from
   // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
@@ -233,7 +306,7 @@ vec3 glow_rings_shared(ivec2 px, float depth) {
   chord = max(chord, quad_across_y(chord));
   if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
   int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
-  vec3 mine = glow_ring_quarter(P_in, s0, lane);
+  vec3 mine = glow_ring_quarter(P_in, s_cos, lane);
   bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);
   ok = ok && finite;
   vec4 a = ok ? vec4(mine, s0) : vec4(0.0, 0.0, 0.0, -1.0);  // chord -1: nothing to take
@@ -254,16 +327,15 @@ vec3 glow_rings_shared(ivec2 px, float depth) {
   return ok ? sum * (4.0 / taken) : vec3(0.0);
 }
 
-// The gather at the exit P_in (chord s0, entry cosine cos0), its rings given (glow_rings_shared).
+// The gather at the exit P_in (chord s0, entry cosine cos0), its centre disc and rings given
+// (glow_rings_shared, glow_ring_quarter). Below GLOW_FROM_MM of chord (rims) the straight model, at
+// the chord: there the plane's depth is not checked (slanted_frame runs with the taps only).
 vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   float mm = u_mm_per_unit;
   vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
   float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
   if (blend <= 0.0) return straight;  // most of a lit or thin picture
-  float S = glow_scale(s0);
-  vec3 sum = cos0 * principled_entry(cos0) *
-             (slab_transport(s0 * mm) - slab_transport(sqrt(s0 * s0 + 0.25 * S * S) * mm));
-  return mix(straight, sum + rings, blend);
+  return mix(straight, rings, blend);
 }
 
 // How far the surface the camera sees in the direction of `entry` (where the transmitted light

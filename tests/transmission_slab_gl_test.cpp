@@ -157,40 +157,37 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], expected[c], 0.06f * expected[c]) << "channel " << c;
 }
 
-// Light from behind at 70 degrees off the slab's normal: the face away from the light has
-// N.L = -0.34, where the Barre-Brisebois & Bouchard weight (1/2 - N.L/2)^2 the transmission had
-// until session 10 is 0.45. Facing away from the light, the slab's transport does not depend on
-// the exit's orientation, and the camera (head-on, in front) does not see the face the light
-// enters, so nothing else carries that light: the face must read albedo · cos · principled_entry(cos)
-// · T(s) / R_inf with the slanted chord s the light's map measures (the renderer's slab model), at
-// weight 1. With the old weight it reads 0.45 of that (checked: the test then fails). The slab is
-// 4 mm thick here (20 mm per unit), so that the slanted chord, 11.7 mm, lets light through in all
-// three channels.
-// Since session 11 the transmission at that chord is the gather over the light's map
-// (shaders/lighting.frag.glsl, gathered_transport), which for a slanted slab is not the chord's
-// model: it reads 0.73 / 0.95 / 1.28 of it (R G B; 0.0144 0.0074 0.0030). Neither is the truth:
-// Cycles' own render of this slab gives 0.063 0.045 0.032, since its walk enters cosine-weighted
-// whatever the light's slant, so a slanted slab passes what its thickness lets through
-// (docs/quality.md, "Eleventh session"). So the test now asks only what it was written for: the
-// face is not dimmed by the old weight, i.e. it reads between 0.65 and 1.5 of the chord's model in
-// every channel (the old weight: 0.33-0.58 of it).
-TEST_F(TransmissionSlab, SlantedLightBehindIsNotDimmedByTheExitsOrientation) {
-  Scene s = slabScene();
-  s.mm_per_unit = 20.0f;
-  const float theta = glm::radians(70.0f);
-  s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};  // the light travels along (-sin, 0, cos)
-  const ImageRGBF img = render(s);
-  const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
-  const float c = std::cos(theta);
-  const float m = 1.0f - c;
-  const float entry = c * (1.0f - 0.5f * m * m * m * m * m);  // cos · principled_entry(cos)
-  const float crossed = crossedMm() / kMmPerUnit * s.mm_per_unit / c;
-  const glm::vec3 expected = entry * s.material.base_color * slabTransport(s.material, crossed);
-  for (int ch = 0; ch < 3; ++ch) {
-    EXPECT_GT(expected[ch], 1e-4f) << "the slab must let some light through in channel " << ch;
-    EXPECT_GT(centre[ch], 0.65f * expected[ch]) << "channel " << ch;
-    EXPECT_LT(centre[ch], 1.5f * expected[ch]) << "channel " << ch;
+// Light from behind at theta off the slab's normal (the light's map sees the 4 mm slab slanted,
+// its chord 4 mm / cos theta: 11.7 mm at 70 degrees). Cycles' walk enters cosine-weighted about the
+// normal whatever the light's slant, so a slanted slab passes what its thickness lets through: its
+// own render of this slab at 70 degrees (docs/quality.md, "Eleventh session", slab70.json) reads
+// 0.063 0.045 0.032, within 6 % of cos · principled_entry(cos) · T(thickness), and 3-13x the
+// chord's model cos · principled_entry(cos) · T(chord). So the face away from the light must read
+// albedo · cos · principled_entry(cos) · T(s) / R_inf with s the slab's thickness (less the exit's
+// inward offset), at weight 1: the exit faces away from the light at N.L = -cos theta, where the
+// Barre-Brisebois & Bouchard weight the transmission had until session 10 gave 0.45 at 70 degrees.
+// Tolerance 10 %: what the gather's taps (a sum over 24 sectors) make of the plane. Controls
+// (checked): main's chord model (session 11) reads 0.22 / 0.17 / 0.09 of it at 70 degrees and
+// 0.72 / 0.70 / 0.69 at 45; the old weight 0.45 of it.
+TEST_F(TransmissionSlab, SlantedLightPassesWhatTheSlabsThicknessLetsThrough) {
+  for (float degrees : {0.0f, 45.0f, 60.0f, 70.0f}) {
+    Scene s = slabScene();
+    s.mm_per_unit = 20.0f;
+    const float theta = glm::radians(degrees);
+    s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};  // the light travels along (-sin, 0, cos)
+    const ImageRGBF img = render(s);
+    const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
+    const float c = std::cos(theta);
+    const float m = 1.0f - c;
+    const float entry = c * (1.0f - 0.5f * m * m * m * m * m);  // cos · principled_entry(cos)
+    const float thickness = crossedMm() / kMmPerUnit * s.mm_per_unit;
+    const glm::vec3 expected = entry * s.material.base_color * slabTransport(s.material, thickness);
+    for (int ch = 0; ch < 3; ++ch) {
+      EXPECT_GT(expected[ch], 1e-4f) << "the slab must let some light through in channel " << ch;
+      EXPECT_NEAR(centre[ch], expected[ch], 0.10f * expected[ch]) << degrees << " degrees, channel " << ch;
+    }
+    std::cout << "[          ] " << degrees << " degrees: centre " << centre.r << " " << centre.g << " " << centre.b
+              << ", model " << expected.r << " " << expected.g << " " << expected.b << " (ratio " << centre.r / expected.r << " "
+              << centre.g / expected.g << " " << centre.b / expected.b << ")\n";
   }
-  std::cout << "[          ] slanted: centre " << centre.r << " " << centre.g << " " << centre.b << ", model " << expected.r
-            << " " << expected.g << " " << expected.b << "\n";
 }

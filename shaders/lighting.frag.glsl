@@ -142,9 +142,9 @@ vec3 slab_transport(float s_mm) {
 // 3D than the straight chord on the sides, and none beyond the light's silhouette: the walk's
 // shorter paths round the curve (whiter light) and the lit area's finite extent (less red, whose
 // kernel is widest). Taps: a centre disc of radius S/2 read at the exit's own chord s0
-// (transmission_thickness: the bilinear entry), and GLOW_RINGS rings with boundaries S/2, S, 2S,
+// (transmission_thickness: the bilinear entry; on a flat slanted entry at the plane's depth, below), and GLOW_RINGS rings with boundaries S/2, S, 2S,
 // infinity of GLOW_ANGLES taps each at the ring's area-weighted middle radius (the last at 2.5 S),
-// S = max(s0, GLOW_MIN_RADIUS_MM): the kernel's width scales with the chord, so the
+// S = max(s0, GLOW_MIN_RADIUS_MM) (the plane's depth p for s0 on a flat slanted entry): the kernel's width scales with the chord, so the
 // pattern does too, and it moves continuously with s0. Each tap stands for its ring sector at the
 // depth difference it finds (an approximation: constant within the sector). Taps whose entry lies
 // beyond the exit (farther from the light) still count at their 3D distance.
@@ -155,9 +155,9 @@ vec3 slab_transport(float s_mm) {
 // in a sliver of the light's view, and the kernel gives them little.
 // Measured (docs/quality.md, "Eleventh session"): a 10 mm rod's glow 0.88 / 1.01 / 1.00 of a
 // random walk in the rod (the straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords
-// 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). Not right for a slanted flat slab
-// (TransmissionSlab.SlantedLight...): the taps' sectors are too coarse for entries whose depth
-// varies across them.
+// 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). On a slanted flat entry the circles and the
+// disc at s0 were too coarse (a 4 mm slab lit at 70 degrees: 0.22 / 0.16 / 0.09 of Cycles'): there
+// the rings lie on the entry's plane round the perpendicular's foot instead (slanted_frame).
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring

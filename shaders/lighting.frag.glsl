@@ -209,8 +209,8 @@ vec4 slanted_frame(vec3 P_in, float s0, float cos0, vec3 t1, vec3 t2, out float 
   float fit = abs(len - slope) / max(slope, 1e-6 * h);
   float bend = max(max(abs(e1.y - cos0), abs(e2.y - cos0)), abs(ef.y - cos0));
   float miss = abs(sqrt(dot(foot, foot) + sf * sf) - p) / max(p, 1e-6);
-  planar = smoothstep(0.9, 1.0, min(min(e1.z, e2.z), ef.z));  // not kept: no check that the plane holds
-  planar *= 1.0 + 0.0 * fit * bend * miss;
+  planar = smoothstep(0.9, 1.0, min(min(e1.z, e2.z), ef.z)) * (1.0 - smoothstep(0.05, 0.15, fit)) *
+           (1.0 - smoothstep(0.01, 0.05, bend)) * (1.0 - smoothstep(0.05, 0.15, miss));
   return vec4(planar * foot, dir);
 }
 

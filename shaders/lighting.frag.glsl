@@ -216,14 +216,9 @@ vec4 quad_across_y(vec4 v) {
 // (2 pixels) apart, small against S (2 mm and more). A quarter of the taps per texel: the lighting
 // pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
 // session"). Must run in uniform control flow (derivatives): main() calls it before any texel
-// returns, and background texels take part with nothing (a select keeps NaNs out).
-vec3 glow_rings_shared(ivec2 px, float depth) {
-  bool stone = depth < 1.0;
-  vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point(uv, stone ? depth : 0.5);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
-  vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  float s0 = transmission_thickness(P_in).x;
+// returns, and background texels take part with nothing (`stone` false; main() keeps NaNs out of
+// their P_in and s0 with a select).
+vec3 glow_rings_shared(bool stone, vec3 P_in, float s0) {
   bool ok = stone && s0 > 0.0;
   // The taps only where some texel of the quad blends them in (gathered_transport: from
   // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
@@ -289,7 +284,9 @@ float entry_hidden_by(vec3 entry) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) {
+// P_in and s_cos: the transmission's exit and transmission_thickness(P_in), computed once in main()
+// for this and glow_rings_shared.
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s_cos, vec3 glow_rings) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
@@ -299,7 +296,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
   // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
-  // surface's own depth sample out (no acne).
+  // surface's own depth sample out (no acne): P_in = P - N * (2 u_light_texel_world) (main()).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011). That weight,
   // (1/2 - N.L/2)^2, is 1/4 where the light grazes, so it also dimmed the rims of thin parts seen
@@ -314,8 +311,6 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) 
   // grazing-lit top (1.1x the threshold of tests/transmission_seams_gl_test.cpp); with the random
   // walk's transport the worst there is 0.74 of it, and against Cycles it raises SSIM in all ten
   // reference scenes (by up to 0.006; docs/quality.md, "Transmission from a random walk").
-  vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  vec2 s_cos = transmission_thickness(P_in);
   float s = s_cos.x;
   float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
@@ -351,17 +346,27 @@ void main() {
   ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
-  // Before any texel returns: the quad shares it (derivatives need all four in step).
+  bool stone = depth < 1.0;
+  // The surface point, normal and (marble) the transmission's exit and chord, once for the gather
+  // and marble_entering; background texels get a point at mid depth (a select: no NaNs into the
+  // quad's shared values).
+  vec3 P = surface_point(uv, stone ? depth : 0.5);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P_in = vec3(0.0);
+  vec2 s_cos = vec2(0.0);
   vec3 glow_rings = vec3(0.0);
-  if (u_mode == MODE_MARBLE) glow_rings = glow_rings_shared(px, depth);
-  if (depth >= 1.0) {
+  if (u_mode == MODE_MARBLE) {
+    P_in = P - N * (2.0 * u_light_texel_world);
+    s_cos = transmission_thickness(P_in);
+    // Before any texel returns: the quad shares it (derivatives need all four in step).
+    glow_rings = glow_rings_shared(stone, P_in, s_cos.x);
+  }
+  if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
     o_color = vec4(0.0);
     return;
   }
-  vec3 P = surface_point(uv, depth);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
@@ -370,7 +375,7 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L, px, glow_rings), linear_depth(depth, u_camera_near_far));
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

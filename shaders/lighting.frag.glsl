@@ -163,6 +163,16 @@ const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
+// The rings are skipped where they can add at most this share of the light the stone receives
+// where the light entered (E / pi at the centre's entry, the diffuse light a surface facing the
+// light there gets; glow_rings_shared states the bound). 2^-14: below half a step of the 8-bit
+// picture wherever that light displays at most white. The display's largest slope on dark values
+// is sRGB's 12.92 times at most 2 from the tone map's toe (display.glsl: the offset subtracts the
+// darkest channel), so 2^-14 of white shows as at most 12.92 * 2 * 2^-14 = 1.6e-3 < 0.5 / 255.
+// The transport through 46 mm of the default stone is below it (50 mm: 1.8e-5); 0 past tau 64.
+// tests/transmission_skip_gl_test.cpp replaces this line (-1: no skip; too large: its negative
+// control).
+const float GLOW_NEGLIGIBLE = 1.0 / 16384.0;
 
 // The gather's scale S for a chord s0 (scene units).
 float glow_scale(float s0) {
@@ -171,8 +181,9 @@ float glow_scale(float s0) {
 
 // This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
 // place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
-// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared).
-vec3 glow_ring_quarter(vec3 P_in, float s0, int lane) {
+// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared). Only the
+// first `rings` rings (glow_rings_shared leaves out the outer ones where they cannot matter).
+vec3 glow_ring_quarter(vec3 P_in, float s0, int lane, int rings) {
   float mm = u_mm_per_unit;
   float S = glow_scale(s0);
   const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
@@ -181,7 +192,7 @@ vec3 glow_ring_quarter(vec3 P_in, float s0, int lane) {
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < GLOW_RINGS; ++i) {
+  for (int i = 0; i < rings; ++i) {
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
     for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
       float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
@@ -227,8 +238,30 @@ vec3 glow_rings_shared(bool stone, vec3 P_in, float s0) {
   chord = max(chord, quad_across_x(chord));
   chord = max(chord, quad_across_y(chord));
   if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
+  // Nor the rings that cannot add a visible amount (GLOW_NEGLIGIBLE), from the outermost in: ring
+  // i's taps sit at kernel distances sqrt(sk^2 + a_i^2) >= a_i (a_i = S/2, S, 2S), T falls with
+  // distance, and each tap's weight (entry share x cosine x principled_entry, over GLOW_ANGLES) is
+  // at most 1 / GLOW_ANGLES; so ring i adds at most T(a_i) per channel to a texel's sum, the
+  // quad's quarters included (scaled by 4 / taken), with S the smallest among the quad's texels
+  // that gather (T(a_i) the largest). Rings i >= n are left out where the sum of their bounds,
+  // the tail from n on, is at most GLOW_NEGLIGIBLE: the outer ring from S ~ 13 mm of the default
+  // stone, the middle one from ~25 mm, all from ~46 mm. A count the quad shares (the quarters
+  // must read the same rings); mostly the thick body's shadowed side, whose long chords passed
+  // the test above though little crosses them.
+  float S = glow_scale(s0);
+  float mm = u_mm_per_unit;
+  vec3 t2 = slab_transport(2.0 * S * mm);
+  vec3 t1 = slab_transport(S * mm) + t2;
+  vec3 t0 = slab_transport(0.5 * S * mm) + t1;
+  vec4 tail = ok ? vec4(max(t0.r, max(t0.g, t0.b)), max(t1.r, max(t1.g, t1.b)), max(t2.r, max(t2.g, t2.b)), 0.0) *
+                       u_translucency
+                 : vec4(0.0);
+  tail = max(tail, quad_across_x(tail));
+  tail = max(tail, quad_across_y(tail));
+  int rings = tail.x <= GLOW_NEGLIGIBLE ? 0 : tail.y <= GLOW_NEGLIGIBLE ? 1 : tail.z <= GLOW_NEGLIGIBLE ? 2 : GLOW_RINGS;
+  if (rings == 0) return vec3(0.0);
   int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
-  vec3 mine = glow_ring_quarter(P_in, s0, lane);
+  vec3 mine = glow_ring_quarter(P_in, s0, lane, rings);
   bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);
   ok = ok && finite;
   vec4 a = ok ? vec4(mine, s0) : vec4(0.0, 0.0, 0.0, -1.0);  // chord -1: nothing to take

@@ -157,7 +157,9 @@ vec3 slab_transport(float s_mm) {
 // random walk in the rod (the straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords
 // 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). Not right for a slanted flat slab
 // (TransmissionSlab.SlantedLight...): the taps' sectors are too coarse for entries whose depth
-// varies across them.
+// varies across them. Where the chord is long the outer rings, or all, are left out: a bound on
+// what they can add, below GLOW_NEGLIGIBLE (glow_rings_shared; docs/performance.md, "Twelfth
+// session: the gather's rings bounded").
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring

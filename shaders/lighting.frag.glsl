@@ -157,24 +157,14 @@ vec3 slab_transport(float s_mm) {
 // random walk in the rod (the straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords
 // 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). Not right for a slanted flat slab
 // (TransmissionSlab.SlantedLight...): the taps' sectors are too coarse for entries whose depth
-// varies across them. Where the chord is long the outer rings, or all, are left out: a bound on
-// what they can add, below GLOW_NEGLIGIBLE (glow_rings_shared; docs/performance.md, "Twelfth
-// session: the gather's rings bounded").
+// varies across them. Where the chord is long the outer rings, or all, are left out where they
+// add exactly 0 (glow_rings_shared; docs/performance.md, "Twelfth session: the gather's rings
+// that add nothing").
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
-// The rings are skipped where they can add at most this share of the light the stone receives
-// where the light entered (E / pi at the centre's entry, the diffuse light a surface facing the
-// light there gets; glow_rings_shared states the bound). 2^-14: below half a step of the 8-bit
-// picture wherever that light displays at most white. The display's largest slope on dark values
-// is sRGB's 12.92 times at most 2 from the tone map's toe (display.glsl: the offset subtracts the
-// darkest channel), so 2^-14 of white shows as at most 12.92 * 2 * 2^-14 = 1.6e-3 < 0.5 / 255.
-// The transport through 46 mm of the default stone is below it (50 mm: 1.8e-5); 0 past tau 64.
-// tests/transmission_skip_gl_test.cpp replaces this line (-1: no skip; too large: its negative
-// control).
-const float GLOW_NEGLIGIBLE = 1.0 / 16384.0;
 
 // The gather's scale S for a chord s0 (scene units).
 float glow_scale(float s0) {
@@ -194,9 +184,13 @@ vec3 glow_ring_quarter(vec3 P_in, float s0, int lane, int rings) {
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < rings; ++i) {
+  // One loop over the taps, not rings x angles: llvmpipe runs both sides of an `if` under a lane
+  // mask, so a branch saves nothing; only a loop stops early, once no lane has an iteration left
+  // (after one iteration run with all lanes masked off). Tap by tap, that iteration is one tap.
+  for (int k = 0; k < GLOW_LANE_ANGLES * rings; ++k) {
+    int i = k / GLOW_LANE_ANGLES, j = k - i * GLOW_LANE_ANGLES;
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
-    for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
+    {
       float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
       vec3 q = P_in + rho * (cos(phi) * t1 + sin(phi) * t2);
       vec3 e = light_entry_at(q);
@@ -233,35 +227,29 @@ vec4 quad_across_y(vec4 v) {
 // their P_in and s0 with a select).
 vec3 glow_rings_shared(bool stone, vec3 P_in, float s0) {
   bool ok = stone && s0 > 0.0;
-  // The taps only where some texel of the quad blends them in (gathered_transport: from
-  // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
-  // and llvmpipe, which shades a block's lanes in step, skips it where the whole block is thin or lit.
-  vec4 chord = vec4(ok ? s0 : 0.0);
-  chord = max(chord, quad_across_x(chord));
-  chord = max(chord, quad_across_y(chord));
-  if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
-  // Nor the rings that cannot add a visible amount (GLOW_NEGLIGIBLE), from the outermost in: ring
-  // i's taps sit at kernel distances sqrt(sk^2 + a_i^2) >= a_i (a_i = S/2, S, 2S), T falls with
-  // distance, and each tap's weight (entry share x cosine x principled_entry, over GLOW_ANGLES) is
-  // at most 1 / GLOW_ANGLES; so ring i adds at most T(a_i) per channel to a texel's sum, the
-  // quad's quarters included (scaled by 4 / taken), with S the smallest among the quad's texels
-  // that gather (T(a_i) the largest). Rings i >= n are left out where the sum of their bounds,
-  // the tail from n on, is at most GLOW_NEGLIGIBLE: the outer ring from S ~ 13 mm of the default
-  // stone, the middle one from ~25 mm, all from ~46 mm. A count the quad shares (the quarters
-  // must read the same rings); mostly the thick body's shadowed side, whose long chords passed
-  // the test above though little crosses them.
+  // How many rings the quad reads (the quarters must read the same ones). None where no texel of
+  // the quad blends them in (gathered_transport: from GLOW_FROM_MM of chord on). Nor the rings
+  // that add exactly nothing: ring i's taps sit at kernel distances sqrt(sk^2 + a_i^2) >= a_i
+  // (a_i = S/2, S, 2S), and slab_transport is exactly 0 from tau = u_slab_tau_max on, so where
+  // a_i sigma_t >= tau_max in every channel each of the ring's terms is max(0 - 0, 0) = 0 and
+  // leaving it out changes no bit. A texel needs the rings with a_i sigma_t < tau_max for its
+  // own S; the quad reads the most any texel needs. For the default stone (sigma_t >= 2.19 / mm,
+  // tau_max 64): the outer ring left out from S = 14.6 mm, the middle one from 29 mm, all from
+  // 58 mm -- mostly the thick body's shadowed side, whose long chords pass the first test though
+  // nothing crosses them; for the references' principled-white stone, whose light goes farther,
+  // from longer chords.
+  // Counts and a loop, not branches: llvmpipe runs both sides of an `if` (and what follows a
+  // `return`) under a lane mask and saves nothing there; a loop stops once no lane has an
+  // iteration left (after one iteration with all lanes masked off).
   float S = glow_scale(s0);
   float mm = u_mm_per_unit;
-  vec3 t2 = slab_transport(2.0 * S * mm);
-  vec3 t1 = slab_transport(S * mm) + t2;
-  vec3 t0 = slab_transport(0.5 * S * mm) + t1;
-  vec4 tail = ok ? vec4(max(t0.r, max(t0.g, t0.b)), max(t1.r, max(t1.g, t1.b)), max(t2.r, max(t2.g, t2.b)), 0.0) *
-                       u_translucency
-                 : vec4(0.0);
-  tail = max(tail, quad_across_x(tail));
-  tail = max(tail, quad_across_y(tail));
-  int rings = tail.x <= GLOW_NEGLIGIBLE ? 0 : tail.y <= GLOW_NEGLIGIBLE ? 1 : tail.z <= GLOW_NEGLIGIBLE ? 2 : GLOW_RINGS;
-  if (rings == 0) return vec3(0.0);
+  float tau_inner = 0.5 * S * mm * min(u_slab_sigma_t_mm.r, min(u_slab_sigma_t_mm.g, u_slab_sigma_t_mm.b));
+  float tau_zero = u_slab_tau_max * 1.0001;  // a margin for the taps' own rounding of a_i sigma_t
+  float need = float(tau_inner < tau_zero) + float(2.0 * tau_inner < tau_zero) + float(4.0 * tau_inner < tau_zero);
+  vec4 most = ok ? vec4(s0, need, 0.0, 0.0) : vec4(0.0);
+  most = max(most, quad_across_x(most));
+  most = max(most, quad_across_y(most));
+  int rings = most.x * mm <= GLOW_FROM_MM ? 0 : int(most.y + 0.5);
   int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
   vec3 mine = glow_ring_quarter(P_in, s0, lane, rings);
   bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);

@@ -1,18 +1,18 @@
-// The transmission gather's skip (glow_rings_shared in shaders/lighting.frag.glsl): a 2 x 2 quad
-// leaves out its ring taps where they can add at most GLOW_NEGLIGIBLE of the light the stone
-// receives where the light entered, E / pi. Rendered with the skip and without it (the shader's
-// threshold line replaced by -1, through a shader folder of the test's own), the linear pictures
-// may differ by that much at most: GLOW_NEGLIGIBLE E / pi per pixel (the subsurface blur and the
-// post pass's upsample average the lighting pass's light, the albedo is below 1), plus two
-// half-float roundings of the pixel (the lighting and blur targets store half floats). Controls:
-// the skip does fire in this scene (its quads marked), and a threshold too large by far (1: every
-// quad skips) breaks the bound, so the measure sees a skip that cuts light.
+// The transmission gather's rings left out where they add nothing (glow_rings_shared in
+// shaders/lighting.frag.glsl): a 2 x 2 quad reads only the rings whose inner radius a_i keeps
+// the optical distance a_i sigma_t below the slab table's end (tau_max, past which
+// slab_transport is exactly 0), so leaving the others out must change no bit. Rendered with the
+// shader as built and with every ring read (its ring count replaced, through a shader folder of
+// the test's own), the linear pictures must be equal. Controls: rings are left out in this scene
+// (its quads marked), and a cut 8x too early (a_i sigma_t against tau_max / 8) changes the
+// picture, so the comparison sees a cut that drops light.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string>
 #include <unistd.h>
 
@@ -27,14 +27,14 @@ using namespace marble::test;
 namespace {
 
 constexpr int kSize = 128;
-constexpr float kNegligible = 1.0f / 16384.0f;  // GLOW_NEGLIGIBLE in shaders/lighting.frag.glsl
-const std::string kThresholdLine = "const float GLOW_NEGLIGIBLE = 1.0 / 16384.0;";
-const std::string kSkipLine = "if (rings == 0) return vec3(0.0);";
+const std::string kCountLine = "int rings = most.x * mm <= GLOW_FROM_MM ? 0 : int(most.y + 0.5);";
+const std::string kTauLine = "float tau_inner = 0.5 * S * mm *";
+const std::string kResultLine = "return ok ? sum * (4.0 / taken) : vec3(0.0);";
 
 // The built-in sphere (2 units across) at 30 mm per unit, lit from behind and a little above,
-// in the default stone (sigma_t 2.2-3.0 per mm, albedo 0.999): chords from 0 at the rims to about
-// 60 mm in the middle, so quads that drop all rings (chords of about 46 mm and more: T(23 mm)
-// < 2^-14) or the outer ones lie next to quads whose rings carry light.
+// in the default stone (sigma_t 2.19-3.01 per mm): chords from 0 at the rims to about 60 mm in
+// the middle, so quads that read no ring (S from 58 mm), one or two lie next to quads that read
+// all three.
 Scene sphereScene() {
   Scene s = backLitScene("test:sphere", 30.0f, kSize);
   s.material = Material{};
@@ -66,33 +66,21 @@ ImageRGBF renderWith(const std::filesystem::path& dir) {
   return img;
 }
 
-ImageRGBF renderWithThreshold(const std::string& value, const std::string& tag) {
-  const auto dir = changedLighting(kThresholdLine, "const float GLOW_NEGLIGIBLE = " + value + ";", tag);
-  EXPECT_FALSE(dir.empty()) << "lighting.frag.glsl no longer has the line: " << kThresholdLine;
+ImageRGBF renderChanged(const std::string& from, const std::string& to, const std::string& tag) {
+  const auto dir = changedLighting(from, to, tag);
+  EXPECT_FALSE(dir.empty()) << "lighting.frag.glsl no longer has the line: " << from;
   return renderWith(dir);
 }
 
-struct Excess {
-  int pixels = 0;      // channels beyond the bound
-  float worst = 0.0f;  // the largest |difference| / bound
-};
-
-// Channels of `a` and `b` further apart than `allowed` (absolute) + two half-float steps.
-Excess beyond(const ImageRGBF& a, const ImageRGBF& b, float allowed) {
-  Excess e;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    const float v = std::max(std::abs(a.pixels[i]), std::abs(b.pixels[i]));
-    const float bound = allowed + 2.0f * v / 1024.0f;
-    const float d = std::abs(a.pixels[i] - b.pixels[i]);
-    e.pixels += d > bound;
-    e.worst = std::max(e.worst, d / bound);
-  }
-  return e;
+ImageRGBF renderAllRings() {
+  return renderChanged(kCountLine, "int rings = most.x * mm <= GLOW_FROM_MM ? 0 : GLOW_RINGS;", "all");
 }
 
-// E / pi: the directional light's irradiance (colour x intensity; no falloff) over pi.
-float lightOverPi(const Scene& s) {
-  return std::max({s.light.color.r, s.light.color.g, s.light.color.b}) * s.light.intensity / 3.14159265f;
+// Channels of `a` and `b` more than `allowed` apart.
+int differing(const ImageRGBF& a, const ImageRGBF& b, float allowed) {
+  int n = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) n += std::abs(a.pixels[i] - b.pixels[i]) > allowed;
+  return n;
 }
 
 struct TransmissionSkip : ::testing::Test {
@@ -101,33 +89,29 @@ struct TransmissionSkip : ::testing::Test {
 
 }  // namespace
 
-TEST_F(TransmissionSkip, DiffersFromTheFullGatherByLessThanItsBound) {
-  const ImageRGBF skipped = renderWith({});
-  const ImageRGBF full = renderWithThreshold("-1.0", "full");
-  ASSERT_EQ(skipped.pixels.size(), full.pixels.size());
-  const Excess e = beyond(skipped, full, kNegligible * lightOverPi(sphereScene()));
-  EXPECT_EQ(e.pixels, 0) << "worst " << e.worst << " of the bound";
-  std::cout << "[          ] skip against the full gather: worst " << e.worst << " of the bound\n";
+TEST_F(TransmissionSkip, LeavingOutTheRingsThatAddNothingChangesNoBit) {
+  const ImageRGBF cut = renderWith({});
+  const ImageRGBF all = renderAllRings();
+  ASSERT_EQ(cut.pixels.size(), all.pixels.size());
+  EXPECT_EQ(differing(cut, all, 0.0f), 0);
 }
 
-// Not vacuous: the skip's branch is taken in this scene (its quads' rings set to 1 change the
-// picture), and it is not taken everywhere the gather runs (the negative control below differs).
-TEST_F(TransmissionSkip, SkipsSomeQuadsHere) {
-  const ImageRGBF skipped = renderWith({});
-  const auto dir = changedLighting(kSkipLine, "if (rings == 0) return vec3(1.0);", "marked");
-  ASSERT_FALSE(dir.empty()) << "lighting.frag.glsl no longer has the line: " << kSkipLine;
-  const ImageRGBF marked = renderWith(dir);
-  const Excess e = beyond(skipped, marked, 0.01f);
-  EXPECT_GT(e.pixels, 100) << "no quad of the sphere's thick middle took the skip (worst " << e.worst << ")";
+// Not vacuous: quads whose chords pass GLOW_FROM_MM read no ring in this scene (marked with
+// rings of 1, they change the picture).
+TEST_F(TransmissionSkip, SomeQuadsReadNoRingHere) {
+  const ImageRGBF cut = renderWith({});
+  const ImageRGBF marked = renderChanged(
+      kResultLine, "return ok ? sum * (4.0 / taken) + vec3(rings == 0 && most.x * mm > GLOW_FROM_MM ? 1.0 : 0.0) : vec3(0.0);",
+      "marked");
+  EXPECT_GT(differing(cut, marked, 0.01f), 100) << "no quad of the sphere's thick middle left its rings out";
 }
 
-// The negative control: a threshold of 1 skips every quad's rings (their sum is below 1 unless
-// the chord is near its 2 mm floor), which takes visible light from the sphere's middle chords;
-// the measure must see that beyond the bound.
-TEST_F(TransmissionSkip, ControlTooLargeAThresholdBreaksTheBound) {
-  const ImageRGBF tooLarge = renderWithThreshold("1.0", "too-large");
-  const ImageRGBF full = renderWithThreshold("-1.0", "full");
-  const Excess e = beyond(tooLarge, full, kNegligible * lightOverPi(sphereScene()));
-  EXPECT_GT(e.pixels, 100) << "the measure missed a skip that cuts the rings' light (worst " << e.worst << ")";
-  std::cout << "[          ] threshold 1: " << e.pixels << " channels beyond the bound, worst " << e.worst << "\n";
+// The negative control: rings cut where a_i sigma_t passes tau_max / 8 still carry light; the
+// comparison must see that.
+TEST_F(TransmissionSkip, ControlCutTooEarlyChangesThePicture) {
+  const ImageRGBF early = renderChanged(kTauLine, "float tau_inner = 4.0 * S * mm *", "early");
+  const ImageRGBF all = renderAllRings();
+  const int n = differing(early, all, 0.0f);
+  EXPECT_GT(n, 100) << "the comparison missed a cut that drops the rings' light";
+  std::cout << "[          ] cut 8x too early: " << n << " channels differ\n";
 }

@@ -174,7 +174,7 @@ float glow_scale(float s0) {
 // This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
 // place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
 // quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared). Only the
-// first `rings` rings (glow_rings_shared leaves out the outer ones where they cannot matter).
+// first `rings` rings (glow_rings_shared leaves out the outer ones where they add nothing).
 vec3 glow_ring_quarter(vec3 P_in, float s0, int lane, int rings) {
   float mm = u_mm_per_unit;
   float S = glow_scale(s0);
@@ -184,9 +184,8 @@ vec3 glow_ring_quarter(vec3 P_in, float s0, int lane, int rings) {
   vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(L, t1);
   vec3 sum = vec3(0.0);
-  // One loop over the taps, not rings x angles: llvmpipe runs both sides of an `if` under a lane
-  // mask, so a branch saves nothing; only a loop stops early, once no lane has an iteration left
-  // (after one iteration run with all lanes masked off). Tap by tap, that iteration is one tap.
+  // One loop over the taps, not rings x angles, to the count the quad reads: llvmpipe stops a loop
+  // once none of a block's lanes has an iteration left (glow_rings_shared).
   for (int k = 0; k < GLOW_LANE_ANGLES * rings; ++k) {
     int i = k / GLOW_LANE_ANGLES, j = k - i * GLOW_LANE_ANGLES;
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
@@ -238,9 +237,10 @@ vec3 glow_rings_shared(bool stone, vec3 P_in, float s0) {
   // 58 mm -- mostly the thick body's shadowed side, whose long chords pass the first test though
   // nothing crosses them; for the references' principled-white stone, whose light goes farther,
   // from longer chords.
-  // Counts and a loop, not branches: llvmpipe runs both sides of an `if` (and what follows a
-  // `return`) under a lane mask and saves nothing there; a loop stops once no lane has an
-  // iteration left (after one iteration with all lanes masked off).
+  // A count, and the taps in one loop to it: llvmpipe shades a block's lanes in step under a lane
+  // mask, and stops the loop once none of them has a tap left, so a block saves the taps all its
+  // quads leave out (docs/performance.md, "Twelfth session: the gather's rings that add nothing").
+  // No branch: every texel goes on to the exchange below (its derivatives need the quad in step).
   float S = glow_scale(s0);
   float mm = u_mm_per_unit;
   float tau_inner = 0.5 * S * mm * min(u_slab_sigma_t_mm.r, min(u_slab_sigma_t_mm.g, u_slab_sigma_t_mm.b));

@@ -176,6 +176,49 @@ struct SampleArrays {
   }
 };
 
+// pat_grain(pat_texel_pos(P, p) * 0.6667f, 0x3c6ef372u) at the row's points p = origin + i * step
+// (pat_vein_shade_seen's grain), for a row along x: there y and z are the same at every point,
+// so the grain is one octave of value noise along x, a lerp between lattice columns (as the
+// turbulence's octaves): the columns of the cells the row spans once each, then each point's
+// lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
+// are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
+// counts up with the cell and wraps at 2^20 (latticeProducts' runs), its corner sums and lerps
+// are value3ColumnsFromProducts'. False where the row is not along x, the lanes do not run, the
+// cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
+bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
+  if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
+  const float texel = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
+  xs.resize(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i)
+    xs[static_cast<size_t>(i)] = ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f;
+  // y and z: those of point 0 (origin.y + i * 0 is the same for every i).
+  const glm::vec3 p0 = patglsl::pat_texel_pos(P, origin + 0.0f * step) * 0.6667f;
+  float xmin = 0.0f, xmax = 0.0f;
+  if (!patlanes::finiteRange(xs.data(), count, &xmin, &xmax)) return false;
+  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };
+  if (!inRange(xmin) || !inRange(xmax) || !inRange(p0.y) || !inRange(p0.z)) return false;
+  const float iy = patglsl::floor(p0.y), iz = patglsl::floor(p0.z);
+  const float fy = p0.y - iy, fz = p0.z - iz;
+  const uint32_t y0 = static_cast<uint32_t>(iy + 1048576.0f) & 1048575u, y1 = (y0 + 1u) & 1048575u;
+  const uint32_t z0 = static_cast<uint32_t>(iz + 1048576.0f) & 1048575u, z1 = (z0 + 1u) & 1048575u;
+  const uint32_t seedHash = 0x3c6ef372u;  // pat_vein_shade_seen's grain salt
+  const uint32_t h00 = y0 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash, h10 = y1 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash;
+  const uint32_t h01 = y0 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash, h11 = y1 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash;
+  const int32_t lo = static_cast<int32_t>(patglsl::floor(xmin)), hi = static_cast<int32_t>(patglsl::floor(xmax));
+  const int64_t span = static_cast<int64_t>(hi) - lo + 2;
+  if (span > 2 * static_cast<int64_t>(count) + 16) return false;
+  thread_local std::vector<uint32_t> products;
+  thread_local std::vector<float> columns;
+  products.resize(static_cast<size_t>(span));
+  columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
+  patlanes::latticeProducts(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span,
+                            products.data());
+  patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz, columns.data());
+  const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
+  patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
+  return true;
+}
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
@@ -190,8 +233,12 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
   auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
+  thread_local std::vector<float> grainX, grain;
+  grain.resize(static_cast<size_t>(std::max(count, 0)));
+  const bool haveGrain = rowGrain(P, origin, step, count, grainX, grain.data());
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
+    if (haveGrain) b.grain = grain.data() + i;
     // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
     // operations), in loops the compiler vectorizes.
     for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;

@@ -70,8 +70,7 @@ vec3 env_brdf_approx(vec3 F0, float roughness, float NoV) {
 // or false outside the map (nothing there casts a shadow). The point is first pushed out along
 // its normal, against self-shadow acne.
 bool shadow_lookup(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out vec3 uvz) {
-  vec3 Lv = light_vector(P); float c = clamp(abs(dot(N, Lv)), 0.05, 1.0);
-  vec4 clip = light_view_proj * vec4(P + Lv * (2.0 * texel_world * sqrt(1.0 - c * c) / c) + N * (0.5 * texel_world), 1.0);
+  vec4 clip = light_view_proj * vec4(P + N * (2.0 * texel_world), 1.0);
   vec3 ndc = clip.xyz / clip.w;
   uvz = ndc * 0.5 + 0.5;
   uvz.z -= 1e-4;

@@ -195,7 +195,7 @@ TEST_F(Bounce, NearTheFoldTheClosestEmittersCount) {
   // Close above the plate most of the face's bounce comes from the plate's strip beside the wall,
   // whose projection in the light's view lies within a few texels of the probe's own. The gather's
   // innermost disk is one sample at the probe's projection, which reads the probe's own surface
-  // (no light to itself): with that disk 4 texels of the map wide (four rings, session 11) the
+  // (no light to itself): with that disk 4 texels of the map in radius (four rings, session 11) the
   // strip was lost and the probe got 0.64 of the integral at 0.1 above the plate, 0.69 at 0.15;
   // with the rings reaching in to one texel (six, bounce.glsl's BOUNCE_RINGS) 0.84 and 0.84.
   // Allowed 25 %.

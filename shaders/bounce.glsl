@@ -45,12 +45,12 @@ layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
 
 // Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
 // width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
-// Its one sample
-// reads the receiver's own surface, which sends it nothing, so whatever lies inside that disk is
-// lost: with four rings (before session 12) its radius was 4 texels, and the emitters just beside a
-// crease's fold (the wall's near strip of the corner, a coil's neighbour) were left out: the
-// dragon's bounce was 0.65 of Cycles' first bounce, 0.82 with six (docs/quality.md, "Twelfth
-// session: the front- and side-lit scenes"). Below a texel the map holds nothing finer to read.
+// Its one sample reads the receiver's own surface, which sends it nothing, so whatever lies inside
+// that disk is lost: with four rings (before session 12) its radius was 4 texels, and the
+// emitters just beside a crease's fold (the wall's near strip of the corner, a coil's neighbour)
+// were left out: the dragon's bounce was 0.65 of Cycles' first bounce, 0.82 with six
+// (docs/quality.md, "Twelfth session: the front- and side-lit scenes"). Below a texel the map
+// holds nothing finer to read.
 const int BOUNCE_RINGS = 6;
 const int BOUNCE_ANGLES = 8;
 const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)

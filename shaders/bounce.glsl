@@ -24,9 +24,10 @@
 // - one bounce only (Cycles follows every bounce: ~albedo^2 more on deep creases, ~0.7 of the
 //   first bounce's again for albedo 0.85 where the bounce is large);
 // - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
-//   projection in the light's view: a centre sample for the innermost disk and BOUNCE_RINGS rings,
+//   projection in the light's view: a centre sample for the innermost disk (one texel of the map:
+//   BOUNCE_RINGS) and BOUNCE_RINGS rings,
 //   each twice the radius of the one inside it, of BOUNCE_ANGLES samples at even angles (each ring
-//   turned half a step from the last), each sample standing for its ring sector (read
+//   turned 0.382 of a step from the last), each sample standing for its ring sector (read
 //   BOUNCE_LOD_FINER levels finer than the level of the sector's size, since session 9): the disk
 //   is covered without gaps, finely near the point (where the emitters that matter most are; D&S
 //   2005 also sample densest there) and coarsely far away. The pattern is turned by a quarter of
@@ -42,7 +43,15 @@
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
 
-const int BOUNCE_RINGS = 4;
+// Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
+// width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
+// Its one sample reads the receiver's own surface, which sends it nothing, so whatever lies inside
+// that disk is lost: with four rings (before session 12) its radius was 4 texels, and the
+// emitters just beside a crease's fold (the wall's near strip of the corner, a coil's neighbour)
+// were left out: the dragon's bounce was 0.65 of Cycles' first bounce, 0.82 with six
+// (docs/quality.md, "Twelfth session: the front- and side-lit scenes"). Below a texel the map
+// holds nothing finer to read.
+const int BOUNCE_RINGS = 6;
 const int BOUNCE_ANGLES = 8;
 const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // Each sample is read BOUNCE_LOD_FINER mipmap levels finer than the level whose texel is its whole
@@ -58,7 +67,7 @@ const float BOUNCE_LOD_FINER = 3.0;
 // The glossy emitters' lobe: the light a sample reflects off its surface (Fresnel F of the entry
 // cosine, its weight a beside the normal: light_depth.frag.glsl) leaves around the mirror direction
 // of the sample's mean normal as a normalized Phong lobe (m + 1) / (2 PI) cos^m, m = BOUNCE_GLOSS.
-// Far wider than the stone's own GGX lobe (roughness 0.15: a few degrees): 33 samples over half the
+// Far wider than the stone's own GGX lobe (roughness 0.15: a few degrees): 49 samples over half the
 // light's map cannot resolve a sharp lobe, and across one sample (up to a quarter of the map) the
 // curved stone's normals spread the reflection over tens of degrees anyway. The flux is right
 // (Schlick's F, Cycles' Principled specular with Specular = F0 / 0.08), its direction smeared.
@@ -69,7 +78,7 @@ const float BOUNCE_GLOSS = 4.0;
 // BOUNCE_GLOSS around the mirror direction R of the view at P (as f cos: its integral over the
 // sphere is 1, so the layer reflects F of an even surround, F Schlick's at the view's cosine,
 // applied by bounce_upsample.glsl). Cycles' lobe is GGX at alpha = roughness^2 = 0.0225, a few
-// degrees: the same 33 samples cannot resolve it, and the curved receivers' normals spread the
+// degrees: the same 49 samples cannot resolve it, and the curved receivers' normals spread the
 // image they mirror over tens of degrees within one gather texel anyway (the emitters' lobe above,
 // the same reasoning and exponent). A sharper lobe (m = 16) measured worse (buddha-front relative
 // RMSE 0.174 -> 0.192, on a first version with the mirrored part PI too strong). The emitters' own
@@ -137,7 +146,10 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring + 1)) / float(BOUNCE_ANGLES);
+      // Each ring turned 0.381966 of a step from the one inside it, counted so that the outer four
+      // rings keep the angles they had when there were four (session 11): the new inner two add
+      // to the pattern without moving the rest, whose turn alone moves the scores (bounce_gather).
+      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring + 1 + 4 - BOUNCE_RINGS)) / float(BOUNCE_ANGLES);
       sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
     }
   }

@@ -158,6 +158,8 @@ vec3 slab_transport(float s_mm) {
 // 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). On a slanted flat entry the circles and the
 // disc at s0 were too coarse (a 4 mm slab lit at 70 degrees: 0.22 / 0.16 / 0.09 of Cycles'): there
 // the rings lie on the entry's plane round the perpendicular's foot instead (slanted_frame).
+// Where the chord is long the outer rings, or all, are left out where they add exactly 0
+// (glow_rings_shared; docs/performance.md, "Twelfth session: the gather's rings that add nothing").
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
@@ -222,25 +224,21 @@ float slanted_depth(float s0, float cos0, float planar) {
 
 // This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
 // place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
-// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared).
-// The rings lie on the entry's plane round the perpendicular's foot (slanted_frame): tap j at ring
-// radius rho finds its entry at 3D distance r_j, and counts as the plane's ring at depth
+// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared). Only the
+// first `rings` rings (glow_rings_shared leaves out the outer ones where they add nothing); the
+// centre disc only where the quad `gathers` (its result is blended in nowhere else).
+// The rings lie on the entry's plane round the perpendicular's foot (slanted_frame's `frame` and
+// `planar`; p = slanted_depth, S = glow_scale(p), t1, t2 the light's plane: all from
+// glow_rings_shared): tap j at ring radius rho finds its entry at 3D distance r_j, and counts as the plane's ring at depth
 // d_j = sqrt(r_j^2 - rho^2) (= p on a flat slab, so the rings telescope to T(p) there as they do
 // to T(s0) at normal incidence). Its weight is the light entering per unit of the light's
 // cross-section, principled_entry(cos_j), times the light's cross-section of the plane's ring,
 // cos0 times its area (the eleventh session's weight cos_j principled_entry(cos_j) counted the
 // slant twice: a slanted slab got cos^2).
-vec3 glow_ring_quarter(vec3 P_in, vec2 s_cos, int lane) {
-  float s0 = s_cos.x, cos0 = s_cos.y;
+vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2, vec4 frame, float planar,
+                       int lane, bool gathers, int rings) {
   const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
   const float radii[3] = float[3](0.7906, 1.5811, 2.5);  // sqrt((a^2 + b^2) / 2), the last 2.5
-  vec3 L = light_vector(P_in);
-  vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  vec3 t2 = cross(L, t1);
-  float planar;
-  vec4 frame = slanted_frame(P_in, s0, cos0, t1, t2, planar);
-  float p = slanted_depth(s0, cos0, planar);
-  float S = glow_scale(p);
   // The light-plane circles shrunk by `shrink` along g: a linear map, so the 8 sectors of a ring
   // keep equal areas, and the identity wherever planar = 0, whatever g's direction (a pattern
   // turned with g would jump where g turns: seams on the torus under a point light).
@@ -248,12 +246,19 @@ vec3 glow_ring_quarter(vec3 P_in, vec2 s_cos, int lane) {
   mat2 squash = mat2(1.0) - (1.0 - shrink) * outerProduct(frame.zw, frame.zw);
   // The centre disc (radius S / 2 round the foot, at depth p), a quarter of it here: the quad's
   // sharing adds four quarters (or scales what it takes by 4 / quarters taken) as for the rings.
+  // A branch the quad takes together (`gathers` is the quad's, glow_rings_shared).
   float mm = u_mm_per_unit;
-  vec3 sum = 0.25 * cos0 * principled_entry(cos0) *
-             (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
-  for (int i = 0; i < GLOW_RINGS; ++i) {
+  vec3 sum = vec3(0.0);
+  if (gathers) {
+    sum = 0.25 * cos0 * principled_entry(cos0) *
+          (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
+  }
+  // One loop over the taps, not rings x angles, to the count the quad reads: llvmpipe stops a loop
+  // once none of a block's lanes has an iteration left (glow_rings_shared).
+  for (int k = 0; k < GLOW_LANE_ANGLES * rings; ++k) {
+    int i = k / GLOW_LANE_ANGLES, j = k - i * GLOW_LANE_ANGLES;
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
-    for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
+    {
       float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
       vec2 u = frame.xy + rho * (squash * vec2(cos(phi), sin(phi)));
       vec3 q = P_in + u.x * t1 + u.y * t2;
@@ -288,25 +293,58 @@ vec4 quad_across_y(vec4 v) {
 // (2 pixels) apart, small against S (2 mm and more). A quarter of the taps per texel: the lighting
 // pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
 // session"). Must run in uniform control flow (derivatives): main() calls it before any texel
-// returns, and background texels take part with nothing (a select keeps NaNs out).
-vec3 glow_rings_shared(ivec2 px, float depth) {
-  bool stone = depth < 1.0;
-  vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point(uv, stone ? depth : 0.5);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
-  vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  vec2 s_cos = transmission_thickness(P_in);
-  float s0 = s_cos.x;
+// returns, and background texels take part with nothing (`stone` false; main() keeps NaNs out of
+// their P_in and s_cos with a select). s_cos: transmission_thickness(P_in), from main().
+vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos) {
+  float s0 = s_cos.x, cos0 = s_cos.y;
   bool ok = stone && s0 > 0.0;
-  // The taps only where some texel of the quad blends them in (gathered_transport: from
-  // GLOW_FROM_MM of chord on); a branch the quad takes together, so its derivatives stay defined,
-  // and llvmpipe, which shades a block's lanes in step, skips it where the whole block is thin or lit.
+  float mm = u_mm_per_unit;
+  // The quad `gathers` where some texel of it blends the gather in (gathered_transport: from
+  // GLOW_FROM_MM of chord on); only there the entry plane is looked for (slanted_frame: three
+  // entry reads) and the centre disc read. A branch the quad takes together, so its derivatives
+  // stay defined, and llvmpipe, which shades a block's lanes in step, skips it where the whole
+  // block is thin or lit.
   vec4 chord = vec4(ok ? s0 : 0.0);
   chord = max(chord, quad_across_x(chord));
   chord = max(chord, quad_across_y(chord));
-  if (chord.x * u_mm_per_unit <= GLOW_FROM_MM) return vec3(0.0);
+  bool gathers = chord.x * mm > GLOW_FROM_MM;
+  vec3 L = light_vector(P_in);
+  vec3 t1 = normalize(cross(L, abs(L.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(L, t1);
+  float planar = 0.0;
+  vec4 frame = vec4(0.0, 0.0, 1.0, 0.0);
+  if (gathers) frame = slanted_frame(P_in, s0, cos0, t1, t2, planar);
+  float p = slanted_depth(s0, cos0, planar);
+  float S = glow_scale(p);
+  // How many rings the quad reads (the quarters must read the same ones). None where the quad
+  // does not gather. Nor the rings that add exactly nothing: ring i's taps sit at kernel distances
+  // sqrt(d_j^2 + a_i^2) >= a_i (a_i = S/2, S, 2S), whatever the slanted placement: d_j (the
+  // plane's depth the tap finds, glow_ring_quarter) is a square root, so >= 0, and a_i is the
+  // same a_i = bounds[i] S, S = glow_scale(p) of the slanted depth p <= s0, that the taps use (the
+  // shrink and the foot move where a tap reads the entry, not its kernel distance's lower bound).
+  // slab_transport is exactly 0 from tau = u_slab_tau_max on, so where a_i sigma_t >= tau_max in
+  // every channel each of the ring's terms is max(0 - 0, 0) = 0 and leaving it out changes no
+  // bit. The bound must use this S, not glow_scale(s0): on a slanted flat entry p = s0 cos0 and S
+  // is smaller, so rings that glow_scale(s0) would leave out still carry light there. A texel
+  // needs the rings with a_i sigma_t < tau_max for its own S; the quad reads the most any texel
+  // needs. For the default stone (sigma_t >= 2.19 / mm, tau_max 64): the outer ring left out from
+  // S = 14.6 mm, the middle one from 29 mm, all from 58 mm -- mostly the thick body's shadowed
+  // side, whose long chords pass the first test though nothing crosses them; for the references'
+  // principled-white stone, whose light goes farther, from longer chords. The centre disc is no
+  // ring: it is read wherever the quad gathers.
+  // A count, and the taps in one loop to it: llvmpipe shades a block's lanes in step under a lane
+  // mask, and stops the loop once none of them has a tap left, so a block saves the taps all its
+  // quads leave out (docs/performance.md, "Twelfth session: the gather's rings that add nothing").
+  // No branch: every texel goes on to the exchange below (its derivatives need the quad in step).
+  float tau_inner = 0.5 * S * mm * min(u_slab_sigma_t_mm.r, min(u_slab_sigma_t_mm.g, u_slab_sigma_t_mm.b));
+  float tau_zero = u_slab_tau_max * 1.0001;  // a margin for the taps' own rounding of a_i sigma_t
+  float need = float(tau_inner < tau_zero) + float(2.0 * tau_inner < tau_zero) + float(4.0 * tau_inner < tau_zero);
+  vec4 most = ok ? vec4(s0, need, 0.0, 0.0) : vec4(0.0);
+  most = max(most, quad_across_x(most));
+  most = max(most, quad_across_y(most));
+  int rings = most.x * mm <= GLOW_FROM_MM ? 0 : int(most.y + 0.5);
   int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
-  vec3 mine = glow_ring_quarter(P_in, s_cos, lane);
+  vec3 mine = glow_ring_quarter(P_in, cos0, p, S, t1, t2, frame, planar, lane, gathers, rings);
   bool finite = !any(isnan(mine)) && !any(isinf(mine)) && !any(isnan(P_in)) && !isnan(s0);
   ok = ok && finite;
   vec4 a = ok ? vec4(mine, s0) : vec4(0.0, 0.0, 0.0, -1.0);  // chord -1: nothing to take
@@ -329,7 +367,7 @@ vec3 glow_rings_shared(ivec2 px, float depth) {
 
 // The gather at the exit P_in (chord s0, entry cosine cos0), its centre disc and rings given
 // (glow_rings_shared, glow_ring_quarter). Below GLOW_FROM_MM of chord (rims) the straight model, at
-// the chord: there the plane's depth is not checked (slanted_frame runs with the taps only).
+// the chord: there the plane's depth is not checked (slanted_frame runs in the gather's quads only).
 vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   float mm = u_mm_per_unit;
   vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
@@ -361,7 +399,9 @@ float entry_hidden_by(vec3 entry) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) {
+// P_in and s_cos: the transmission's exit and transmission_thickness(P_in), computed once in main()
+// for this and glow_rings_shared.
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s_cos, vec3 glow_rings) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
@@ -371,7 +411,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
   // here, carried by the random walk's slab transport (slab_transport). An inward offset keeps the
-  // surface's own depth sample out (no acne).
+  // surface's own depth sample out (no acne): P_in = P - N * (2 u_light_texel_world) (main()).
   // It reaches the side facing away from the light; facing the light, the direct term
   // already carries that light (weight after Barre-Brisebois & Bouchard 2011). That weight,
   // (1/2 - N.L/2)^2, is 1/4 where the light grazes, so it also dimmed the rims of thin parts seen
@@ -386,8 +426,6 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 glow_rings) 
   // grazing-lit top (1.1x the threshold of tests/transmission_seams_gl_test.cpp); with the random
   // walk's transport the worst there is 0.74 of it, and against Cycles it raises SSIM in all ten
   // reference scenes (by up to 0.006; docs/quality.md, "Transmission from a random walk").
-  vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  vec2 s_cos = transmission_thickness(P_in);
   float s = s_cos.x;
   float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
@@ -423,17 +461,27 @@ void main() {
   ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
   float depth = texelFetch(u_depth, px, 0).r;
-  // Before any texel returns: the quad shares it (derivatives need all four in step).
+  bool stone = depth < 1.0;
+  // The surface point, normal and (marble) the transmission's exit and chord, once for the gather
+  // and marble_entering; background texels get a point at mid depth (a select: no NaNs into the
+  // quad's shared values).
+  vec3 P = surface_point(uv, stone ? depth : 0.5);
+  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P_in = vec3(0.0);
+  vec2 s_cos = vec2(0.0);
   vec3 glow_rings = vec3(0.0);
-  if (u_mode == MODE_MARBLE) glow_rings = glow_rings_shared(px, depth);
-  if (depth >= 1.0) {
+  if (u_mode == MODE_MARBLE) {
+    P_in = P - N * (2.0 * u_light_texel_world);
+    s_cos = transmission_thickness(P_in);
+    // Before any texel returns: the quad shares it (derivatives need all four in step).
+    glow_rings = glow_rings_shared(stone, P_in, s_cos);
+  }
+  if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
     o_color = vec4(0.0);
     return;
   }
-  vec3 P = surface_point(uv, depth);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
@@ -442,7 +490,7 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L, px, glow_rings), linear_depth(depth, u_camera_near_far));
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings), linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

@@ -176,6 +176,49 @@ struct SampleArrays {
   }
 };
 
+// pat_grain(pat_texel_pos(P, p) * 0.6667f, 0x3c6ef372u) at the row's points p = origin + i * step
+// (pat_vein_shade_seen's grain), for a row along x: there y and z are the same at every point,
+// so the grain is one octave of value noise along x, a lerp between lattice columns (as the
+// turbulence's octaves): the columns of the cells the row spans once each, then each point's
+// lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
+// are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
+// counts up with the cell and wraps at 2^20 (latticeProducts' runs), its corner sums and lerps
+// are value3ColumnsFromProducts'. False where the row is not along x, the lanes do not run, the
+// cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
+bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
+  if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
+  const float texel = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
+  xs.resize(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i)
+    xs[static_cast<size_t>(i)] = ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f;
+  // y and z: those of point 0 (origin.y + i * 0 is the same for every i).
+  const glm::vec3 p0 = patglsl::pat_texel_pos(P, origin + 0.0f * step) * 0.6667f;
+  float xmin = 0.0f, xmax = 0.0f;
+  if (!patlanes::finiteRange(xs.data(), count, &xmin, &xmax)) return false;
+  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };
+  if (!inRange(xmin) || !inRange(xmax) || !inRange(p0.y) || !inRange(p0.z)) return false;
+  const float iy = patglsl::floor(p0.y), iz = patglsl::floor(p0.z);
+  const float fy = p0.y - iy, fz = p0.z - iz;
+  const uint32_t y0 = static_cast<uint32_t>(iy + 1048576.0f) & 1048575u, y1 = (y0 + 1u) & 1048575u;
+  const uint32_t z0 = static_cast<uint32_t>(iz + 1048576.0f) & 1048575u, z1 = (z0 + 1u) & 1048575u;
+  const uint32_t seedHash = 0x3c6ef372u;  // pat_vein_shade_seen's grain salt
+  const uint32_t h00 = y0 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash, h10 = y1 * 0xd8163841u + z0 * 0xcb1ab31fu + seedHash;
+  const uint32_t h01 = y0 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash, h11 = y1 * 0xd8163841u + z1 * 0xcb1ab31fu + seedHash;
+  const int32_t lo = static_cast<int32_t>(patglsl::floor(xmin)), hi = static_cast<int32_t>(patglsl::floor(xmax));
+  const int64_t span = static_cast<int64_t>(hi) - lo + 2;
+  if (span > 2 * static_cast<int64_t>(count) + 16) return false;
+  thread_local std::vector<uint32_t> products;
+  thread_local std::vector<float> columns;
+  products.resize(static_cast<size_t>(span));
+  columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
+  patlanes::latticeProducts(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span,
+                            products.data());
+  patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz, columns.data());
+  const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
+  patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
+  return true;
+}
+
 template <typename Samples>
 __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count,
                                        glm::vec3* out, float* valueOut, Samples samples) {
@@ -190,8 +233,12 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
   auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
+  thread_local std::vector<float> grainX, grain;
+  grain.resize(static_cast<size_t>(std::max(count, 0)));
+  const bool haveGrain = rowGrain(P, origin, step, count, grainX, grain.data());
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
+    if (haveGrain) b.grain = grain.data() + i;
     // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
     // operations), in loops the compiler vectorizes.
     for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;
@@ -649,12 +696,78 @@ float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float 
 
 }  // namespace
 
+namespace {
+
+// veinTurbulenceRow on AVX2: every octave's table of columns first, then each point's octaves in
+// one pass (patlanes::turbulenceOctaves). A point's cell in an octave, floor(x * inv), does not
+// decrease as x grows (a product with inv > 0, correctly rounded, and floor are monotonic), so
+// the cells of the row's lowest and highest x bound every point's: the tables are sized from
+// those two before any point is looked at. The tables' columns are accumulateOctave's (the same
+// lattice indices, run by run, and pat_value3_column's arithmetic), so the sums are
+// accumulateTurbulence3's bit for bit. False (nothing written) where a table would be much
+// longer than the row (a step of several cells: accumulateOctave walks those) or x is not
+// finite or beyond 2^30 cells.
+bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, float* out) {
+  if (count <= 0 || !patlanes::lanesAvailable()) return false;
+  float xmin = 0.0f, xmax = 0.0f;
+  if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) return false;
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  const float minSize = patglsl::pat_vein_min_octave(P);
+  thread_local std::vector<float> columns;
+  thread_local std::vector<uint32_t> products;
+  thread_local std::vector<patlanes::OctaveTable> octaves;
+  thread_local std::vector<size_t> starts;
+  octaves.clear();
+  starts.clear();
+  size_t used = 0;
+  float weight = 0.0f;
+  auto cellOf = [](float px) {
+    const int32_t n = static_cast<int32_t>(px);
+    return n - static_cast<int32_t>(px < static_cast<float>(n));
+  };
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
+    const float pmin = xmin * inv, pmax = xmax * inv;
+    if (!(std::fabs(pmin) < 1073741824.0f && std::fabs(pmax) < 1073741824.0f)) return false;
+    const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
+    const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
+    if (span > 2 * static_cast<int64_t>(count) + 16) return false;
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    // accumulateTurbulence3's row hashes for this octave.
+    const float py = y * inv, pz = z * inv;
+    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+    const float fy = py - iy, fz = pz - iz;
+    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
+    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
+    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
+    // The lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's runs), as the
+    // products uint(w) * K of pat_hash_x: integers below 2^24, so uint(w) is the run's integer.
+    products.resize(static_cast<size_t>(span));
+    patlanes::latticeProducts(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
+                              static_cast<int64_t>(period), span, products.data());
+    const size_t start = used;
+    used += static_cast<size_t>(span) + simd::kLanes;  // 8 readable floats past the last column
+    if (columns.size() < used) columns.resize(used);
+    patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz,
+                                        columns.data() + start);
+    starts.push_back(start);
+    octaves.push_back({nullptr, lo, inv, size});
+    weight += size;
+  }
+  for (size_t o = 0; o < octaves.size(); ++o) octaves[o].columns = columns.data() + starts[o];
+  patlanes::turbulenceOctaves(xs, count, octaves.data(), static_cast<int>(octaves.size()), weight, out);
+  return true;
+}
+
+}  // namespace
+
 void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
   const PatParams P = toParams(m);
   if (P.basis != patglsl::PAT_BASIS_VALUE) {
     for (int i = 0; i < count; ++i) out[i] = patglsl::pat_vein_turbulence3(P, glm::vec3(xs[i], y, z));
     return;
   }
+  if (fusedTurbulenceRow(P, xs, y, z, count, out)) return;
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
   const float weight = accumulateTurbulence3(P, xs, y, z, count, patglsl::pat_vein_min_octave(P), sum.data());
   for (int i = 0; i < count; ++i) out[i] = sum[static_cast<size_t>(i)] / weight;

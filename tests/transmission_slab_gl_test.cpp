@@ -20,8 +20,8 @@
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
+#include "slab_mesh.h"
 #include "splitmix.h"
-#include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
 
@@ -34,19 +34,7 @@ constexpr int kSize = 128;
 constexpr float kHalfWidth = 1.0f, kHalfThickness = 0.1f;  // the slab, scene units
 constexpr float kMmPerUnit = 50.0f;                        // 100 mm wide, 10 mm thick
 
-// A box 2 x 2 x 0.2, hard-edged (the crease splits its faces).
-Mesh slab() {
-  Mesh m;
-  for (int i = 0; i < 8; ++i)
-    m.positions.push_back({(i & 1) ? kHalfWidth : -kHalfWidth, (i & 2) ? kHalfWidth : -kHalfWidth,
-                           (i & 4) ? kHalfThickness : -kHalfThickness});
-  // Quads wound counter-clockwise seen from outside: -z, +z, -y, +y, -x, +x.
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads)
-    for (int t : {0, 1, 2, 0, 2, 3}) m.indices.push_back(static_cast<uint32_t>(q[t]));
-  computeVertexNormals(m, 60.0f);
-  return m;
-}
+Mesh slab() { return slabMesh(kHalfWidth, kHalfThickness); }  // 2 x 2 x 0.2
 
 Scene slabScene() { return test::backLitScene("test:slab", kMmPerUnit, kSize); }
 

@@ -130,36 +130,36 @@ vec3 slab_transport(float s_mm) {
 }
 
 // The translucent shadow map's filter (Dachsbacher & Stamminger 2003): the light leaving at x is
-// the sum over the entry points x_j around it, seen in the light's map, of the light entering
-// there (E_j = cos_j principled_entry(cos_j) per unit of the light's cross-section, times the
+// the sum over the entry points x_j around it, seen in the light's map, of the light entering there
+// (E_j = cos_j principled_entry(cos_j) per unit of the light's cross-section, times the
 // cross-section A_j the tap stands for) times the stone's response R(|x - x_j|) for that 3D
 // distance. R is the one kernel that makes an evenly lit flat slab give the random walk's slab
-// transport T(s) (slab_transport): integrating over the entry plane, int R(sqrt(s^2 + rho^2))
-// 2 pi rho drho = T(s) for every s, i.e. R(r) = -T'(r) / (2 pi r), so the share of a ring
-// a <= rho < b at depth difference s is T(sqrt(s^2 + a^2)) - T(sqrt(s^2 + b^2)) and the rings
-// telescope to T(s) when every tap finds the slab's entry at the same s (the tests
-// TransmissionSlab.*). In a curved thin part (a handle, a horn) the taps find entries nearer in
-// 3D than the straight chord on the sides, and none beyond the light's silhouette: the walk's
-// shorter paths round the curve (whiter light) and the lit area's finite extent (less red, whose
-// kernel is widest). Taps: a centre disc of radius S/2 read at the exit's own chord s0
-// (transmission_thickness: the bilinear entry; on a flat slanted entry at the plane's depth, below), and GLOW_RINGS rings with boundaries S/2, S, 2S,
+// transport T(s) (slab_transport): integrating over the entry plane, int R(sqrt(s^2 + rho^2)) 2 pi
+// rho drho = T(s) for every s, i.e. R(r) = -T'(r) / (2 pi r), so the share of a ring a <= rho < b
+// at depth difference s is T(sqrt(s^2 + a^2)) - T(sqrt(s^2 + b^2)) and the rings telescope to T(s)
+// when every tap finds the slab's entry at the same s (the tests TransmissionSlab.*). In a curved
+// thin part (a handle, a horn) the taps find entries nearer in 3D than the straight chord on the
+// sides, and none beyond the light's silhouette: the walk's shorter paths round the curve (whiter
+// light) and the lit area's finite extent (less red, whose kernel is widest). Taps: a centre disc
+// of radius S/2 read at the exit's own chord s0 (transmission_thickness: the bilinear entry; on a
+// flat slanted entry at the plane's depth, below), and GLOW_RINGS rings with boundaries S/2, S, 2S,
 // infinity of GLOW_ANGLES taps each at the ring's area-weighted middle radius (the last at 2.5 S),
-// S = max(s0, GLOW_MIN_RADIUS_MM) (the plane's depth p for s0 on a flat slanted entry): the kernel's width scales with the chord, so the
-// pattern does too, and it moves continuously with s0. Each tap stands for its ring sector at the
-// depth difference it finds (an approximation: constant within the sector). Taps whose entry lies
-// beyond the exit (farther from the light) still count at their 3D distance.
-// Below GLOW_FROM_MM of chord the straight chord's value is kept, blended to the gather by
-// 2 GLOW_FROM_MM: such short chords are the rims of parts, where the taps inward fall on the thick
-// side and the gather's light is 0.3 of Cycles' (teapot-back, 0-5 mm chords; the straight chord
-// 0.8-0.9 of it). That the rims glow as Cycles' do is measured, not derived: a rim's entries lie
-// in a sliver of the light's view, and the kernel gives them little.
-// Measured (docs/quality.md, "Eleventh session"): a 10 mm rod's glow 0.88 / 1.01 / 1.00 of a
-// random walk in the rod (the straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords
-// 0.85-1.14 of Cycles' (the straight chord 1.24-2.78x). On a slanted flat entry the circles and the
-// disc at s0 were too coarse (a 4 mm slab lit at 70 degrees: 0.22 / 0.16 / 0.09 of Cycles'): there
-// the rings lie on the entry's plane round the perpendicular's foot instead (slanted_frame).
-// Where the chord is long the outer rings, or all, are left out where they add exactly 0
-// (glow_rings_shared; docs/performance.md, "Twelfth session: the gather's rings that add nothing").
+// S = max(s0, GLOW_MIN_RADIUS_MM) (the plane's depth p for s0 on a flat slanted entry): the
+// kernel's width scales with the chord, so the pattern does too, and it moves continuously with s0.
+// Each tap stands for its ring sector at the depth difference it finds (an approximation: constant
+// within the sector). Taps whose entry lies beyond the exit (farther from the light) still count at
+// their 3D distance. Below GLOW_FROM_MM of chord the straight chord's value is kept, blended to the
+// gather by 2 GLOW_FROM_MM: such short chords are the rims of parts, where the taps inward fall on
+// the thick side and the gather's light is 0.3 of Cycles' (teapot-back, 0-5 mm chords; the straight
+// chord 0.8-0.9 of it). That the rims glow as Cycles' do is measured, not derived: a rim's entries
+// lie in a sliver of the light's view, and the kernel gives them little. Measured (docs/quality.md,
+// "Eleventh session"): a 10 mm rod's glow 0.88 / 1.01 / 1.00 of a random walk in the rod (the
+// straight chord 2.5 / 2.2 / 1.8x); teapot-back's 5-20 mm chords 0.85-1.14 of Cycles' (the straight
+// chord 1.24-2.78x). On a slanted flat entry the circles and the disc at s0 were too coarse (a 4 mm
+// slab lit at 70 degrees: 0.22 / 0.16 / 0.09 of Cycles'): there the rings lie on the entry's plane
+// round the perpendicular's foot instead (slanted_frame). Where the chord is long the outer rings,
+// or all, are left out where they add exactly 0 (glow_rings_shared; docs/performance.md, "Twelfth
+// session: the gather's rings that add nothing").
 const int GLOW_RINGS = 3;
 const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
@@ -224,17 +224,17 @@ float slanted_depth(float s0, float cos0, float planar) {
 
 // This texel's quarter of the rings: angles k = lane, lane + 4 of each ring (lane: the texel's
 // place in its 2 x 2 quad), each tap's share already divided by GLOW_ANGLES, so that the four
-// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared). Only the
-// first `rings` rings (glow_rings_shared leaves out the outer ones where they add nothing); the
-// centre disc only where the quad `gathers` (its result is blended in nowhere else).
-// The rings lie on the entry's plane round the perpendicular's foot (slanted_frame's `frame` and
-// `planar`; p = slanted_depth, S = glow_scale(p), t1, t2 the light's plane: all from
-// glow_rings_shared): tap j at ring radius rho finds its entry at 3D distance r_j, and counts as the plane's ring at depth
-// d_j = sqrt(r_j^2 - rho^2) (= p on a flat slab, so the rings telescope to T(p) there as they do
-// to T(s0) at normal incidence). Its weight is the light entering per unit of the light's
-// cross-section, principled_entry(cos_j), times the light's cross-section of the plane's ring,
-// cos0 times its area (the eleventh session's weight cos_j principled_entry(cos_j) counted the
-// slant twice: a slanted slab got cos^2).
+// quarters of a quad add up to the whole ring sum of one texel (glow_rings_shared). Only the first
+// `rings` rings (glow_rings_shared leaves out the outer ones where they add nothing); the centre
+// disc only where the quad `gathers` (its result is blended in nowhere else). The rings lie on the
+// entry's plane round the perpendicular's foot (slanted_frame's `frame` and `planar`; p =
+// slanted_depth, S = glow_scale(p), t1, t2 the light's plane: all from glow_rings_shared): tap j at
+// ring radius rho finds its entry at 3D distance r_j, and counts as the plane's ring at depth d_j =
+// sqrt(r_j^2 - rho^2) (= p on a flat slab, so the rings telescope to T(p) there as they do to T(s0)
+// at normal incidence). Its weight is the light entering per unit of the light's cross-section,
+// principled_entry(cos_j), times the light's cross-section of the plane's ring, cos0 times its area
+// (the eleventh session's weight cos_j principled_entry(cos_j) counted the slant twice: a slanted
+// slab got cos^2).
 vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2, vec4 frame, float planar,
                        int lane, bool gathers, int rings) {
   const float bounds[4] = float[4](0.5, 1.0, 2.0, 1e6);
@@ -264,6 +264,7 @@ vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2
       vec3 q = P_in + u.x * t1 + u.y * t2;
       vec3 e = light_entry_at(q);
       float sk = light_distance_of(q) - e.x;
+      // d >= 0, so the kernel distances below are >= a: the ring count's bound (glow_rings_shared).
       float d = sqrt(max(dot(u, u) + sk * sk - rho * rho, 0.0));
       vec3 ring = slab_transport(sqrt(d * d + a * a) * mm);
       if (i + 1 < GLOW_RINGS) ring -= slab_transport(sqrt(d * d + b * b) * mm);

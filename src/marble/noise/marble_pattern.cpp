@@ -667,6 +667,22 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
 
 namespace {
 
+// One octave's lattice in y and z along a row at (y, z) (pat_value3's, for every point of the
+// row): the hashes of the four (y, z) lattice corners (pat_hash_yz of the wrapped indices and
+// their pat_next) and the fractions fy, fz -- pat_value3_column's arguments besides x.
+struct RowHashes {
+  uint32_t h00, h10, h01, h11;
+  float fy, fz;
+};
+RowHashes rowHashes(float y, float z, float inv, float period, uint32_t seedHash) {
+  const float py = y * inv, pz = z * inv;
+  const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+  const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+  const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
+  return {patglsl::pat_hash_yz(y0, z0, seedHash), patglsl::pat_hash_yz(y1, z0, seedHash),
+          patglsl::pat_hash_yz(y0, z1, seedHash), patglsl::pat_hash_yz(y1, z1, seedHash), py - iy, pz - iz};
+}
+
 // The octaves of size >= minSize of the turbulence's sum at (xs[i], y, z) added to sum[i] (value
 // basis); returns the sum of their weights (pat_turbulence3 / pat_vein_turbulence3's loops).
 float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float z, int count, float minSize, float* sum) {
@@ -674,17 +690,11 @@ float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float 
   float weight = 0.0f;
   for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
     const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    auto column = [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); };
+    const RowHashes r = rowHashes(y, z, inv, period, sh);
+    auto column = [&](float x) { return patglsl::pat_value3_column(x, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz); };
     accumulateOctave(xs, count, size, inv, period, sum, column, [&](const float* w, int n, float* out) {
       if (patlanes::lanesAvailable()) {
-        patlanes::value3Columns(w, n, h00, h10, h01, h11, fy, fz, out);
+        patlanes::value3Columns(w, n, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz, out);
         return;
       }
       for (int j = 0; j < n; ++j) out[j] = column(w[j]);
@@ -732,14 +742,7 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
     if (span > 2 * static_cast<int64_t>(count) + 16) return false;
     const float period = patglsl::pat_octave_period(P.resolution, inv);
-    // accumulateTurbulence3's row hashes for this octave.
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
+    const RowHashes r = rowHashes(y, z, inv, period, sh);  // accumulateTurbulence3's, for this octave
     // The lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's runs), as the
     // products uint(w) * K of pat_hash_x: integers below 2^24, so uint(w) is the run's integer.
     products.resize(static_cast<size_t>(span));
@@ -748,7 +751,7 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     const size_t start = used;
     used += static_cast<size_t>(span) + simd::kLanes;  // 8 readable floats past the last column
     if (columns.size() < used) columns.resize(used);
-    patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz,
+    patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
                                         columns.data() + start);
     starts.push_back(start);
     octaves.push_back({nullptr, lo, inv, size});

@@ -182,8 +182,8 @@ struct SampleArrays {
 // turbulence's octaves): the columns of the cells the row spans once each, then each point's
 // lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
 // are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
-// counts up with the cell and wraps at 2^20 (latticeProducts' runs), its corner sums and lerps
-// are value3ColumnsFromProducts'. False where the row is not along x, the lanes do not run, the
+// counts up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps
+// are value3ColumnRuns'. False where the row is not along x, the lanes do not run, the
 // cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
 bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
   if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
@@ -207,13 +207,10 @@ bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, s
   const int32_t lo = static_cast<int32_t>(patglsl::floor(xmin)), hi = static_cast<int32_t>(patglsl::floor(xmax));
   const int64_t span = static_cast<int64_t>(hi) - lo + 2;
   if (span > 2 * static_cast<int64_t>(count) + 16) return false;
-  thread_local std::vector<uint32_t> products;
   thread_local std::vector<float> columns;
-  products.resize(static_cast<size_t>(span));
   columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
-  patlanes::latticeProducts(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span,
-                            products.data());
-  patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz, columns.data());
+  patlanes::value3ColumnRuns(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span, h00,
+                             h10, h01, h11, fy, fz, columns.data());
   const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
   patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
   return true;
@@ -724,7 +721,6 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
   thread_local std::vector<float> columns;
-  thread_local std::vector<uint32_t> products;
   thread_local std::vector<patlanes::OctaveTable> octaves;
   thread_local std::vector<size_t> starts;
   octaves.clear();
@@ -743,16 +739,14 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     if (span > 2 * static_cast<int64_t>(count) + 16) return false;
     const float period = patglsl::pat_octave_period(P.resolution, inv);
     const RowHashes r = rowHashes(y, z, inv, period, sh);  // accumulateTurbulence3's, for this octave
-    // The lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's runs), as the
-    // products uint(w) * K of pat_hash_x: integers below 2^24, so uint(w) is the run's integer.
-    products.resize(static_cast<size_t>(span));
-    patlanes::latticeProducts(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
-                              static_cast<int64_t>(period), span, products.data());
+    // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
+    // runs).
     const size_t start = used;
-    used += static_cast<size_t>(span) + simd::kLanes;  // 8 readable floats past the last column
+    used += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
     if (columns.size() < used) columns.resize(used);
-    patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
-                                        columns.data() + start);
+    patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
+                               static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
+                               columns.data() + start);
     starts.push_back(start);
     octaves.push_back({nullptr, lo, inv, size});
     weight += size;

@@ -275,6 +275,14 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
 bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
 VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
+namespace {
+// The lowest and highest of a row's x, both finite (patlanes::finiteRange's).
+struct RowRange {
+  float lowest, highest;
+};
+void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out);
+}  // namespace
+
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);
   const bool alongX = step.y == 0.0f && step.z == 0.0f;
@@ -286,16 +294,24 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
   }
   // The four samples' texel points share y and z along the row: the turbulence by rows.
   // pat_vein_sample_point is pat_texel_pos + pat_vein_sample_offset: the same sum here.
-  std::vector<float> texelX(static_cast<size_t>(count)), xs(static_cast<size_t>(count));
+  // The row's lowest and highest texel x, once: sample k's are those plus its offset (rounding
+  // is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where both are.
+  thread_local std::vector<float> texelX, xs, turbulence[4];
+  texelX.resize(static_cast<size_t>(count));
+  xs.resize(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i)
     texelX[static_cast<size_t>(i)] = patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x;
-  std::vector<float> turbulence[4];
+  RowRange texelRange{0.0f, 0.0f};
+  const bool haveRange = count > 0 && patlanes::lanesAvailable() &&
+                         patlanes::finiteRange(texelX.data(), count, &texelRange.lowest, &texelRange.highest);
   for (int k = 0; k < 4; ++k) {
     const glm::vec3 offset = patglsl::pat_vein_sample_offset(P, k);
     for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offset.x;
+    const RowRange range{texelRange.lowest + offset.x, texelRange.highest + offset.x};
+    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
     const glm::vec3 q = patglsl::pat_vein_sample_point(P, origin, k);
     turbulence[k].resize(static_cast<size_t>(count));
-    veinTurbulenceRow(m, xs.data(), q.y, q.z, count, turbulence[k].data());
+    turbulenceRow(P, xs.data(), q.y, q.z, count, finite ? &range : nullptr, turbulence[k].data());
   }
   shadeRow(P, origin, step, count, out, valueOut,
            SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
@@ -713,11 +729,18 @@ namespace {
 // lattice indices, run by run, and pat_value3_column's arithmetic), so the sums are
 // accumulateTurbulence3's bit for bit. False (nothing written) where a table would be much
 // longer than the row (a step of several cells: accumulateOctave walks those) or x is not
-// finite or beyond 2^30 cells.
-bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, float* out) {
+// finite or beyond 2^30 cells. `range`: xs' lowest and highest where the caller knows them
+// (finite), else found here.
+bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range,
+                        float* out) {
   if (count <= 0 || !patlanes::lanesAvailable()) return false;
   float xmin = 0.0f, xmax = 0.0f;
-  if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) return false;
+  if (range != nullptr) {
+    xmin = range->lowest;
+    xmax = range->highest;
+  } else if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) {
+    return false;
+  }
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
   thread_local std::vector<float> columns;
@@ -756,18 +779,22 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
   return true;
 }
 
-}  // namespace
-
-void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
-  const PatParams P = toParams(m);
+// veinTurbulenceRow with the parameters converted (veinAlbedoRow's four samples share them).
+void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out) {
   if (P.basis != patglsl::PAT_BASIS_VALUE) {
     for (int i = 0; i < count; ++i) out[i] = patglsl::pat_vein_turbulence3(P, glm::vec3(xs[i], y, z));
     return;
   }
-  if (fusedTurbulenceRow(P, xs, y, z, count, out)) return;
+  if (fusedTurbulenceRow(P, xs, y, z, count, range, out)) return;
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
   const float weight = accumulateTurbulence3(P, xs, y, z, count, patglsl::pat_vein_min_octave(P), sum.data());
   for (int i = 0; i < count; ++i) out[i] = sum[static_cast<size_t>(i)] / weight;
+}
+
+}  // namespace
+
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
+  turbulenceRow(toParams(m), xs, y, z, count, nullptr, out);
 }
 
 glm::vec3 veinSampleOffset(const Material& m, int k) { return patglsl::pat_vein_sample_offset(toParams(m), k); }

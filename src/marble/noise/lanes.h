@@ -139,9 +139,14 @@ MARBLE_LANE Mask operator<(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v 
 MARBLE_LANE Mask operator>=(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v >= b.v)}; }
 MARBLE_LANE Mask operator==(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v == b.v)}; }
 
-// Per-lane choice: m ? a : b.
+// Per-lane choice: m ? a : b. The uint choice is made on signed lanes with the mask as it is:
+// with the mask converted to unsigned lanes GCC 12 no longer sees that it is a comparison's
+// (all bits 0 or 1 per lane) and inverts it by a compare with zero before each byte blend
+// (336 of them in shadeBatch); the same lanes are chosen either way.
 MARBLE_LANE LaneF select(Mask m, LaneF a, LaneF b) { return LaneF(m.v ? a.v : b.v); }
-MARBLE_LANE LaneU select(Mask m, LaneU a, LaneU b) { return LaneU(reinterpret_cast<U8>(m.v) ? a.v : b.v); }
+MARBLE_LANE LaneU select(Mask m, LaneU a, LaneU b) {
+  return LaneU(reinterpret_cast<U8>(m.v ? reinterpret_cast<I8>(a.v) : reinterpret_cast<I8>(b.v)));
+}
 
 // The scalar build's definitions, lane by lane (marble_pattern.cpp): min/max as `a < b ? a : b`.
 MARBLE_LANE LaneF min(LaneF a, LaneF b) { return LaneF(a.v < b.v ? a.v : b.v); }

@@ -182,8 +182,8 @@ struct SampleArrays {
 // turbulence's octaves): the columns of the cells the row spans once each, then each point's
 // lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
 // are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
-// counts up with the cell and wraps at 2^20 (latticeProducts' runs), its corner sums and lerps
-// are value3ColumnsFromProducts'. False where the row is not along x, the lanes do not run, the
+// counts up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps
+// are value3ColumnRuns'. False where the row is not along x, the lanes do not run, the
 // cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
 bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
   if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
@@ -207,13 +207,10 @@ bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, s
   const int32_t lo = static_cast<int32_t>(patglsl::floor(xmin)), hi = static_cast<int32_t>(patglsl::floor(xmax));
   const int64_t span = static_cast<int64_t>(hi) - lo + 2;
   if (span > 2 * static_cast<int64_t>(count) + 16) return false;
-  thread_local std::vector<uint32_t> products;
   thread_local std::vector<float> columns;
-  products.resize(static_cast<size_t>(span));
   columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
-  patlanes::latticeProducts(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span,
-                            products.data());
-  patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz, columns.data());
+  patlanes::value3ColumnRuns(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span, h00,
+                             h10, h01, h11, fy, fz, columns.data());
   const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
   patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
   return true;
@@ -278,6 +275,14 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
 bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
 VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
+namespace {
+// The lowest and highest of a row's x, both finite (patlanes::finiteRange's).
+struct RowRange {
+  float lowest, highest;
+};
+void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out);
+}  // namespace
+
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
   const PatParams P = toParams(m);
   const bool alongX = step.y == 0.0f && step.z == 0.0f;
@@ -289,16 +294,24 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
   }
   // The four samples' texel points share y and z along the row: the turbulence by rows.
   // pat_vein_sample_point is pat_texel_pos + pat_vein_sample_offset: the same sum here.
-  std::vector<float> texelX(static_cast<size_t>(count)), xs(static_cast<size_t>(count));
+  // The row's lowest and highest texel x, once: sample k's are those plus its offset (rounding
+  // is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where both are.
+  thread_local std::vector<float> texelX, xs, turbulence[4];
+  texelX.resize(static_cast<size_t>(count));
+  xs.resize(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i)
     texelX[static_cast<size_t>(i)] = patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x;
-  std::vector<float> turbulence[4];
+  RowRange texelRange{0.0f, 0.0f};
+  const bool haveRange = count > 0 && patlanes::lanesAvailable() &&
+                         patlanes::finiteRange(texelX.data(), count, &texelRange.lowest, &texelRange.highest);
   for (int k = 0; k < 4; ++k) {
     const glm::vec3 offset = patglsl::pat_vein_sample_offset(P, k);
     for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offset.x;
+    const RowRange range{texelRange.lowest + offset.x, texelRange.highest + offset.x};
+    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
     const glm::vec3 q = patglsl::pat_vein_sample_point(P, origin, k);
     turbulence[k].resize(static_cast<size_t>(count));
-    veinTurbulenceRow(m, xs.data(), q.y, q.z, count, turbulence[k].data());
+    turbulenceRow(P, xs.data(), q.y, q.z, count, finite ? &range : nullptr, turbulence[k].data());
   }
   shadeRow(P, origin, step, count, out, valueOut,
            SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
@@ -667,6 +680,22 @@ void patternRow2(const Material& m, const float* xs, float y, int count, float* 
 
 namespace {
 
+// One octave's lattice in y and z along a row at (y, z) (pat_value3's, for every point of the
+// row): the hashes of the four (y, z) lattice corners (pat_hash_yz of the wrapped indices and
+// their pat_next) and the fractions fy, fz -- pat_value3_column's arguments besides x.
+struct RowHashes {
+  uint32_t h00, h10, h01, h11;
+  float fy, fz;
+};
+RowHashes rowHashes(float y, float z, float inv, float period, uint32_t seedHash) {
+  const float py = y * inv, pz = z * inv;
+  const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
+  const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
+  const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
+  return {patglsl::pat_hash_yz(y0, z0, seedHash), patglsl::pat_hash_yz(y1, z0, seedHash),
+          patglsl::pat_hash_yz(y0, z1, seedHash), patglsl::pat_hash_yz(y1, z1, seedHash), py - iy, pz - iz};
+}
+
 // The octaves of size >= minSize of the turbulence's sum at (xs[i], y, z) added to sum[i] (value
 // basis); returns the sum of their weights (pat_turbulence3 / pat_vein_turbulence3's loops).
 float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float z, int count, float minSize, float* sum) {
@@ -674,17 +703,11 @@ float accumulateTurbulence3(const PatParams& P, const float* xs, float y, float 
   float weight = 0.0f;
   for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
     const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    auto column = [&](float x) { return patglsl::pat_value3_column(x, h00, h10, h01, h11, fy, fz); };
+    const RowHashes r = rowHashes(y, z, inv, period, sh);
+    auto column = [&](float x) { return patglsl::pat_value3_column(x, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz); };
     accumulateOctave(xs, count, size, inv, period, sum, column, [&](const float* w, int n, float* out) {
       if (patlanes::lanesAvailable()) {
-        patlanes::value3Columns(w, n, h00, h10, h01, h11, fy, fz, out);
+        patlanes::value3Columns(w, n, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz, out);
         return;
       }
       for (int j = 0; j < n; ++j) out[j] = column(w[j]);
@@ -706,15 +729,21 @@ namespace {
 // lattice indices, run by run, and pat_value3_column's arithmetic), so the sums are
 // accumulateTurbulence3's bit for bit. False (nothing written) where a table would be much
 // longer than the row (a step of several cells: accumulateOctave walks those) or x is not
-// finite or beyond 2^30 cells.
-bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, float* out) {
+// finite or beyond 2^30 cells. `range`: xs' lowest and highest where the caller knows them
+// (finite), else found here.
+bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range,
+                        float* out) {
   if (count <= 0 || !patlanes::lanesAvailable()) return false;
   float xmin = 0.0f, xmax = 0.0f;
-  if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) return false;
+  if (range != nullptr) {
+    xmin = range->lowest;
+    xmax = range->highest;
+  } else if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) {
+    return false;
+  }
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
   thread_local std::vector<float> columns;
-  thread_local std::vector<uint32_t> products;
   thread_local std::vector<patlanes::OctaveTable> octaves;
   thread_local std::vector<size_t> starts;
   octaves.clear();
@@ -732,24 +761,15 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
     if (span > 2 * static_cast<int64_t>(count) + 16) return false;
     const float period = patglsl::pat_octave_period(P.resolution, inv);
-    // accumulateTurbulence3's row hashes for this octave.
-    const float py = y * inv, pz = z * inv;
-    const float iy = patglsl::floor(py), iz = patglsl::floor(pz);
-    const float fy = py - iy, fz = pz - iz;
-    const float y0 = patglsl::pat_wrap(iy, period), y1 = patglsl::pat_next(y0, period);
-    const float z0 = patglsl::pat_wrap(iz, period), z1 = patglsl::pat_next(z0, period);
-    const uint32_t h00 = patglsl::pat_hash_yz(y0, z0, sh), h10 = patglsl::pat_hash_yz(y1, z0, sh);
-    const uint32_t h01 = patglsl::pat_hash_yz(y0, z1, sh), h11 = patglsl::pat_hash_yz(y1, z1, sh);
-    // The lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's runs), as the
-    // products uint(w) * K of pat_hash_x: integers below 2^24, so uint(w) is the run's integer.
-    products.resize(static_cast<size_t>(span));
-    patlanes::latticeProducts(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
-                              static_cast<int64_t>(period), span, products.data());
+    const RowHashes r = rowHashes(y, z, inv, period, sh);  // accumulateTurbulence3's, for this octave
+    // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
+    // runs).
     const size_t start = used;
-    used += static_cast<size_t>(span) + simd::kLanes;  // 8 readable floats past the last column
+    used += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
     if (columns.size() < used) columns.resize(used);
-    patlanes::value3ColumnsFromProducts(products.data(), static_cast<int>(span), h00, h10, h01, h11, fy, fz,
-                                        columns.data() + start);
+    patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
+                               static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
+                               columns.data() + start);
     starts.push_back(start);
     octaves.push_back({nullptr, lo, inv, size});
     weight += size;
@@ -759,18 +779,22 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
   return true;
 }
 
-}  // namespace
-
-void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
-  const PatParams P = toParams(m);
+// veinTurbulenceRow with the parameters converted (veinAlbedoRow's four samples share them).
+void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out) {
   if (P.basis != patglsl::PAT_BASIS_VALUE) {
     for (int i = 0; i < count; ++i) out[i] = patglsl::pat_vein_turbulence3(P, glm::vec3(xs[i], y, z));
     return;
   }
-  if (fusedTurbulenceRow(P, xs, y, z, count, out)) return;
+  if (fusedTurbulenceRow(P, xs, y, z, count, range, out)) return;
   std::vector<float> sum(static_cast<size_t>(count), 0.0f);
   const float weight = accumulateTurbulence3(P, xs, y, z, count, patglsl::pat_vein_min_octave(P), sum.data());
   for (int i = 0; i < count; ++i) out[i] = sum[static_cast<size_t>(i)] / weight;
+}
+
+}  // namespace
+
+void veinTurbulenceRow(const Material& m, const float* xs, float y, float z, int count, float* out) {
+  turbulenceRow(toParams(m), xs, y, z, count, nullptr, out);
 }
 
 glm::vec3 veinSampleOffset(const Material& m, int k) { return patglsl::pat_vein_sample_offset(toParams(m), k); }

@@ -646,8 +646,10 @@ float pat_cell_random(uint h, uint salt) { return pat_unit(pat_hash(h + salt)); 
 // pinch 1 the vein fades out where m is low.
 float pat_pinched(PatParams P, float w, float m) { return w * max(1.0f - P.veinPinch + 2.0f * P.veinPinch * m, 0.0f); }
 
-// The matrix's full width on a face whose random is r, from its width w before the per-face factor.
-float pat_matrix_width(float w, float r) { return w * (0.4f + 1.2f * r); }
+// The matrix on the faces of cells c of full width w (before the per-face factor), at the surface.
+float pat_matrix_cover(PatParams P, PatCells c, float spacing, float w) {
+  return pat_vein_cover(c.edge * spacing, w * (0.4f + 1.2f * pat_face_random(c)), P.veinSoftness);
+}
 
 // The breccia's coverages at warped point p with width field m: (matrix, cracks inside whole
 // fragments, late hairline veins, the random of the fragment p is in). The level-0 matrix is also
@@ -656,29 +658,28 @@ vec4 pat_breccia_covers(PatParams P, vec3 p, float m, vec3 ray, float k) {
   const uint kBroken = 0x2545f491u;
   PatCells f = pat_voronoi(pat_stretch(p, P.veinNormal, P.veinStretch) * (1.0f / P.veinSpacing.x), 0x9e3779b9u);
   float matrix = pat_cells_cover(P, f, P.veinSpacing.x, P.veinStretch,
-                                 pat_matrix_width(pat_pinched(P, P.veinWidth.x, m), pat_face_random(f)), ray, k);
+                                 pat_pinched(P, P.veinWidth.x, m) * (0.4f + 1.2f * pat_face_random(f)), ray, k);
   uint fragment = f.h1;
   float s2 = sqrt(P.veinStretch);
   PatCells s = pat_voronoi(pat_stretch(p, P.veinNormal, s2) * (1.0f / P.veinSpacing.y), 0x165667b1u);
   float w1 = pat_pinched(P, P.veinWidth.y, m);
   bool broken = pat_cell_random(f.h1, kBroken) < P.fragmentSplit;
-  // Levels 1 and 2: one cover of the face whichever it is, the matrix's (its width varied per
-  // face) in a broken fragment, else the crack's (filled or not). Selects, not `if (broken)
-  // ... else if (filled)`: the same values, and a GPU whose lanes take both sides of a branch
-  // (llvmpipe runs both) evaluates one cover per level instead of two.
-  float r1 = pat_face_random(s);
-  float c1 = pat_vein_cover(s.edge * P.veinSpacing.y, broken ? pat_matrix_width(w1, r1) : w1, P.veinSoftness);
-  matrix = broken ? max(matrix, c1) : matrix;
-  fragment = broken ? s.h1 : fragment;
-  float crack = !broken && r1 < P.veinDensity.y ? c1 : 0.0f;
+  float crack = 0.0f;
+  if (broken) {
+    matrix = max(matrix, pat_matrix_cover(P, s, P.veinSpacing.y, w1));
+    fragment = s.h1;
+  } else if (pat_face_random(s) < P.veinDensity.y) {
+    crack = pat_vein_cover(s.edge * P.veinSpacing.y, w1, P.veinSoftness);
+  }
   PatCells h = pat_voronoi(p * (1.0f / P.veinSpacing.z), 0x27d4eb2fu);
   float w2 = pat_pinched(P, P.veinWidth.z, 1.0f - m);
-  bool broken2 = broken && pat_cell_random(s.h1, kBroken) < P.fragmentSplit;
-  float r2 = pat_face_random(h);
-  float c2 = pat_vein_cover(h.edge * P.veinSpacing.z, broken2 ? pat_matrix_width(w2, r2) : w2, P.veinSoftness);
-  matrix = broken2 ? max(matrix, c2) : matrix;
-  fragment = broken2 ? h.h1 : fragment;
-  float hair = !broken2 && r2 < P.veinDensity.z ? c2 : 0.0f;
+  float hair = 0.0f;
+  if (broken && pat_cell_random(s.h1, kBroken) < P.fragmentSplit) {
+    matrix = max(matrix, pat_matrix_cover(P, h, P.veinSpacing.z, w2));
+    fragment = h.h1;
+  } else if (pat_face_random(h) < P.veinDensity.z) {
+    hair = pat_vein_cover(h.edge * P.veinSpacing.z, w2, P.veinSoftness);
+  }
   return vec4(matrix, crack, hair, pat_cell_random(fragment, 0x85ebca6bu));
 }
 

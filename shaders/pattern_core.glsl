@@ -386,20 +386,30 @@ struct PatCells {
 };
 
 // The two nearest of a Voronoi search so far, updated with one more cell (squared distance d,
-// hash h, offset v from the point to its feature point): strict `<`, so of equal distances the
+// hash h, corner k: which of the block's 8 cells): strict `<`, so of equal distances the
 // earlier cell stays first. Written as selects and mins, not as `if (d < f1) ... else if (d <
 // f2)`: the same values (where d is not the nearest, the second is min(d, f2), its hash and
-// offset replaced only if d is strictly nearer; an equal distance keeps the value it had), with
+// corner replaced only if d is strictly nearer; an equal distance keeps the value it had), with
 // fewer operations where the lanes of a SIMD unit take different sides (llvmpipe runs both).
-PatCells pat_cells_insert(PatCells c, float d, uint h, vec3 v) {
+// The offsets to the two feature points are rebuilt from hash and corner once the search is
+// done (pat_voronoi): a corner is one select per step where an offset is three.
+struct PatNearest {
+  float f1;
+  float f2;
+  uint h1;
+  uint h2;
+  uint k1;
+  uint k2;
+};
+PatNearest pat_cells_insert(PatNearest c, float d, uint h, uint k) {
   bool first = d < c.f1;
   bool second = d < c.f2;
   c.f2 = first ? c.f1 : min(d, c.f2);
   c.h2 = first ? c.h1 : (second ? h : c.h2);
-  c.v2 = first ? c.v1 : (second ? v : c.v2);
+  c.k2 = first ? c.k1 : (second ? k : c.k2);
   c.f1 = min(d, c.f1);
   c.h1 = first ? h : c.h1;
-  c.v1 = first ? v : c.v1;
+  c.k1 = first ? k : c.k1;
   return c;
 }
 
@@ -445,41 +455,42 @@ PatCells pat_voronoi(vec3 p, uint salt) {
   uint y1 = y0 + 0xd8163841u;
   uint z0 = uint(i.z + bz + 1048576.0f) * 0xcb1ab31fu + salt;
   uint z1 = z0 + 0xcb1ab31fu;
-  // The eight cells in the order x fastest, then y, then z (which of equal distances wins).
+  // The eight cells in the order x fastest, then y, then z (which of equal distances wins);
+  // corner k: bit 0 the upper x, bit 1 the upper y, bit 2 the upper z.
   uint h0 = pat_hash(x0 + y0 + z0);
-  vec3 v0 = pat_cell_offset(h0, ax, ay, az);
   uint h1 = pat_hash(x1 + y0 + z0);
-  vec3 v1 = pat_cell_offset(h1, cx, ay, az);
-  float d0 = pat_sq(v0);
-  float d1 = pat_sq(v1);
+  float d0 = pat_sq(pat_cell_offset(h0, ax, ay, az));
+  float d1 = pat_sq(pat_cell_offset(h1, cx, ay, az));
   // The first two cells sorted: what inserting them into an empty pair (distances 1e9) gives,
   // as a squared distance here is at most 3 * 1.9^2 and the second is always kept.
-  PatCells c;
+  PatNearest n;
   bool swap = d1 < d0;
-  c.f1 = swap ? d1 : d0;
-  c.h1 = swap ? h1 : h0;
-  c.v1 = swap ? v1 : v0;
-  c.f2 = swap ? d0 : d1;
-  c.h2 = swap ? h0 : h1;
-  c.v2 = swap ? v0 : v1;
+  n.f1 = swap ? d1 : d0;
+  n.h1 = swap ? h1 : h0;
+  n.k1 = swap ? 1u : 0u;
+  n.f2 = swap ? d0 : d1;
+  n.h2 = swap ? h0 : h1;
+  n.k2 = swap ? 0u : 1u;
   uint h = pat_hash(x0 + y1 + z0);
-  vec3 v = pat_cell_offset(h, ax, cy, az);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, ax, cy, az)), h, 2u);
   h = pat_hash(x1 + y1 + z0);
-  v = pat_cell_offset(h, cx, cy, az);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, cx, cy, az)), h, 3u);
   h = pat_hash(x0 + y0 + z1);
-  v = pat_cell_offset(h, ax, ay, cz);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, ax, ay, cz)), h, 4u);
   h = pat_hash(x1 + y0 + z1);
-  v = pat_cell_offset(h, cx, ay, cz);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, cx, ay, cz)), h, 5u);
   h = pat_hash(x0 + y1 + z1);
-  v = pat_cell_offset(h, ax, cy, cz);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, ax, cy, cz)), h, 6u);
   h = pat_hash(x1 + y1 + z1);
-  v = pat_cell_offset(h, cx, cy, cz);
-  c = pat_cells_insert(c, pat_sq(v), h, v);
+  n = pat_cells_insert(n, pat_sq(pat_cell_offset(h, cx, cy, cz)), h, 7u);
+  // The two nearest cells' offsets, rebuilt from hash and corner: the values the search summed.
+  PatCells c;
+  c.f1 = n.f1;
+  c.f2 = n.f2;
+  c.h1 = n.h1;
+  c.h2 = n.h2;
+  c.v1 = pat_cell_offset(n.h1, (n.k1 & 1u) == 1u ? cx : ax, (n.k1 & 2u) == 2u ? cy : ay, (n.k1 & 4u) == 4u ? cz : az);
+  c.v2 = pat_cell_offset(n.h2, (n.k2 & 1u) == 1u ? cx : ax, (n.k2 & 2u) == 2u ? cy : ay, (n.k2 & 4u) == 4u ? cz : az);
   // The distance to the bisecting plane of the two nearest feature points, (F2^2 - F1^2) /
   // (2 |v2 - v1|): unlike F2 - F1 it does not widen where the two points are close together.
   vec3 dv = c.v2 - c.v1;

@@ -191,7 +191,19 @@ float glow_scale(float s0) {
 // where the light's map must find the entry at 3D distance p from the exit if the plane holds, and
 // scales the slant by `planar` (1 within 10 % of p, 0 from 30 %; 0 where the foot sees no entry).
 // Measured: without that check the 10 mm rod (TransmissionCurved) read 1.3-1.65x the walk.
-vec4 slanted_frame(vec3 P_in, float s0, float cos0, vec3 t1, vec3 t2, out float planar) {
+// The entry must also be flat: its cosine the same at the secant points and the foot (`bend`),
+// or else the exit parallel to it, facing away from the light at the entry's own cosine
+// (exit_cos = -N.L at the exit, `parallel`): a curved plate of even thickness (an ear, a leaf),
+// whose entry cosine changes across the secants while the walk still crosses its thickness p, not
+// the chord (TransmissionShell: a 4 mm plate curved at 46 mm radius, 0.97-1.02 of the slab's law
+// at 40-45 degrees; with the flatness check alone 0.72-0.82). `parallel` is no convexity test (a
+// circle's chord meets both its ends at one angle): on a rod the secants' slope and the foot's
+// distance (`fit`, `miss`), which see the entry bend away from its tangent plane, refuse the plane
+// as before (TransmissionCurved reads the same to the digit); without `bend` at all the torus under
+// a point light had a seam (1.2x TransmissionSeams' threshold), which `parallel` keeps out.
+// Tolerance 0.1-0.3 of the cosines' difference: at 0.05-0.15 the bunny's ears (curved plates, not
+// exactly parallel) took half of the gain (docs/quality.md, "Thirteenth session").
+vec4 slanted_frame(vec3 P_in, float s0, float cos0, float exit_cos, vec3 t1, vec3 t2, out float planar) {
   float h = max(2.0 * u_light_texel_world, 0.5 * s0 * max(cos0, 0.05));
   vec3 q1 = P_in + h * t1, q2 = P_in + h * t2;
   vec3 e1 = light_entry_at(q1), e2 = light_entry_at(q2);
@@ -211,8 +223,10 @@ vec4 slanted_frame(vec3 P_in, float s0, float cos0, vec3 t1, vec3 t2, out float 
   float fit = abs(len - slope) / max(slope, 1e-6 * h);
   float bend = max(max(abs(e1.y - cos0), abs(e2.y - cos0)), abs(ef.y - cos0));
   float miss = abs(sqrt(dot(foot, foot) + sf * sf) - p) / max(p, 1e-6);
+  float flat_entry = 1.0 - smoothstep(0.01, 0.05, bend);
+  float parallel = 1.0 - smoothstep(0.1, 0.3, abs(exit_cos - cos0));
   planar = smoothstep(0.9, 1.0, min(min(e1.z, e2.z), ef.z)) * (1.0 - smoothstep(0.05, 0.15, fit)) *
-           (1.0 - smoothstep(0.01, 0.05, bend)) * (1.0 - smoothstep(0.05, 0.15, miss));
+           max(flat_entry, parallel) * (1.0 - smoothstep(0.05, 0.15, miss));
   return vec4(planar * foot, dir);
 }
 
@@ -295,8 +309,9 @@ vec4 quad_across_y(vec4 v) {
 // pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
 // session"). Must run in uniform control flow (derivatives): main() calls it before any texel
 // returns, and background texels take part with nothing (`stone` false; main() keeps NaNs out of
-// their P_in and s_cos with a select). s_cos: transmission_thickness(P_in), from main().
-vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos) {
+// their P_in and s_cos with a select). s_cos: transmission_thickness(P_in), from main(); N the
+// exit's normal (slanted_frame's parallel-faces check).
+vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos, vec3 N) {
   float s0 = s_cos.x, cos0 = s_cos.y;
   bool ok = stone && s0 > 0.0;
   float mm = u_mm_per_unit;
@@ -314,7 +329,7 @@ vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos) {
   vec3 t2 = cross(L, t1);
   float planar = 0.0;
   vec4 frame = vec4(0.0, 0.0, 1.0, 0.0);
-  if (gathers) frame = slanted_frame(P_in, s0, cos0, t1, t2, planar);
+  if (gathers) frame = slanted_frame(P_in, s0, cos0, max(-dot(N, L), 0.0), t1, t2, planar);
   float p = slanted_depth(s0, cos0, planar);
   float S = glow_scale(p);
   // How many rings the quad reads (the quarters must read the same ones). None where the quad
@@ -475,7 +490,7 @@ void main() {
     P_in = P - N * (2.0 * u_light_texel_world);
     s_cos = transmission_thickness(P_in);
     // Before any texel returns: the quad shares it (derivatives need all four in step).
-    glow_rings = glow_rings_shared(stone, P_in, s_cos);
+    glow_rings = glow_rings_shared(stone, P_in, s_cos, N);
   }
   if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass

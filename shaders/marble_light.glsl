@@ -16,12 +16,7 @@ vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, 
   float a_stone = max(roughness * roughness, 0.002);
   float a = sqrt(min(a_stone * a_stone + footprint_a2, 1.0));  // the lobe widened by the pixel's footprint
   float F = fresnel_dielectric(dot(H, V), ior);
-  float NoH = max(dot(N, H), 0.0);
-  float w = (a_stone * a_stone) / max(a * a, 1e-12);
-  float c2 = max(NoH * NoH, 1e-6);
-  float beck = exp((c2 - 1.0) / (a * a * c2)) / (PI * a * a * c2 * c2);
-  float D = w * ggx_distribution(NoH, a) + (1.0 - w) * beck;
-  vec3 r = E * (nl * visible * D * smith_ggx_visibility(NoV, nl, a) * F);
+  vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F);
   if (env_intensity > 0.0)
     r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, NoV);
   return r;

@@ -60,7 +60,7 @@ float specular_footprint_a2(vec3 dndx, vec3 dndy, float dx_on, float dy_on) {
 // grazing 1 / (4 N.V), it lit whole rims far from any highlight (teapot-back's terminator band
 // 3-9x Cycles' highlight; docs/quality.md, "Fourteenth session"). So: a normalised mix of GGX
 // at a2 weighted w = a_stone2 / a2, whose tail w a2 / (pi s^4) is then the stone's exactly, and a
-// Beckmann core at a2 carrying the rest. w = 1 (no spread): the stone's GGX, bit for bit; w -> 0:
+// Beckmann core at a2 carrying the rest. w = 1 (no spread): the stone's GGX (to rounding); w -> 0:
 // Beckmann at a2, the Gaussian convolution. Measured against marble's own highlight rendered with
 // 16x the samples and no widening, the highlight's relative RMSE falls in all ten reference scenes
 // (tests/specular_gl_test.cpp, WidenedLobeAddsNoLightAwayFromTheHighlight: 0.86-0.89 of the

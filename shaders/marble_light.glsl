@@ -16,7 +16,8 @@ vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, 
   float a_stone = max(roughness * roughness, 0.002);
   float a = sqrt(min(a_stone * a_stone + footprint_a2, 1.0));  // the lobe widened by the pixel's footprint
   float F = fresnel_dielectric(dot(H, V), ior);
-  vec3 r = E * (nl * visible * ggx_distribution(max(dot(N, H), 0.0), a) * smith_ggx_visibility(NoV, nl, a) * F);
+  float D = footprint_filtered_distribution(max(dot(N, H), 0.0), a_stone * a_stone, a * a);
+  vec3 r = E * (nl * visible * D * smith_ggx_visibility(NoV, nl, a) * F);
   if (env_intensity > 0.0)
     r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, NoV);
   return r;

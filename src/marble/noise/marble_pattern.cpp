@@ -281,6 +281,8 @@ struct RowRange {
   float lowest, highest;
 };
 void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out);
+bool fusedTurbulenceSamples(const PatParams& P, const float* texelX, const RowRange& range, const float offsetX[4],
+                            const float ys[4], const float zs[4], int count, float* const out[4]);
 }  // namespace
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
@@ -304,14 +306,23 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
   RowRange texelRange{0.0f, 0.0f};
   const bool haveRange = count > 0 && patlanes::lanesAvailable() &&
                          patlanes::finiteRange(texelX.data(), count, &texelRange.lowest, &texelRange.highest);
+  float offsetX[4], ys[4], zs[4];
+  float* samples[4];
   for (int k = 0; k < 4; ++k) {
-    const glm::vec3 offset = patglsl::pat_vein_sample_offset(P, k);
-    for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offset.x;
-    const RowRange range{texelRange.lowest + offset.x, texelRange.highest + offset.x};
-    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
+    offsetX[k] = patglsl::pat_vein_sample_offset(P, k).x;
     const glm::vec3 q = patglsl::pat_vein_sample_point(P, origin, k);
+    ys[k] = q.y;
+    zs[k] = q.z;
     turbulence[k].resize(static_cast<size_t>(count));
-    turbulenceRow(P, xs.data(), q.y, q.z, count, finite ? &range : nullptr, turbulence[k].data());
+    samples[k] = turbulence[k].data();
+  }
+  const bool together = haveRange && fusedTurbulenceSamples(P, texelX.data(), texelRange, offsetX, ys, zs, count, samples);
+  // Elsewhere (no AVX2, Perlin's basis, a table too long for the row) sample by sample.
+  for (int k = 0; k < 4 && !together; ++k) {
+    for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offsetX[k];
+    const RowRange range{texelRange.lowest + offsetX[k], texelRange.highest + offsetX[k]};
+    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
+    turbulenceRow(P, xs.data(), ys[k], zs[k], count, finite ? &range : nullptr, samples[k]);
   }
   shadeRow(P, origin, step, count, out, valueOut,
            SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
@@ -731,25 +742,24 @@ namespace {
 // longer than the row (a step of several cells: accumulateOctave walks those) or x is not
 // finite or beyond 2^30 cells. `range`: xs' lowest and highest where the caller knows them
 // (finite), else found here.
-bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range,
-                        float* out) {
-  if (count <= 0 || !patlanes::lanesAvailable()) return false;
-  float xmin = 0.0f, xmax = 0.0f;
-  if (range != nullptr) {
-    xmin = range->lowest;
-    xmax = range->highest;
-  } else if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) {
-    return false;
-  }
+// One row's octave tables (fusedTurbulenceRow's): the columns, each octave's table into them, and
+// the sum of the octaves' weights.
+struct RowTables {
+  std::vector<float> columns;
+  std::vector<patlanes::OctaveTable> octaves;
+  std::vector<size_t> starts;
+  float weight = 0.0f;
+};
+
+// The tables of the row at (y, z) whose x lie in [xmin, xmax] (finite), into t; false where a
+// table would be much longer than the row or x * inv is beyond 2^30 cells.
+bool octaveTables(const PatParams& P, float xmin, float xmax, float y, float z, int count, RowTables& t) {
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
-  thread_local std::vector<float> columns;
-  thread_local std::vector<patlanes::OctaveTable> octaves;
-  thread_local std::vector<size_t> starts;
-  octaves.clear();
-  starts.clear();
+  t.octaves.clear();
+  t.starts.clear();
   size_t used = 0;
-  float weight = 0.0f;
+  t.weight = 0.0f;
   auto cellOf = [](float px) {
     const int32_t n = static_cast<int32_t>(px);
     return n - static_cast<int32_t>(px < static_cast<float>(n));
@@ -766,16 +776,53 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     // runs).
     const size_t start = used;
     used += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
-    if (columns.size() < used) columns.resize(used);
+    if (t.columns.size() < used) t.columns.resize(used);
     patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
                                static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
-                               columns.data() + start);
-    starts.push_back(start);
-    octaves.push_back({nullptr, lo, inv, size});
-    weight += size;
+                               t.columns.data() + start);
+    t.starts.push_back(start);
+    t.octaves.push_back({nullptr, lo, inv, size});
+    t.weight += size;
   }
-  for (size_t o = 0; o < octaves.size(); ++o) octaves[o].columns = columns.data() + starts[o];
-  patlanes::turbulenceOctaves(xs, count, octaves.data(), static_cast<int>(octaves.size()), weight, out);
+  for (size_t o = 0; o < t.octaves.size(); ++o) t.octaves[o].columns = t.columns.data() + t.starts[o];
+  return true;
+}
+
+bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range,
+                        float* out) {
+  if (count <= 0 || !patlanes::lanesAvailable()) return false;
+  float xmin = 0.0f, xmax = 0.0f;
+  if (range != nullptr) {
+    xmin = range->lowest;
+    xmax = range->highest;
+  } else if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) {
+    return false;
+  }
+  thread_local RowTables tables;
+  if (!octaveTables(P, xmin, xmax, y, z, count, tables)) return false;
+  patlanes::turbulenceOctaves(xs, count, tables.octaves.data(), static_cast<int>(tables.octaves.size()), tables.weight,
+                              out);
+  return true;
+}
+
+// veinAlbedoRow's four samples along x at once on AVX2 (patlanes::turbulenceSamples): sample k
+// at x = texelX[i] + offsetX[k], (ys[k], zs[k]), its x in [lowest + offsetX[k], highest +
+// offsetX[k]] (`range`: texelX's, finite). Each sample's tables are fusedTurbulenceRow's, and
+// turbulenceSamples' sums turbulenceOctaves', so out[k] is turbulenceRow's bit for bit. False
+// (nothing written) where fusedTurbulenceRow would be for any sample.
+bool fusedTurbulenceSamples(const PatParams& P, const float* texelX, const RowRange& range, const float offsetX[4],
+                            const float ys[4], const float zs[4], int count, float* const out[4]) {
+  if (count <= 0 || !patlanes::lanesAvailable() || P.basis != patglsl::PAT_BASIS_VALUE) return false;
+  thread_local RowTables tables[4];
+  const patlanes::OctaveTable* octaves[4];
+  for (int k = 0; k < 4; ++k) {
+    const float lowest = range.lowest + offsetX[k], highest = range.highest + offsetX[k];
+    if (!std::isfinite(lowest) || !std::isfinite(highest)) return false;
+    if (!octaveTables(P, lowest, highest, ys[k], zs[k], count, tables[k])) return false;
+    octaves[k] = tables[k].octaves.data();
+  }
+  patlanes::turbulenceSamples(texelX, offsetX, count, octaves, static_cast<int>(tables[0].octaves.size()),
+                              tables[0].weight, out);
   return true;
 }
 

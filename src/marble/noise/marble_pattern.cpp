@@ -237,18 +237,24 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     patlanes::Batch b;
     if (haveGrain) b.grain = grain.data() + i;
     // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
-    // operations), in loops the compiler vectorizes.
-    for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;
-    for (int j = 0; j < N; ++j) b.py[j] = origin.y + static_cast<float>(i + j) * step.y;
-    for (int j = 0; j < N; ++j) b.pz[j] = origin.z + static_cast<float>(i + j) * step.z;
+    // operations), formed by shadeBatch.
+    b.origin[0] = origin.x;
+    b.origin[1] = origin.y;
+    b.origin[2] = origin.z;
+    b.step[0] = step.x;
+    b.step[1] = step.y;
+    b.step[2] = step.z;
+    b.first = i;
+    float ts[4][N];
     if constexpr (std::is_same_v<Samples, SampleArrays>) {
-      for (int k = 0; k < 4; ++k) std::memcpy(b.t[k], samples.t[k] + i, sizeof b.t[k]);
+      for (int k = 0; k < 4; ++k) b.t[k] = samples.t[k] + i;
     } else {
       for (int j = 0; j < N; ++j) {
-        float ts[4];
-        samples(i + j, point(i + j), ts);
-        for (int k = 0; k < 4; ++k) b.t[k][j] = ts[k];
+        float t[4];
+        samples(i + j, point(i + j), t);
+        for (int k = 0; k < 4; ++k) ts[k][j] = t[k];
       }
+      for (int k = 0; k < 4; ++k) b.t[k] = ts[k];
     }
     ++counts.laneBatches;
     if (patlanes::shadeBatch(lanes, b)) {
@@ -256,8 +262,8 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
     } else {
       ++counts.divergedBatches;
       for (int j = 0; j < N; ++j) {
-        const float ts[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
-        put(i + j, shadeInlined(P, point(i + j), ts));
+        const float t[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
+        put(i + j, shadeInlined(P, point(i + j), t));
       }
     }
   }

@@ -257,9 +257,10 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
       for (int k = 0; k < 4; ++k) b.t[k] = ts[k];
     }
     ++counts.laneBatches;
-    if (patlanes::shadeBatch(lanes, b)) {
-      for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
-    } else {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "shadeBatch writes colours as 3 floats each");
+    b.colour = out != nullptr ? &out[i].x : nullptr;
+    b.value = valueOut != nullptr ? valueOut + i : nullptr;
+    if (!patlanes::shadeBatch(lanes, b)) {
       ++counts.divergedBatches;
       for (int j = 0; j < N; ++j) {
         const float t[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};

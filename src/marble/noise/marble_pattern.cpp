@@ -179,23 +179,23 @@ struct SampleArrays {
 // pat_grain(pat_texel_pos(P, p) * 0.6667f, 0x3c6ef372u) at the row's points p = origin + i * step
 // (pat_vein_shade_seen's grain), for a row along x: there y and z are the same at every point,
 // so the grain is one octave of value noise along x, a lerp between lattice columns (as the
-// turbulence's octaves): the columns of the cells the row spans once each, then each point's
-// lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
-// are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
-// counts up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps
-// are value3ColumnRuns'. False where the row is not along x, the lanes do not run, the
-// cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
-bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
+// turbulence's octaves): the columns of the cells the row spans, once each, in a table that
+// shadeBatch reads (vein_lanes.inc's pat_grain: each point's lerp of the two columns about it).
+// pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1) counts
+// up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps are
+// value3ColumnRuns'. The points' x, ((origin.x + float(i) * step.x) * s) * 0.6667 (s the texel
+// scale), is monotonic in i (each rounded operation is), so the row's first and last point bound
+// every point's cell. False where the row is not along x, the lanes do not run, an end is not
+// finite, the cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the
+// cells it spans.
+bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, patlanes::OctaveTable* table) {
   if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
   const float texel = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
-  xs.resize(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i)
-    xs[static_cast<size_t>(i)] = ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f;
+  auto grainX = [&](int i) { return ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f; };
+  const float xmin = std::min(grainX(0), grainX(count - 1)), xmax = std::max(grainX(0), grainX(count - 1));
   // y and z: those of point 0 (origin.y + i * 0 is the same for every i).
   const glm::vec3 p0 = patglsl::pat_texel_pos(P, origin + 0.0f * step) * 0.6667f;
-  float xmin = 0.0f, xmax = 0.0f;
-  if (!patlanes::finiteRange(xs.data(), count, &xmin, &xmax)) return false;
-  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };
+  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };  // false for NaN
   if (!inRange(xmin) || !inRange(xmax) || !inRange(p0.y) || !inRange(p0.z)) return false;
   const float iy = patglsl::floor(p0.y), iz = patglsl::floor(p0.z);
   const float fy = p0.y - iy, fz = p0.z - iz;
@@ -211,8 +211,7 @@ bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, s
   columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
   patlanes::value3ColumnRuns(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span, h00,
                              h10, h01, h11, fy, fz, columns.data());
-  const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
-  patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
+  *table = {columns.data(), lo, 1.0f, 1.0f};
   return true;
 }
 
@@ -230,12 +229,11 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
   auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
-  thread_local std::vector<float> grainX, grain;
-  grain.resize(static_cast<size_t>(std::max(count, 0)));
-  const bool haveGrain = rowGrain(P, origin, step, count, grainX, grain.data());
+  patlanes::OctaveTable grain{};
+  const bool haveGrain = rowGrain(P, origin, step, count, &grain);
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
-    if (haveGrain) b.grain = grain.data() + i;
+    if (haveGrain) b.grain = &grain;
     // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
     // operations), formed by shadeBatch.
     b.origin[0] = origin.x;

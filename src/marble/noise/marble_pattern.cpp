@@ -286,8 +286,8 @@ struct RowRange {
   float lowest, highest;
 };
 void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out);
-bool fusedTurbulenceSamples(const PatParams& P, const float* texelX, const RowRange& range, const float offsetX[4],
-                            const float ys[4], const float zs[4], int count, float* const out[4]);
+bool fusedTurbulenceSamples(const PatParams& P, float originX, float stepX, float scale, const RowRange& range,
+                            const float offsetX[4], const float ys[4], const float zs[4], int count, float* const out[4]);
 }  // namespace
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
@@ -301,16 +301,19 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
   }
   // The four samples' texel points share y and z along the row: the turbulence by rows.
   // pat_vein_sample_point is pat_texel_pos + pat_vein_sample_offset: the same sum here.
-  // The row's lowest and highest texel x, once: sample k's are those plus its offset (rounding
-  // is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where both are.
+  // The row's texel x, (origin.x + float(i) * step.x) * s, is monotonic in i (each rounded
+  // operation is), so its lowest and highest are the row's ends; sample k's are those plus its
+  // offset (rounding is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where
+  // both are.
   thread_local std::vector<float> texelX, xs, turbulence[4];
-  texelX.resize(static_cast<size_t>(count));
-  xs.resize(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i)
-    texelX[static_cast<size_t>(i)] = patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x;
+  const float scale = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
+  auto texelAt = [&](int i) { return patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x; };
   RowRange texelRange{0.0f, 0.0f};
-  const bool haveRange = count > 0 && patlanes::lanesAvailable() &&
-                         patlanes::finiteRange(texelX.data(), count, &texelRange.lowest, &texelRange.highest);
+  bool haveRange = false;
+  if (count > 0 && patlanes::lanesAvailable()) {
+    texelRange = {std::min(texelAt(0), texelAt(count - 1)), std::max(texelAt(0), texelAt(count - 1))};
+    haveRange = std::isfinite(texelRange.lowest) && std::isfinite(texelRange.highest);
+  }
   float offsetX[4], ys[4], zs[4];
   float* samples[4];
   for (int k = 0; k < 4; ++k) {
@@ -321,13 +324,19 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
     turbulence[k].resize(static_cast<size_t>(count));
     samples[k] = turbulence[k].data();
   }
-  const bool together = haveRange && fusedTurbulenceSamples(P, texelX.data(), texelRange, offsetX, ys, zs, count, samples);
-  // Elsewhere (no AVX2, Perlin's basis, a table too long for the row) sample by sample.
-  for (int k = 0; k < 4 && !together; ++k) {
-    for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offsetX[k];
-    const RowRange range{texelRange.lowest + offsetX[k], texelRange.highest + offsetX[k]};
-    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
-    turbulenceRow(P, xs.data(), ys[k], zs[k], count, finite ? &range : nullptr, samples[k]);
+  const bool together =
+      haveRange && fusedTurbulenceSamples(P, origin.x, step.x, scale, texelRange, offsetX, ys, zs, count, samples);
+  if (!together) {
+    // Elsewhere (no AVX2, Perlin's basis, a table too long for the row) sample by sample.
+    texelX.resize(static_cast<size_t>(count));
+    xs.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) texelX[static_cast<size_t>(i)] = texelAt(i);
+    for (int k = 0; k < 4; ++k) {
+      for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offsetX[k];
+      const RowRange range{texelRange.lowest + offsetX[k], texelRange.highest + offsetX[k]};
+      const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
+      turbulenceRow(P, xs.data(), ys[k], zs[k], count, finite ? &range : nullptr, samples[k]);
+    }
   }
   shadeRow(P, origin, step, count, out, valueOut,
            SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
@@ -811,12 +820,14 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
 }
 
 // veinAlbedoRow's four samples along x at once on AVX2 (patlanes::turbulenceSamples): sample k
-// at x = texelX[i] + offsetX[k], (ys[k], zs[k]), its x in [lowest + offsetX[k], highest +
-// offsetX[k]] (`range`: texelX's, finite). Each sample's tables are fusedTurbulenceRow's, and
-// turbulenceSamples' sums turbulenceOctaves', so out[k] is turbulenceRow's bit for bit. False
-// (nothing written) where fusedTurbulenceRow would be for any sample.
-bool fusedTurbulenceSamples(const PatParams& P, const float* texelX, const RowRange& range, const float offsetX[4],
-                            const float ys[4], const float zs[4], int count, float* const out[4]) {
+// at x = texelX_i + offsetX[k], (ys[k], zs[k]), texelX_i = (originX + float(i) * stepX) * scale,
+// its x in [lowest + offsetX[k], highest + offsetX[k]] (`range`: texelX's, finite). Each
+// sample's tables are fusedTurbulenceRow's, and turbulenceSamples' sums turbulenceOctaves', so
+// out[k] is turbulenceRow's bit for bit. False (nothing written) where fusedTurbulenceRow would
+// be for any sample.
+bool fusedTurbulenceSamples(const PatParams& P, float originX, float stepX, float scale, const RowRange& range,
+                            const float offsetX[4], const float ys[4], const float zs[4], int count,
+                            float* const out[4]) {
   if (count <= 0 || !patlanes::lanesAvailable() || P.basis != patglsl::PAT_BASIS_VALUE) return false;
   thread_local RowTables tables[4];
   const patlanes::OctaveTable* octaves[4];
@@ -826,7 +837,7 @@ bool fusedTurbulenceSamples(const PatParams& P, const float* texelX, const RowRa
     if (!octaveTables(P, lowest, highest, ys[k], zs[k], count, tables[k])) return false;
     octaves[k] = tables[k].octaves.data();
   }
-  patlanes::turbulenceSamples(texelX, offsetX, count, octaves, static_cast<int>(tables[0].octaves.size()),
+  patlanes::turbulenceSamples(originX, stepX, scale, offsetX, count, octaves, static_cast<int>(tables[0].octaves.size()),
                               tables[0].weight, out);
   return true;
 }

@@ -765,40 +765,49 @@ struct RowTables {
   float weight = 0.0f;
 };
 
-// The tables of the row at (y, z) whose x lie in [xmin, xmax] (finite), into t; false where a
-// table would be much longer than the row or x * inv is beyond 2^30 cells.
-bool octaveTables(const PatParams& P, float xmin, float xmax, float y, float z, int count, RowTables& t) {
+// The tables of `samples` rows at (ys[k], zs[k]) whose x lie in [xmin[k], xmax[k]] (finite),
+// into t[k]; false where a table would be much longer than the row or x * inv is beyond 2^30
+// cells. The octave's size, 1/size and period are the same for every row: the rows' tables are
+// built octave by octave, those found once.
+bool octaveTables(const PatParams& P, const float* xmin, const float* xmax, const float* ys, const float* zs, int samples,
+                  int count, RowTables* t) {
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
-  t.octaves.clear();
-  t.starts.clear();
-  size_t used = 0;
-  t.weight = 0.0f;
+  size_t used[4] = {0, 0, 0, 0};
+  for (int k = 0; k < samples; ++k) {
+    t[k].octaves.clear();
+    t[k].starts.clear();
+    t[k].weight = 0.0f;
+  }
   auto cellOf = [](float px) {
     const int32_t n = static_cast<int32_t>(px);
     return n - static_cast<int32_t>(px < static_cast<float>(n));
   };
   for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
-    const float pmin = xmin * inv, pmax = xmax * inv;
-    if (!(std::fabs(pmin) < 1073741824.0f && std::fabs(pmax) < 1073741824.0f)) return false;
-    const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
-    const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
-    if (span > 2 * static_cast<int64_t>(count) + 16) return false;
     const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const RowHashes r = rowHashes(y, z, inv, period, sh);  // accumulateTurbulence3's, for this octave
-    // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
-    // runs).
-    const size_t start = used;
-    used += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
-    if (t.columns.size() < used) t.columns.resize(used);
-    patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
-                               static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
-                               t.columns.data() + start);
-    t.starts.push_back(start);
-    t.octaves.push_back({nullptr, lo, inv, size});
-    t.weight += size;
+    for (int k = 0; k < samples; ++k) {
+      RowTables& tk = t[k];
+      const float pmin = xmin[k] * inv, pmax = xmax[k] * inv;
+      if (!(std::fabs(pmin) < 1073741824.0f && std::fabs(pmax) < 1073741824.0f)) return false;
+      const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
+      const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
+      if (span > 2 * static_cast<int64_t>(count) + 16) return false;
+      const RowHashes r = rowHashes(ys[k], zs[k], inv, period, sh);  // accumulateTurbulence3's, for this octave
+      // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
+      // runs).
+      const size_t start = used[k];
+      used[k] += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
+      if (tk.columns.size() < used[k]) tk.columns.resize(used[k]);
+      patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
+                                 static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
+                                 tk.columns.data() + start);
+      tk.starts.push_back(start);
+      tk.octaves.push_back({nullptr, lo, inv, size});
+      tk.weight += size;
+    }
   }
-  for (size_t o = 0; o < t.octaves.size(); ++o) t.octaves[o].columns = t.columns.data() + t.starts[o];
+  for (int k = 0; k < samples; ++k)
+    for (size_t o = 0; o < t[k].octaves.size(); ++o) t[k].octaves[o].columns = t[k].columns.data() + t[k].starts[o];
   return true;
 }
 
@@ -813,7 +822,7 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
     return false;
   }
   thread_local RowTables tables;
-  if (!octaveTables(P, xmin, xmax, y, z, count, tables)) return false;
+  if (!octaveTables(P, &xmin, &xmax, &y, &z, 1, count, &tables)) return false;
   patlanes::turbulenceOctaves(xs, count, tables.octaves.data(), static_cast<int>(tables.octaves.size()), tables.weight,
                               out);
   return true;
@@ -830,13 +839,15 @@ bool fusedTurbulenceSamples(const PatParams& P, float originX, float stepX, floa
                             float* const out[4]) {
   if (count <= 0 || !patlanes::lanesAvailable() || P.basis != patglsl::PAT_BASIS_VALUE) return false;
   thread_local RowTables tables[4];
-  const patlanes::OctaveTable* octaves[4];
+  float lowest[4], highest[4];
   for (int k = 0; k < 4; ++k) {
-    const float lowest = range.lowest + offsetX[k], highest = range.highest + offsetX[k];
-    if (!std::isfinite(lowest) || !std::isfinite(highest)) return false;
-    if (!octaveTables(P, lowest, highest, ys[k], zs[k], count, tables[k])) return false;
-    octaves[k] = tables[k].octaves.data();
+    lowest[k] = range.lowest + offsetX[k];
+    highest[k] = range.highest + offsetX[k];
+    if (!std::isfinite(lowest[k]) || !std::isfinite(highest[k])) return false;
   }
+  if (!octaveTables(P, lowest, highest, ys, zs, 4, count, tables)) return false;
+  const patlanes::OctaveTable* octaves[4];
+  for (int k = 0; k < 4; ++k) octaves[k] = tables[k].octaves.data();
   patlanes::turbulenceSamples(originX, stepX, scale, offsetX, count, octaves, static_cast<int>(tables[0].octaves.size()),
                               tables[0].weight, out);
   return true;

@@ -771,6 +771,7 @@ struct RowTables {
 // built octave by octave, those found once.
 bool octaveTables(const PatParams& P, const float* xmin, const float* xmax, const float* ys, const float* zs, int samples,
                   int count, RowTables* t) {
+  if (samples > 4) return false;
   const uint32_t sh = patglsl::pat_hash(P.seed);
   const float minSize = patglsl::pat_vein_min_octave(P);
   size_t used[4] = {0, 0, 0, 0};
@@ -785,6 +786,16 @@ bool octaveTables(const PatParams& P, const float* xmin, const float* xmax, cons
   };
   for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
     const float period = patglsl::pat_octave_period(P.resolution, inv);
+    // accumulateTurbulence3's row hashes, for this octave: four rows' in one lane pass.
+    RowHashes rows[4];
+    if (samples == 4) {
+      uint32_t h[4][4];
+      float fy[4], fz[4];
+      patlanes::rowHashes4(ys, zs, inv, period, sh, h, fy, fz);
+      for (int k = 0; k < 4; ++k) rows[k] = {h[k][0], h[k][1], h[k][2], h[k][3], fy[k], fz[k]};
+    } else {
+      for (int k = 0; k < samples; ++k) rows[k] = rowHashes(ys[k], zs[k], inv, period, sh);
+    }
     for (int k = 0; k < samples; ++k) {
       RowTables& tk = t[k];
       const float pmin = xmin[k] * inv, pmax = xmax[k] * inv;
@@ -792,7 +803,7 @@ bool octaveTables(const PatParams& P, const float* xmin, const float* xmax, cons
       const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
       const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
       if (span > 2 * static_cast<int64_t>(count) + 16) return false;
-      const RowHashes r = rowHashes(ys[k], zs[k], inv, period, sh);  // accumulateTurbulence3's, for this octave
+      const RowHashes& r = rows[k];
       // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
       // runs).
       const size_t start = used[k];

@@ -168,7 +168,7 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 thread_local VeinRowCounts threadVeinRowCounts;
 
 // The four samples of each point held as four arrays (the evaluated rows and the grid rows along
-// x): shadeRow copies a batch's samples with four 8-float copies instead of point by point.
+// x): shadeBatch reads a batch's samples from them in place instead of a copy point by point.
 struct SampleArrays {
   const float* t[4];
   void operator()(int i, glm::vec3, float* out) const {

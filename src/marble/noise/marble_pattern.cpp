@@ -168,7 +168,7 @@ __attribute__((flatten)) glm::vec4 shadeInlined(const PatParams& P, glm::vec3 p,
 thread_local VeinRowCounts threadVeinRowCounts;
 
 // The four samples of each point held as four arrays (the evaluated rows and the grid rows along
-// x): shadeRow copies a batch's samples with four 8-float copies instead of point by point.
+// x): shadeBatch reads a batch's samples from them in place instead of a copy point by point.
 struct SampleArrays {
   const float* t[4];
   void operator()(int i, glm::vec3, float* out) const {
@@ -179,23 +179,23 @@ struct SampleArrays {
 // pat_grain(pat_texel_pos(P, p) * 0.6667f, 0x3c6ef372u) at the row's points p = origin + i * step
 // (pat_vein_shade_seen's grain), for a row along x: there y and z are the same at every point,
 // so the grain is one octave of value noise along x, a lerp between lattice columns (as the
-// turbulence's octaves): the columns of the cells the row spans once each, then each point's
-// lerp (patlanes::turbulenceOctaves with one octave of size 1 and weight 1: 0 + v * 1 and v / 1
-// are v). pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1)
-// counts up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps
-// are value3ColumnRuns'. False where the row is not along x, the lanes do not run, the
-// cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the cells it spans.
-bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, std::vector<float>& xs, float* out) {
+// turbulence's octaves): the columns of the cells the row spans, once each, in a table that
+// shadeBatch reads (vein_lanes.inc's pat_grain: each point's lerp of the two columns about it).
+// pat_grain's operations on the same operands: its x index uint(i.x + 2^20) & (2^20 - 1) counts
+// up with the cell and wraps at 2^20 (value3ColumnRuns' runs), its corner sums and lerps are
+// value3ColumnRuns'. The points' x, ((origin.x + float(i) * step.x) * s) * 0.6667 (s the texel
+// scale), is monotonic in i (each rounded operation is), so the row's first and last point bound
+// every point's cell. False where the row is not along x, the lanes do not run, an end is not
+// finite, the cells are outside pat_grain's range [-2^20, 2^22) or the row skips most of the
+// cells it spans.
+bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, patlanes::OctaveTable* table) {
   if (count <= 0 || !patlanes::lanesAvailable() || step.y != 0.0f || step.z != 0.0f) return false;
   const float texel = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
-  xs.resize(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i)
-    xs[static_cast<size_t>(i)] = ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f;
+  auto grainX = [&](int i) { return ((origin.x + static_cast<float>(i) * step.x) * texel) * 0.6667f; };
+  const float xmin = std::min(grainX(0), grainX(count - 1)), xmax = std::max(grainX(0), grainX(count - 1));
   // y and z: those of point 0 (origin.y + i * 0 is the same for every i).
   const glm::vec3 p0 = patglsl::pat_texel_pos(P, origin + 0.0f * step) * 0.6667f;
-  float xmin = 0.0f, xmax = 0.0f;
-  if (!patlanes::finiteRange(xs.data(), count, &xmin, &xmax)) return false;
-  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };
+  auto inRange = [](float v) { return v >= -1048576.0f && v < 4194304.0f; };  // false for NaN
   if (!inRange(xmin) || !inRange(xmax) || !inRange(p0.y) || !inRange(p0.z)) return false;
   const float iy = patglsl::floor(p0.y), iz = patglsl::floor(p0.z);
   const float fy = p0.y - iy, fz = p0.z - iz;
@@ -211,8 +211,7 @@ bool rowGrain(const PatParams& P, glm::vec3 origin, glm::vec3 step, int count, s
   columns.resize(static_cast<size_t>(span) + simd::kLanes);  // 8 readable floats past the last column
   patlanes::value3ColumnRuns(static_cast<int64_t>(static_cast<uint32_t>(lo + 1048576) & 1048575u), 1048576, span, h00,
                              h10, h01, h11, fy, fz, columns.data());
-  const patlanes::OctaveTable grain{columns.data(), lo, 1.0f, 1.0f};
-  patlanes::turbulenceOctaves(xs.data(), count, &grain, 1, 1.0f, out);
+  *table = {columns.data(), lo, 1.0f, 1.0f};
   return true;
 }
 
@@ -230,34 +229,40 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
   auto point = [&](int i) { return origin + static_cast<float>(i) * step; };
   int i = 0;
   VeinRowCounts& counts = threadVeinRowCounts;
-  thread_local std::vector<float> grainX, grain;
-  grain.resize(static_cast<size_t>(std::max(count, 0)));
-  const bool haveGrain = rowGrain(P, origin, step, count, grainX, grain.data());
+  patlanes::OctaveTable grain{};
+  const bool haveGrain = rowGrain(P, origin, step, count, &grain);
   for (; patlanes::lanesAvailable() && i + N <= count; i += N) {
     patlanes::Batch b;
-    if (haveGrain) b.grain = grain.data() + i;
+    if (haveGrain) b.grain = &grain;
     // point(i + j) component by component (glm's vec3 arithmetic is per component: the same
-    // operations), in loops the compiler vectorizes.
-    for (int j = 0; j < N; ++j) b.px[j] = origin.x + static_cast<float>(i + j) * step.x;
-    for (int j = 0; j < N; ++j) b.py[j] = origin.y + static_cast<float>(i + j) * step.y;
-    for (int j = 0; j < N; ++j) b.pz[j] = origin.z + static_cast<float>(i + j) * step.z;
+    // operations), formed by shadeBatch.
+    b.origin[0] = origin.x;
+    b.origin[1] = origin.y;
+    b.origin[2] = origin.z;
+    b.step[0] = step.x;
+    b.step[1] = step.y;
+    b.step[2] = step.z;
+    b.first = i;
+    float ts[4][N];
     if constexpr (std::is_same_v<Samples, SampleArrays>) {
-      for (int k = 0; k < 4; ++k) std::memcpy(b.t[k], samples.t[k] + i, sizeof b.t[k]);
+      for (int k = 0; k < 4; ++k) b.t[k] = samples.t[k] + i;
     } else {
       for (int j = 0; j < N; ++j) {
-        float ts[4];
-        samples(i + j, point(i + j), ts);
-        for (int k = 0; k < 4; ++k) b.t[k][j] = ts[k];
+        float t[4];
+        samples(i + j, point(i + j), t);
+        for (int k = 0; k < 4; ++k) ts[k][j] = t[k];
       }
+      for (int k = 0; k < 4; ++k) b.t[k] = ts[k];
     }
     ++counts.laneBatches;
-    if (patlanes::shadeBatch(lanes, b)) {
-      for (int j = 0; j < N; ++j) put(i + j, glm::vec4(b.shade[0][j], b.shade[1][j], b.shade[2][j], b.shade[3][j]));
-    } else {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "shadeBatch writes colours as 3 floats each");
+    b.colour = out != nullptr ? &out[i].x : nullptr;
+    b.value = valueOut != nullptr ? valueOut + i : nullptr;
+    if (!patlanes::shadeBatch(lanes, b)) {
       ++counts.divergedBatches;
       for (int j = 0; j < N; ++j) {
-        const float ts[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
-        put(i + j, shadeInlined(P, point(i + j), ts));
+        const float t[4] = {b.t[0][j], b.t[1][j], b.t[2][j], b.t[3][j]};
+        put(i + j, shadeInlined(P, point(i + j), t));
       }
     }
   }
@@ -281,6 +286,8 @@ struct RowRange {
   float lowest, highest;
 };
 void turbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range, float* out);
+bool fusedTurbulenceSamples(const PatParams& P, float originX, float stepX, float scale, const RowRange& range,
+                            const float offsetX[4], const float ys[4], const float zs[4], int count, float* const out[4]);
 }  // namespace
 
 void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int count, glm::vec3* out, float* valueOut) {
@@ -294,24 +301,42 @@ void veinAlbedoRow(const Material& m, glm::vec3 origin, glm::vec3 step, int coun
   }
   // The four samples' texel points share y and z along the row: the turbulence by rows.
   // pat_vein_sample_point is pat_texel_pos + pat_vein_sample_offset: the same sum here.
-  // The row's lowest and highest texel x, once: sample k's are those plus its offset (rounding
-  // is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where both are.
+  // The row's texel x, (origin.x + float(i) * step.x) * s, is monotonic in i (each rounded
+  // operation is), so its lowest and highest are the row's ends; sample k's are those plus its
+  // offset (rounding is monotonic: the lowest of fl(x_i + o) is fl(lowest + o)), finite where
+  // both are.
   thread_local std::vector<float> texelX, xs, turbulence[4];
-  texelX.resize(static_cast<size_t>(count));
-  xs.resize(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i)
-    texelX[static_cast<size_t>(i)] = patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x;
+  const float scale = patglsl::pat_texel_pos(P, glm::vec3(1.0f)).x;  // 1 * s is s
+  auto texelAt = [&](int i) { return patglsl::pat_texel_pos(P, origin + static_cast<float>(i) * step).x; };
   RowRange texelRange{0.0f, 0.0f};
-  const bool haveRange = count > 0 && patlanes::lanesAvailable() &&
-                         patlanes::finiteRange(texelX.data(), count, &texelRange.lowest, &texelRange.highest);
+  bool haveRange = false;
+  if (count > 0 && patlanes::lanesAvailable()) {
+    texelRange = {std::min(texelAt(0), texelAt(count - 1)), std::max(texelAt(0), texelAt(count - 1))};
+    haveRange = std::isfinite(texelRange.lowest) && std::isfinite(texelRange.highest);
+  }
+  float offsetX[4], ys[4], zs[4];
+  float* samples[4];
   for (int k = 0; k < 4; ++k) {
-    const glm::vec3 offset = patglsl::pat_vein_sample_offset(P, k);
-    for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offset.x;
-    const RowRange range{texelRange.lowest + offset.x, texelRange.highest + offset.x};
-    const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
+    offsetX[k] = patglsl::pat_vein_sample_offset(P, k).x;
     const glm::vec3 q = patglsl::pat_vein_sample_point(P, origin, k);
+    ys[k] = q.y;
+    zs[k] = q.z;
     turbulence[k].resize(static_cast<size_t>(count));
-    turbulenceRow(P, xs.data(), q.y, q.z, count, finite ? &range : nullptr, turbulence[k].data());
+    samples[k] = turbulence[k].data();
+  }
+  const bool together =
+      haveRange && fusedTurbulenceSamples(P, origin.x, step.x, scale, texelRange, offsetX, ys, zs, count, samples);
+  if (!together) {
+    // Elsewhere (no AVX2, Perlin's basis, a table too long for the row) sample by sample.
+    texelX.resize(static_cast<size_t>(count));
+    xs.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) texelX[static_cast<size_t>(i)] = texelAt(i);
+    for (int k = 0; k < 4; ++k) {
+      for (size_t i = 0; i < xs.size(); ++i) xs[i] = texelX[i] + offsetX[k];
+      const RowRange range{texelRange.lowest + offsetX[k], texelRange.highest + offsetX[k]};
+      const bool finite = haveRange && std::isfinite(range.lowest) && std::isfinite(range.highest);
+      turbulenceRow(P, xs.data(), ys[k], zs[k], count, finite ? &range : nullptr, samples[k]);
+    }
   }
   shadeRow(P, origin, step, count, out, valueOut,
            SampleArrays{{turbulence[0].data(), turbulence[1].data(), turbulence[2].data(), turbulence[3].data()}});
@@ -731,6 +756,72 @@ namespace {
 // longer than the row (a step of several cells: accumulateOctave walks those) or x is not
 // finite or beyond 2^30 cells. `range`: xs' lowest and highest where the caller knows them
 // (finite), else found here.
+// One row's octave tables (fusedTurbulenceRow's): the columns, each octave's table into them, and
+// the sum of the octaves' weights.
+struct RowTables {
+  std::vector<float> columns;
+  std::vector<patlanes::OctaveTable> octaves;
+  std::vector<size_t> starts;
+  float weight = 0.0f;
+};
+
+// The tables of `samples` rows at (ys[k], zs[k]) whose x lie in [xmin[k], xmax[k]] (finite),
+// into t[k]; false where a table would be much longer than the row or x * inv is beyond 2^30
+// cells. The octave's size, 1/size and period are the same for every row: the rows' tables are
+// built octave by octave, those found once.
+bool octaveTables(const PatParams& P, const float* xmin, const float* xmax, const float* ys, const float* zs, int samples,
+                  int count, RowTables* t) {
+  if (samples > 4) return false;
+  const uint32_t sh = patglsl::pat_hash(P.seed);
+  const float minSize = patglsl::pat_vein_min_octave(P);
+  size_t used[4] = {0, 0, 0, 0};
+  for (int k = 0; k < samples; ++k) {
+    t[k].octaves.clear();
+    t[k].starts.clear();
+    t[k].weight = 0.0f;
+  }
+  auto cellOf = [](float px) {
+    const int32_t n = static_cast<int32_t>(px);
+    return n - static_cast<int32_t>(px < static_cast<float>(n));
+  };
+  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
+    const float period = patglsl::pat_octave_period(P.resolution, inv);
+    // accumulateTurbulence3's row hashes, for this octave: four rows' in one lane pass.
+    RowHashes rows[4];
+    if (samples == 4) {
+      uint32_t h[4][4];
+      float fy[4], fz[4];
+      patlanes::rowHashes4(ys, zs, inv, period, sh, h, fy, fz);
+      for (int k = 0; k < 4; ++k) rows[k] = {h[k][0], h[k][1], h[k][2], h[k][3], fy[k], fz[k]};
+    } else {
+      for (int k = 0; k < samples; ++k) rows[k] = rowHashes(ys[k], zs[k], inv, period, sh);
+    }
+    for (int k = 0; k < samples; ++k) {
+      RowTables& tk = t[k];
+      const float pmin = xmin[k] * inv, pmax = xmax[k] * inv;
+      if (!(std::fabs(pmin) < 1073741824.0f && std::fabs(pmax) < 1073741824.0f)) return false;
+      const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
+      const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
+      if (span > 2 * static_cast<int64_t>(count) + 16) return false;
+      const RowHashes& r = rows[k];
+      // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
+      // runs).
+      const size_t start = used[k];
+      used[k] += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
+      if (tk.columns.size() < used[k]) tk.columns.resize(used[k]);
+      patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
+                                 static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
+                                 tk.columns.data() + start);
+      tk.starts.push_back(start);
+      tk.octaves.push_back({nullptr, lo, inv, size});
+      tk.weight += size;
+    }
+  }
+  for (int k = 0; k < samples; ++k)
+    for (size_t o = 0; o < t[k].octaves.size(); ++o) t[k].octaves[o].columns = t[k].columns.data() + t[k].starts[o];
+  return true;
+}
+
 bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, int count, const RowRange* range,
                         float* out) {
   if (count <= 0 || !patlanes::lanesAvailable()) return false;
@@ -741,41 +832,35 @@ bool fusedTurbulenceRow(const PatParams& P, const float* xs, float y, float z, i
   } else if (!patlanes::finiteRange(xs, count, &xmin, &xmax)) {
     return false;
   }
-  const uint32_t sh = patglsl::pat_hash(P.seed);
-  const float minSize = patglsl::pat_vein_min_octave(P);
-  thread_local std::vector<float> columns;
-  thread_local std::vector<patlanes::OctaveTable> octaves;
-  thread_local std::vector<size_t> starts;
-  octaves.clear();
-  starts.clear();
-  size_t used = 0;
-  float weight = 0.0f;
-  auto cellOf = [](float px) {
-    const int32_t n = static_cast<int32_t>(px);
-    return n - static_cast<int32_t>(px < static_cast<float>(n));
-  };
-  for (float size = P.turbSize, inv = 1.0f / P.turbSize; size >= minSize; size *= 0.5f, inv *= 2.0f) {
-    const float pmin = xmin * inv, pmax = xmax * inv;
-    if (!(std::fabs(pmin) < 1073741824.0f && std::fabs(pmax) < 1073741824.0f)) return false;
-    const int32_t lo = cellOf(pmin), hi = cellOf(pmax);
-    const int64_t span = static_cast<int64_t>(hi) - lo + 2;  // the cells and the column after the last
-    if (span > 2 * static_cast<int64_t>(count) + 16) return false;
-    const float period = patglsl::pat_octave_period(P.resolution, inv);
-    const RowHashes r = rowHashes(y, z, inv, period, sh);  // accumulateTurbulence3's, for this octave
-    // The columns of the lattice indices pat_wrap(lo), then pat_next of each (accumulateOctave's
-    // runs).
-    const size_t start = used;
-    used += static_cast<size_t>(span) + simd::kLanes;  // 8 floats past the last column (read, and written)
-    if (columns.size() < used) columns.resize(used);
-    patlanes::value3ColumnRuns(static_cast<int64_t>(patglsl::pat_wrap(static_cast<float>(lo), period)),
-                               static_cast<int64_t>(period), span, r.h00, r.h10, r.h01, r.h11, r.fy, r.fz,
-                               columns.data() + start);
-    starts.push_back(start);
-    octaves.push_back({nullptr, lo, inv, size});
-    weight += size;
+  thread_local RowTables tables;
+  if (!octaveTables(P, &xmin, &xmax, &y, &z, 1, count, &tables)) return false;
+  patlanes::turbulenceOctaves(xs, count, tables.octaves.data(), static_cast<int>(tables.octaves.size()), tables.weight,
+                              out);
+  return true;
+}
+
+// veinAlbedoRow's four samples along x at once on AVX2 (patlanes::turbulenceSamples): sample k
+// at x = texelX_i + offsetX[k], (ys[k], zs[k]), texelX_i = (originX + float(i) * stepX) * scale,
+// its x in [lowest + offsetX[k], highest + offsetX[k]] (`range`: texelX's, finite). Each
+// sample's tables are fusedTurbulenceRow's, and turbulenceSamples' sums turbulenceOctaves', so
+// out[k] is turbulenceRow's bit for bit. False (nothing written) where fusedTurbulenceRow would
+// be for any sample.
+bool fusedTurbulenceSamples(const PatParams& P, float originX, float stepX, float scale, const RowRange& range,
+                            const float offsetX[4], const float ys[4], const float zs[4], int count,
+                            float* const out[4]) {
+  if (count <= 0 || !patlanes::lanesAvailable() || P.basis != patglsl::PAT_BASIS_VALUE) return false;
+  thread_local RowTables tables[4];
+  float lowest[4], highest[4];
+  for (int k = 0; k < 4; ++k) {
+    lowest[k] = range.lowest + offsetX[k];
+    highest[k] = range.highest + offsetX[k];
+    if (!std::isfinite(lowest[k]) || !std::isfinite(highest[k])) return false;
   }
-  for (size_t o = 0; o < octaves.size(); ++o) octaves[o].columns = columns.data() + starts[o];
-  patlanes::turbulenceOctaves(xs, count, octaves.data(), static_cast<int>(octaves.size()), weight, out);
+  if (!octaveTables(P, lowest, highest, ys, zs, 4, count, tables)) return false;
+  const patlanes::OctaveTable* octaves[4];
+  for (int k = 0; k < 4; ++k) octaves[k] = tables[k].octaves.data();
+  patlanes::turbulenceSamples(originX, stepX, scale, offsetX, count, octaves, static_cast<int>(tables[0].octaves.size()),
+                              tables[0].weight, out);
   return true;
 }
 

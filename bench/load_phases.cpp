@@ -1,6 +1,6 @@
 // marble_load_phases: loadMesh's steps timed one by one (issue 20, "loading at disk speed"): the
-// file read, the parse, duplicate triangles, up axis and normalization, the crease normals, and
-// the whole loadMesh for comparison. Medians over interleaved runs of wall time and of the
+// file read, the parse, up axis and normalization, the points (equal positions), duplicate
+// triangles, the crease normals, and the whole loadMesh for comparison. Medians over interleaved runs of wall time and of the
 // process's CPU time (all threads): on a shared machine the CPU time is the steadier figure.
 //
 //   marble_load_phases [--runs N] [--up z] [--crease DEG] FILE...      (.obj .ply .stl)
@@ -20,6 +20,7 @@
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/point_ids.h"
 #include "marble/mesh/vertex_normals.h"
 
 namespace {
@@ -45,7 +46,7 @@ bool sameMesh(const marble::Mesh& a, const marble::Mesh& b) {
          same(a.indices, b.indices);
 }
 
-constexpr const char* kPhases[] = {"read", "parse", "duplicates", "up + normalize", "normals", "sum", "loadMesh"};
+constexpr const char* kPhases[] = {"read", "parse", "up + normalize", "points", "duplicates", "normals", "sum", "loadMesh"};
 constexpr size_t kPhaseCount = std::size(kPhases);
 
 // One load, step by step; adds each step's wall and CPU time.
@@ -70,12 +71,14 @@ marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, f
   marble::Mesh mesh = ext == ".obj" ? md::loadObj(file, data) : ext == ".ply" ? md::loadPly(file, data) : md::loadStl(file, data);
   { std::string().swap(data); }
   lap();
-  marble::removeDuplicateTriangles(mesh);
-  lap();
   marble::applyUpAxis(mesh, up);
   marble::normalizeMesh(mesh, file);
   lap();
-  if (mesh.normals.empty()) marble::computeVertexNormals(mesh, crease);
+  const std::vector<uint32_t> points = marble::pointIds(mesh.positions);
+  lap();
+  marble::removeDuplicateTriangles(mesh, points);
+  lap();
+  if (mesh.normals.empty()) marble::computeVertexNormals(mesh, crease, points);
   lap();
   wall[phase].push_back(wallMs() - w0);
   cpu[phase].push_back(cpuMs() - c0);

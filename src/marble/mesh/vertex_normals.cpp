@@ -6,55 +6,19 @@
 #include "marble/mesh/vertex_normals.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 #include <numeric>
-#include <mutex>
 #include <unordered_map>
 
 #include "marble/core/parallel_for.h"
+#include "marble/mesh/point_ids.h"
 
 namespace marble {
 namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
-
-// Point id per render vertex: vertices at exactly the same position share one (+0 and -0 equal);
-// the id is the lowest index of a vertex at that position. Only the ids' equality matters below,
-// so a hash table (one pass) gives the same normals as sorting the positions did (n log n
-// comparisons of three floats: 0.35 s of the 1.6 M-triangle dragon's load).
-uint64_t positionHash(glm::vec3 p) {
-  auto word = [](float f) { return f == 0.0f ? 0u : std::bit_cast<uint32_t>(f); };  // -0 -> +0
-  uint64_t h = (static_cast<uint64_t>(word(p.x)) << 32 | word(p.y)) * 0x9E3779B97F4A7C15ull;
-  h = (h ^ word(p.z) ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;
-  return h ^ (h >> 29);
-}
-
-std::vector<uint32_t> pointIds(const std::vector<glm::vec3>& positions) {
-  const size_t n = positions.size();
-  size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
-  const size_t mask = capacity - 1;
-  std::vector<uint32_t> slots(capacity, kNone);  // a vertex index: the first at its position
-  std::vector<uint32_t> id(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    const glm::vec3 p = positions[i];
-    for (size_t slot = positionHash(p) & mask;; slot = (slot + 1) & mask) {
-      const uint32_t k = slots[slot];
-      if (k == kNone) {
-        slots[slot] = i;
-        id[i] = i;
-        break;
-      }
-      if (positions[k] == p) {
-        id[i] = k;
-        break;
-      }
-    }
-  }
-  return id;
-}
 
 // A corner as its point's fan pass sees it (filed under its point by a counting sort, in corner
 // order): the corner, its render vertex, the points of the triangle's other two corners, and the
@@ -107,9 +71,12 @@ constexpr uint32_t kCopyMark = 0x80000000u;
 }  // namespace
 
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
+  computeVertexNormals(mesh, creaseAngleDeg, pointIds(mesh.positions));
+}
+
+void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
-  const std::vector<uint32_t> point = pointIds(mesh.positions);
 
   // Per triangle: unit normal (zero for degenerate or out-of-range triangles, which take no part);
   // per corner: its angle.

@@ -1,16 +1,21 @@
 // Angle-weighted vertex normals with a crease angle (vertex_normals.h): points by exact position
-// (hashed), the corners filed under their points (a counting sort), then point by point (over
-// threads) the smooth edges, the fans of corners, one normal per fan and the render vertices
-// duplicated where one vertex spans several fans. Bit for bit the result of the sort-based
-// reference (tests/vertex_normals_reference.h).
+// (point_ids.h), each triangle's normal and angles computed as its corners are filed under their
+// points (a counting sort), then point by point the smooth edges, the fans of corners, one normal
+// per fan and the render vertices duplicated where one vertex spans several fans; both passes
+// over threads. Bit for bit the result of the sort-based reference
+// (tests/vertex_normals_reference.h): the same fans, each fan's sum added in corner order, the
+// copies numbered in the order of their first corners.
 #include "marble/mesh/vertex_normals.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include "marble/core/parallel_for.h"
 #include "marble/mesh/point_ids.h"
@@ -21,9 +26,10 @@ namespace {
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 
 // A corner as its point's fan pass sees it (filed under its point by a counting sort, in corner
-// order): the corner, its render vertex, the points of the triangle's other two corners, and the
-// triangle's normal and the corner's angle. (Copied in, so that the pass reads one list per point
-// instead of gathering normals from all over the mesh: the gather's cache misses were most of its time.)
+// order): the corner, its render vertex, the points of the triangle's other two corners, the
+// triangle's normal (zero: the triangle takes no part) and the corner's angle. (Carried in the
+// record so that the pass reads one list per point: gathering the normals from per-triangle
+// arrays instead cost cache misses that were most of the pass's time.)
 struct PointCorner {
   uint32_t corner;
   uint32_t vertex;
@@ -39,9 +45,6 @@ struct EdgeEnd {
   uint32_t other;
   uint32_t cornerAndLeaves;  // list index << 1 | leaves
 };
-
-uint32_t nextCorner(uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
-uint32_t prevCorner(uint32_t c) { return c - c % 3 + (c % 3 + 2) % 3; }
 
 // Union-find over one point's corners (list indices); the root of a set is its lowest index, i.e.
 // its first corner in file order -- the fan's corner the global union-find of the reference
@@ -77,54 +80,79 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
+  if (point.size() != nv) throw std::invalid_argument("computeVertexNormals: one point id per vertex expected");
 
-  // Per triangle: unit normal (zero for degenerate or out-of-range triangles, which take no part);
-  // per corner: its angle.
-  std::vector<glm::vec3> faceNormal(corners / 3, glm::vec3(0.0f));
-  std::vector<float> cornerAngle(corners, 0.0f);
-  // Triangles are independent: split over threads (each writes only its own entries).
-  parallelFor(corners / 3, 50000, [&](size_t begin, size_t end) {
-    for (size_t t = begin; t < end; ++t) {
-      const uint32_t* v = &mesh.indices[3 * t];
-      if (v[0] >= nv || v[1] >= nv || v[2] >= nv) continue;
-      if (point[v[0]] == point[v[1]] || point[v[1]] == point[v[2]] || point[v[0]] == point[v[2]]) continue;
-      const glm::dvec3 p[3] = {glm::dvec3(mesh.positions[v[0]]), glm::dvec3(mesh.positions[v[1]]),
-                               glm::dvec3(mesh.positions[v[2]])};
-      const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-      const double len = glm::length(n);
-      if (!(len > 0.0) || !std::isfinite(len)) continue;
-      faceNormal[t] = glm::vec3(n / len);
-      for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-        cornerAngle[3 * t + k] = static_cast<float>(std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2)));
+  const size_t triangles = corners / 3;
+  const bool crease = creaseAngleDeg < kNoCreaseDeg;
+  const float cosCrease = static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0));
+  // A triangle takes part when its indices are in range, its three points differ and its normal
+  // is finite and not zero; the first two are checked here, the normal when it is made.
+  auto trianglePoints = [&](size_t t, uint32_t q[3]) {
+    const uint32_t* v = &mesh.indices[3 * t];
+    if (v[0] >= nv || v[1] >= nv || v[2] >= nv) return false;
+    for (int k = 0; k < 3; ++k) q[k] = point[v[k]];
+    return q[0] != q[1] && q[1] != q[2] && q[0] != q[2];
+  };
+
+  // The corners filed under their points, in corner order within each point (a stable counting
+  // sort), each with its triangle's other two points, normal and its angle: every edge at a point
+  // is seen from the point's own corners, so fans are found point by point with no table over
+  // all edges. Over threads: the triangles split in parts, each part counted into its own array,
+  // the counts turned into each part's places (part 0's corners at a point before part 1's: still
+  // corner order), then each part's triangles measured and filed.
+  const unsigned parts = workerThreadCount(triangles, 50000, 4);
+  auto partBegin = [&](size_t i) { return triangles * i / parts; };
+  std::vector<std::vector<uint32_t>> fill(parts);  // [part][point]: a count, then the next place
+  parallelFor(parts, 1, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      fill[i].assign(nv, 0);
+      uint32_t q[3];
+      for (size_t t = partBegin(i); t < partBegin(i + 1); ++t)
+        if (trianglePoints(t, q))
+          for (int k = 0; k < 3; ++k) ++fill[i][q[k]];
+    }
+  });
+  std::vector<uint32_t> pointStart(nv + 1);
+  uint32_t filed = 0;
+  for (size_t p = 0; p < nv; ++p) {
+    pointStart[p] = filed;
+    for (unsigned i = 0; i < parts; ++i) filed += std::exchange(fill[i][p], filed);
+  }
+  pointStart[nv] = filed;
+  // (Not zeroed first: every element is written below. Transparent huge pages were tried for
+  // this scattered fill: faster on a process's later loads, slower on its first, where the kernel
+  // compacts memory to find them.)
+  std::unique_ptr<PointCorner[]> byPointStore(new PointCorner[filed]);
+  PointCorner* const byPointData = byPointStore.get();
+  std::vector<uint8_t> usableTriangle(triangles, 0);
+  parallelFor(parts, 1, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      uint32_t q[3];
+      for (size_t t = partBegin(i); t < partBegin(i + 1); ++t) {
+        if (!trianglePoints(t, q)) continue;
+        // The unit normal in double (zero: the triangle takes no part), each corner's angle.
+        const uint32_t* v = &mesh.indices[3 * t];
+        const glm::dvec3 p[3] = {glm::dvec3(mesh.positions[v[0]]), glm::dvec3(mesh.positions[v[1]]),
+                                 glm::dvec3(mesh.positions[v[2]])};
+        const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+        const double len = glm::length(n);
+        glm::vec3 faceNormal(0.0f);
+        float angle[3] = {0.0f, 0.0f, 0.0f};
+        if (len > 0.0 && std::isfinite(len)) {
+          faceNormal = glm::vec3(n / len);
+          usableTriangle[t] = faceNormal != glm::vec3(0.0f);
+          for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
+            angle[k] = static_cast<float>(std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2)));
+          }
+        }
+        for (uint32_t k = 0; k < 3; ++k)
+          byPointData[fill[i][q[k]]++] = {static_cast<uint32_t>(3 * t + k), v[k], q[(k + 1) % 3], q[(k + 2) % 3],
+                                          faceNormal, angle[k]};
       }
     }
   });
-  auto usable = [&](size_t t) { return faceNormal[t] != glm::vec3(0.0f); };
-
-  const bool crease = creaseAngleDeg < kNoCreaseDeg;
-  const float cosCrease = static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0));
-
-  // The usable corners filed under their points, in corner order within each point (a stable
-  // counting sort), each with its triangle's other two points: every edge at a point is seen from
-  // the point's own corners, so fans are found point by point with no table over all edges.
-  std::vector<uint32_t> cornerPoint(corners);
-  std::vector<uint32_t> pointStart(nv + 1, 0);
-  for (uint32_t c = 0; c < corners; ++c) {
-    const uint32_t v = mesh.indices[c];
-    cornerPoint[c] = v < nv ? point[v] : 0;  // (an out-of-range corner's triangle is not usable)
-    if (usable(c / 3)) ++pointStart[cornerPoint[c] + 1];
-  }
-  for (size_t p = 0; p < nv; ++p) pointStart[p + 1] += pointStart[p];
-  std::vector<PointCorner> byPoint(pointStart[nv]);
-  {
-    std::vector<uint32_t> fill(pointStart.begin(), pointStart.end() - 1);
-    for (uint32_t c = 0; c < corners; ++c)
-      if (usable(c / 3))
-        byPoint[fill[cornerPoint[c]]++] = {c,           mesh.indices[c], cornerPoint[nextCorner(c)], cornerPoint[prevCorner(c)],
-                                           faceNormal[c / 3], cornerAngle[c]};
-  }
-  { std::vector<uint32_t>().swap(cornerPoint); }
+  { std::vector<std::vector<uint32_t>>().swap(fill); }
 
   auto unitOr = [](glm::vec3 v, glm::vec3 fallback) {
     const float len = glm::length(v);
@@ -146,12 +174,18 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     std::vector<Copy> found;
     std::unordered_map<uint64_t, uint32_t> pairFirst;  // (vertex, fan root) -> first corner, rare
     for (size_t p = pointBegin; p < pointEnd; ++p) {
-      const PointCorner* const list = byPoint.data() + pointStart[p];
+      const PointCorner* const list = byPointData + pointStart[p];
       const uint32_t m = pointStart[p + 1] - pointStart[p];
       if (m == 0) continue;
+      // A corner of a triangle without a normal (zero area: a degenerate one) takes no part.
+      auto takesPart = [&](uint32_t i) { return list[i].faceNormal != glm::vec3(0.0f); };
       root.resize(m);
       if (!crease) {
-        std::fill(root.begin(), root.end(), 0u);  // one fan: every corner of the point
+        // One fan: every corner of the point, its first the first that takes part.
+        uint32_t first = 0;
+        while (first < m && !takesPart(first)) ++first;
+        if (first == m) continue;
+        std::fill(root.begin(), root.end(), first);
       } else {
         std::iota(root.begin(), root.end(), 0u);
         // Each edge at the point, with the corners that use it: an edge leaves the point at a
@@ -161,6 +195,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
         // point with very many edges.
         ends.clear();
         for (uint32_t i = 0; i < m; ++i) {
+          if (!takesPart(i)) continue;
           ends.push_back({list[i].next, i << 1 | 1u});
           ends.push_back({list[i].prev, i << 1});
         }
@@ -189,9 +224,11 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
       // One normal per fan: its faces' normals weighted by their corners' angles, added in corner
       // order (the reference's order, so the same float sums).
       sum.assign(m, glm::vec3(0.0f));
-      for (uint32_t i = 0; i < m; ++i) sum[root[i]] += list[i].faceNormal * list[i].angle;
+      for (uint32_t i = 0; i < m; ++i)
+        if (takesPart(i)) sum[root[i]] += list[i].faceNormal * list[i].angle;
       bool pairsUsed = false;
       for (uint32_t i = 0; i < m; ++i) {
+        if (!takesPart(i)) continue;
         const uint32_t c = list[i].corner, v = list[i].vertex, r = root[i], fan = list[r].corner;
         if (vertexFan[v] == kNone) {
           vertexFan[v] = fan;
@@ -214,7 +251,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     const std::lock_guard<std::mutex> lock(copiesMutex);
     copies.insert(copies.end(), found.begin(), found.end());
   });
-  { std::vector<PointCorner>().swap(byPoint); }
+  byPointStore.reset();
 
   // The copies numbered in the order of their first corners (the reference's order): each marked
   // corner takes its pair's index, which the pair's first corner (earlier) received.
@@ -226,7 +263,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   size_t next = 0;
   for (uint32_t c = 0; c < corners; ++c) {
     const uint32_t x = mesh.indices[c];
-    if (!(x & kCopyMark) || !usable(c / 3)) continue;  // (an unusable corner is never marked)
+    if (!(x & kCopyMark) || !usableTriangle[c / 3]) continue;  // (an index out of range is no mark)
     const uint32_t first = x & ~kCopyMark;
     if (first != c) {
       mesh.indices[c] = mesh.indices[first];

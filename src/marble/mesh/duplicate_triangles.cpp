@@ -1,5 +1,6 @@
 #include "marble/mesh/duplicate_triangles.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -13,8 +14,10 @@ namespace {
 
 using Key = std::array<uint32_t, 3>;
 
-// The triangle's points rotated so that the lowest comes first: one key for all three rotations,
-// a different one for the reversed winding. (Points are positions compared bit for bit with
+// The triangle's smallest rotation (as a sequence of points): one key for all three rotations, a
+// different one for the reversed winding. (With three distinct points it starts at the lowest;
+// a triangle with a repeated point needs the full comparison: "lowest first" would give (a, b, a)
+// and its rotation (a, a, b) two keys.) (Points are positions compared bit for bit with
 // -0 == +0, point_ids.h: equal keys are exactly equal corner positions in the same cyclic order.)
 // An index out of range (only possible through the API: loadMesh checks them first) is its own
 // point, above every real one.
@@ -22,6 +25,8 @@ Key canonical(const Mesh& mesh, const std::vector<uint32_t>& point, size_t t) {
   const uint32_t n = static_cast<uint32_t>(point.size());
   auto of = [&](uint32_t v) { return v < n ? point[v] : v; };
   const Key c = {of(mesh.indices[3 * t]), of(mesh.indices[3 * t + 1]), of(mesh.indices[3 * t + 2])};
+  if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+    return std::min({c, Key{c[1], c[2], c[0]}, Key{c[2], c[0], c[1]}});
   size_t first = 0;
   if (c[1] < c[first]) first = 1;
   if (c[2] < c[first]) first = 2;

@@ -18,7 +18,6 @@
 #include <utility>
 
 #include "marble/core/parallel_for.h"
-#include "marble/mesh/corner_angle.h"
 #include "marble/mesh/point_ids.h"
 
 namespace marble {
@@ -144,7 +143,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
           usableTriangle[t] = faceNormal != glm::vec3(0.0f);
           for (int k = 0; k < 3; ++k) {
             const glm::dvec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-            angle[k] = mesh_detail::cornerAngle(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+            angle[k] = static_cast<float>(std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2)));
           }
         }
         for (uint32_t k = 0; k < 3; ++k)

@@ -145,10 +145,25 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     }
   }
 
-  // One normal per fan: its faces' normals weighted by their corners' angles.
-  std::vector<glm::vec3> fanSum(corners, glm::vec3(0.0f));
-  for (uint32_t c = 0; c < corners; ++c)
-    if (usable(c / 3)) fanSum[fans.find(c)] += faceNormal[c / 3] * cornerAngle[c];
+  // One normal per fan: its faces' normals weighted by their corners' angles, added in corner
+  // order. The fans numbered in the order of their first corners as they are met: a set's root is
+  // its lowest corner, so a corner that is its own root starts a fan, and any other's root was
+  // numbered before it. (One compact sum per fan and one root search per corner, instead of a
+  // sum per corner -- 57 MB for 1.6 M triangles -- and a second search in the pass below.)
+  std::vector<uint32_t> fanOf(corners, kNone);
+  std::vector<glm::vec3> fanSum;
+  for (uint32_t c = 0; c < corners; ++c) {
+    if (!usable(c / 3)) continue;
+    const uint32_t root = fans.find(c);
+    if (root == c) {
+      fanOf[c] = static_cast<uint32_t>(fanSum.size());
+      fanSum.emplace_back(0.0f);
+    } else {
+      fanOf[c] = fanOf[root];
+    }
+    fanSum[fanOf[c]] += faceNormal[c / 3] * cornerAngle[c];
+  }
+  { std::vector<uint32_t>().swap(fans.parent); }
   auto unitOr = [](glm::vec3 v, glm::vec3 fallback) {
     const float len = glm::length(v);
     return std::isfinite(len) && len > 0.0f ? v / len : fallback;
@@ -161,7 +176,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   const bool hasTexcoords = mesh.texcoords.size() == nv;
   for (uint32_t c = 0; c < corners; ++c) {
     if (!usable(c / 3)) continue;
-    const uint32_t v = mesh.indices[c], fan = fans.find(c);
+    const uint32_t v = mesh.indices[c], fan = fanOf[c];
     if (vertexFan[v] == kNone) {
       vertexFan[v] = fan;
       normals[v] = unitOr(fanSum[fan], faceNormal[c / 3]);

@@ -216,6 +216,16 @@ TEST(DuplicateTriangles, RotationsAreTheSameTriangleTheReversedWindingIsNot) {
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 1}));
 }
 
+TEST(DuplicateTriangles, ARepeatedCornerDoesNotHideARotation) {
+  // (a, b, a), (a, a, b) and (b, a, a) are one triangle (zero area, but drawn as any other); the
+  // lowest-corner-first key once made (a, b, a) and (a, a, b) two. (b, a, b) is another triangle.
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}};
+  m.indices = {0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1};
+  EXPECT_EQ(removeDuplicateTriangles(m), 2u);
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 0, 1, 0, 1}));
+}
+
 TEST(DuplicateTriangles, DistinctTrianglesAreAllKeptInOrder) {
   // Negative control: a strip of 1,000 distinct triangles loses nothing.
   Mesh m;

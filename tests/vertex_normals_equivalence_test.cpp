@@ -77,9 +77,17 @@ TEST(VertexNormalsEquivalence, SoupsAndFansEqualTheSortedReference) {
   degenerate.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}};
   degenerate.indices = {0, 1, 0, 2, 2, 1};
   for (float crease : {kDefaultCreaseAngleDeg, kNoCreaseDeg}) expectSameAsReference(degenerate, crease, "degenerate only");
+  // A point whose first corner (in file order) is on a zero-area triangle with three distinct
+  // points (collinear): filed under the point but taking no part, so the fan's first corner is
+  // the next one (the no-crease path picks it explicitly).
+  Mesh collinear;
+  collinear.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  collinear.indices = {0, 1, 2, 0, 1, 3, 0, 3, 4, 0, 4, 1};
+  for (float crease : {kDefaultCreaseAngleDeg, kNoCreaseDeg}) expectSameAsReference(collinear, crease, "collinear first");
 }
 
-// Large enough (150,000 triangles) that the triangles are split over threads.
+// Large enough (150,000 triangles) that the triangles and the points are split over threads (two
+// or more parts on a machine with two or more cores).
 TEST(VertexNormalsEquivalence, ThreadedMeshEqualsTheSortedReference) {
   expectSameAsReference(latticeSoup(7, 40000, 150000), kDefaultCreaseAngleDeg, "150k-triangle soup");
 }

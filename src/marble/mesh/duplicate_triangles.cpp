@@ -1,45 +1,43 @@
 #include "marble/mesh/duplicate_triangles.h"
 
+#include <algorithm>
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "marble/core/parallel_for.h"
+#include "marble/mesh/point_ids.h"
 
 namespace marble {
 namespace {
 
-using Corner = std::array<uint32_t, 3>;
+using Key = std::array<uint32_t, 3>;
 
-Corner bits(glm::vec3 p) {
-  if (p.x == 0.0f) p.x = 0.0f;  // -0 -> +0
-  if (p.y == 0.0f) p.y = 0.0f;
-  if (p.z == 0.0f) p.z = 0.0f;
-  return {std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y), std::bit_cast<uint32_t>(p.z)};
-}
-
-// The triangle's corners rotated so that the smallest comes first: one key for all three
-// rotations, a different one for the reversed winding.
-std::array<Corner, 3> canonical(const Mesh& mesh, size_t t) {
-  std::array<Corner, 3> c = {bits(mesh.positions[mesh.indices[3 * t]]), bits(mesh.positions[mesh.indices[3 * t + 1]]),
-                             bits(mesh.positions[mesh.indices[3 * t + 2]])};
+// The triangle's smallest rotation (as a sequence of points): one key for all three rotations, a
+// different one for the reversed winding. (With three distinct points it starts at the lowest;
+// a triangle with a repeated point needs the full comparison: "lowest first" would give (a, b, a)
+// and its rotation (a, a, b) two keys.) (Points are positions compared bit for bit with
+// -0 == +0, point_ids.h: equal keys are exactly equal corner positions in the same cyclic order.)
+// An index out of range (only possible through the API: loadMesh checks them first) is its own
+// point, above every real one.
+Key canonical(const Mesh& mesh, const std::vector<uint32_t>& point, size_t t) {
+  const uint32_t n = static_cast<uint32_t>(point.size());
+  auto of = [&](uint32_t v) { return v < n ? point[v] : v; };
+  const Key c = {of(mesh.indices[3 * t]), of(mesh.indices[3 * t + 1]), of(mesh.indices[3 * t + 2])};
+  if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+    return std::min({c, Key{c[1], c[2], c[0]}, Key{c[2], c[0], c[1]}});
   size_t first = 0;
   if (c[1] < c[first]) first = 1;
   if (c[2] < c[first]) first = 2;
   return {c[first], c[(first + 1) % 3], c[(first + 2) % 3]};
 }
 
-// The nine words folded in pairs, then MurmurHash3's 64-bit finalizer, so that the low bits
-// (the table index) depend on every bit of every coordinate.
-uint64_t hashOf(const std::array<Corner, 3>& key) {
-  uint64_t h = 0x9E3779B97F4A7C15ull;
-  for (const Corner& c : key) {
-    h = (h ^ ((static_cast<uint64_t>(c[0]) << 32) | c[1])) * 0x9FB21C651E98DF25ull;
-    h = (h ^ c[2]) * 0xC2B2AE3D27D4EB4Full;
-    h ^= h >> 29;
-  }
+// The three words folded in, then MurmurHash3's 64-bit finalizer, so that the low bits (the
+// table index) depend on every bit of every point.
+uint64_t hashOf(const Key& key) {
+  uint64_t h = (static_cast<uint64_t>(key[0]) << 32 | key[1]) * 0x9FB21C651E98DF25ull;
+  h = (h ^ (h >> 29) ^ key[2]) * 0xC2B2AE3D27D4EB4Full;
   h ^= h >> 33;
   h *= 0xFF51AFD7ED558CCDull;
   h ^= h >> 33;
@@ -50,14 +48,15 @@ uint64_t hashOf(const std::array<Corner, 3>& key) {
 
 }  // namespace
 
-size_t removeDuplicateTriangles(Mesh& mesh) {
+size_t removeDuplicateTriangles(Mesh& mesh) { return removeDuplicateTriangles(mesh, pointIds(mesh.positions)); }
+
+size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point) {
   const size_t count = mesh.indices.size() / 3;
   if (count < 2) return 0;
-  // Every triangle's hash first, over threads (reading three random positions is most of the
-  // cost, and triangles are independent).
+  // Every triangle's hash first, over threads (triangles are independent).
   std::vector<uint64_t> hashes(count);
   parallelFor(count, 100000, [&](size_t begin, size_t end) {
-    for (size_t t = begin; t < end; ++t) hashes[t] = hashOf(canonical(mesh, t));
+    for (size_t t = begin; t < end; ++t) hashes[t] = hashOf(canonical(mesh, point, t));
   });
   // Then in file order, open addressing over kept triangles, load factor <= 1/2. A slot holds a
   // kept triangle's position in the output (low 32 bits) and the high half of its hash, so that
@@ -78,13 +77,13 @@ size_t removeDuplicateTriangles(Mesh& mesh) {
     const uint32_t high = static_cast<uint32_t>(h >> 32);
     size_t slot = static_cast<size_t>(h) & mask;
     bool duplicate = false;
-    std::optional<std::array<Corner, 3>> key;  // triangle t's, made at the first full hash match
+    std::optional<Key> key;  // triangle t's, made at the first full hash match
     for (; slots[slot] != kEmpty; slot = (slot + 1) & mask) {
       const uint64_t entry = slots[slot];
       const uint32_t k = static_cast<uint32_t>(entry);
       if (static_cast<uint32_t>(entry >> 32) != high || keptHashLow[k] != static_cast<uint32_t>(h)) continue;
-      if (!key) key = canonical(mesh, t);
-      if (canonical(mesh, k) == *key) {
+      if (!key) key = canonical(mesh, point, t);
+      if (canonical(mesh, point, k) == *key) {
         duplicate = true;
         break;
       }

@@ -12,6 +12,8 @@
 // and OBJ may repeat a position under several indices; normals and texture coordinates are not
 // compared (a copy with other texture coordinates would still be drawn over itself).
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "marble/mesh/mesh.h"
 
@@ -20,5 +22,7 @@ namespace marble {
 // Removes every triangle that repeats an earlier one as defined above, keeping the order of the
 // rest; returns how many were removed. Vertices are left as they are.
 size_t removeDuplicateTriangles(Mesh& mesh);
+// The same with the vertices' points (pointIds(mesh.positions), point_ids.h) already found.
+size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& pointIds);
 
 }  // namespace marble

@@ -15,6 +15,7 @@
 #include "marble/core/input_file.h"
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/point_ids.h"
 #include "marble/mesh/vertex_normals.h"
 
 namespace marble {
@@ -171,8 +172,9 @@ double signedVolume(const Mesh& mesh) {
 namespace {
 
 // Drops exact duplicate triangles (mesh/duplicate_triangles.h) and says so once.
-void dropDuplicateTriangles(Mesh& mesh, const std::string& file, std::vector<std::string>* warnings) {
-  const size_t dropped = removeDuplicateTriangles(mesh);
+void dropDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& points, const std::string& file,
+                            std::vector<std::string>* warnings) {
+  const size_t dropped = removeDuplicateTriangles(mesh, points);
   if (dropped == 0) return;
   const std::string warning = file + ": dropped " + withThousands(dropped) +
                               " duplicate triangles (the same three corners as an earlier triangle, same winding)";
@@ -200,12 +202,16 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   }
   { std::string().swap(data); }  // free the file bytes before the heavier steps
   validateLoaded(mesh, file);
-  dropDuplicateTriangles(mesh, file, options.warnings);
   applyUpAxis(mesh, options.up);
   // Normalizing first and computing normals second gives the same normals as the other order
   // (normalization is a uniform scale and a shift) but keeps cross products in float range.
   normalizeMesh(mesh, file);
-  if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg);
+  // The points (equal positions) found once for both steps below. Duplicates are judged on the
+  // positions that will be drawn (after normalization), as the normals' points are: two corners
+  // that the scale rounds to one position are one point to both.
+  const std::vector<uint32_t> points = pointIds(mesh.positions);
+  dropDuplicateTriangles(mesh, points, file, options.warnings);
+  if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg, points);
   return mesh;
 }
 

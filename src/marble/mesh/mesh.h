@@ -55,7 +55,8 @@ struct MeshLoadOptions {
 // (content sniffing for STL). Throws InputError "<file>: <place>: <problem>".
 // The result is turned to +Y up and normalized. The file's own normals are used as given; when it
 // has none, they are computed as Blender does (angle-weighted, hard edges split at
-// options.creaseAngleDeg: computeVertexNormals in vertex_normals.h). Exact duplicate triangles are dropped with one warning (mesh/duplicate_triangles.h).
+// options.creaseAngleDeg: computeVertexNormals in vertex_normals.h). Exact duplicate triangles (judged
+// after normalization) are dropped with one warning (mesh/duplicate_triangles.h).
 // Running out of memory is an EnvironmentError naming the file.
 Mesh loadMesh(const std::filesystem::path& path, UpAxis up = UpAxis::Y);
 Mesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options);

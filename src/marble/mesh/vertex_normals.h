@@ -3,6 +3,9 @@
 // the angle of its corner at the vertex (Thürmer & Wüthrich 1998; Blender's mesh_normals.cc), and
 // hard edges split where the two faces' normals are more than a crease angle apart (Blender's
 // "Auto Smooth" angle).
+#include <cstdint>
+#include <vector>
+
 #include "marble/mesh/mesh.h"
 
 namespace marble {
@@ -21,5 +24,7 @@ namespace marble {
 //   coordinate copied), one copy per fan; the indices are rewritten to match.
 // - Degenerate (zero-area) triangles add nothing; a vertex with no usable neighbour gets +Y.
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg);
+// The same with the vertices' points (pointIds(mesh.positions), point_ids.h) already found.
+void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& pointIds);
 
 }  // namespace marble

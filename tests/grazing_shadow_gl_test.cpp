@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "box_mesh.h"
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
@@ -24,16 +25,6 @@ namespace {
 
 constexpr float kElevationDeg = 6.0f;
 constexpr float kWallX = -0.7f, kWall = 0.1f;
-
-void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
-  const auto base = static_cast<uint32_t>(m.positions.size());
-  for (int i = 0; i < 8; ++i)
-    m.positions.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
-  // Quads wound counter-clockwise seen from outside: -z, +z, -y, +y, -x, +x.
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads)
-    for (int t : {0, 1, 2, 0, 2, 3}) m.indices.push_back(base + static_cast<uint32_t>(q[t]));
-}
 
 // The plate's top at y = 0, the wall on it; spans [-1, 1] in x and z and is centred in y, so the
 // renderer's normalization (bounding box centred, largest extent 2) leaves it where it is.

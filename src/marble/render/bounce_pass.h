@@ -27,15 +27,17 @@ public:
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            float lightTexelWorld, const ScreenRect& rect);
   GLuint bounceTexture() const { return bounce_.id(); }
+  // The further bounces, gathered in screen space from the first (bounce_further.frag.glsl).
+  GLuint furtherTexture() const { return further_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }  // two RGBA16F
   PassTimer& timer() { return timer_; }
 
 private:
-  gl::Program program_;
+  gl::Program program_, furtherProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture bounce_;
-  gl::Framebuffer fbo_;
+  gl::Texture bounce_, further_;
+  gl::Framebuffer fbo_, furtherFbo_;
   int width_ = 0, height_ = 0, scale_ = 0;
   PassTimer timer_;
 };

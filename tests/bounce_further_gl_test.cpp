@@ -102,10 +102,6 @@ TEST(BounceFurther, TheFoldsPlateGetsItsLightBackFromTheWall) {
   const ImageRGBF a = withWall.readHdr();
   renderImage(plateAlone, s);
   const ImageRGBF b = plateAlone.readHdr();
-  for (float h : {0.1f, 0.2f, 0.4f}) {  // DEBUG: the wall's first bounce
-    const glm::vec3 w = linearRgbAround(a, s, {kWall, kPlateTop + h, 0.0f});
-    std::cout << "[          ] wall h " << h << ": first bounce model " << kAlbedo * kAlbedo * (41.0 / 42.0) * plateSeenFromWall(kPlateTop + h, 0.0) << ", got " << w.g << "\n";
-  }
   for (float d : {0.15f, 0.3f}) {
     const glm::vec3 got = linearRgbAround(a, s, probe(d)) - linearRgbAround(b, s, probe(d));
     const double expected = std::pow(kAlbedo, 3.0) * (41.0 / 42.0) * (41.0 / 42.0) * twoBounceIntegral(d);

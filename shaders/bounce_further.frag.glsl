@@ -19,8 +19,9 @@
 // Not the first bounce's softened law (A / PI added to r^2, bounce.glsl: the on-axis form of a disk
 // around the receiver's normal): a ring sector never holds the receiver, and an emitter the camera
 // sees at grazing has A_s up to 5 sector areas, which the softened law cut by up to 6x: the fold
-// test read 0.61-0.69 of the analytic second bounce with it (0.81-0.86 with the series), 0.8 and
-// 1.05-1.11 without. The min() only bounds a sector's view factor by its distance's hemisphere.
+// test (tests/bounce_further_gl_test.cpp) read 0.61-0.69 of the analytic second bounce with it,
+// 0.73-0.83 by the point law (1.05-1.11 with the series below). The min() only bounds a sector's
+// view factor by its distance's hemisphere.
 // The third and later bounces by the series E_{n+1} ~ albedo x F x E_n, F = sum_s K_s, the view
 // factor of the stone this gather sees (the receiver's neighbourhood re-emitting its own further bounce: the assumption of Jimenez et al. 2016's multi-bounce fit, but
 // with F measured per point instead of from ambient occlusion): E_further = E2 / (1 - albedo F).

@@ -5,7 +5,9 @@
 // the lighting pass upsamples (shaders/bounce_upsample.glsl). Gathered at every lighting texel it
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
-// at 1.4x. It reads no material parameter: the emitters' albedo is applied by the lighting pass.
+// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on the same
+// grid (shaders/bounce_further.frag.glsl), into a second RGBA16F texture. It reads no material
+// parameter: the emitters' albedo is applied by the lighting pass.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"

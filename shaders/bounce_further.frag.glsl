@@ -96,10 +96,17 @@ void main() {
       if (any(lessThan(ps, ivec2(0))) || any(greaterThanEqual(ps, fullSize))) continue;
       float ds = texelFetch(u_depth, ps, 0).r;
       if (ds >= 1.0) continue;  // the background
-      vec4 b = texelFetch(u_bounce, min((ps + u_scale / 2) / u_scale, size - 1), 0);
+      ivec2 ts = min((ps + u_scale / 2) / u_scale, size - 1);  // the nearest texel of the first bounce
+      vec4 b = texelFetch(u_bounce, ts, 0);
       if (b.a < 0.0) continue;
       vec3 Ps = surface_point((vec2(ps) + 0.5) / full, ds);
       vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
+      // That texel's first bounce is the emitter's only if it lies on the same surface: near a fold
+      // or a part seen edge-on (a plate's top seen at grazing, a few pixels high) the nearest texel
+      // can be the other face's, whose light the emitter does not have (the corner tests' wall face
+      // then received its own first bounce back through the plate: +26 %). Normals over 37 degrees
+      // apart: left out (too little rather than light that is not there).
+      if (dot(Ns, decode_normal(texelFetch(u_normal, ts * u_scale, 0).xy)) < 0.8) continue;
       vec3 d = P - Ps;
       float r2 = max(dot(d, d), 1e-12);
       float cosS = dot(Ns, d);   // x |d|

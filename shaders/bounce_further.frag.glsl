@@ -54,14 +54,12 @@ layout(location = 0) out vec4 o_further;
 // the first bounce is smooth over a texel, the geometry is not. (Snapped to the pass's texels, the
 // near rings' samples sat up to a texel farther out than the sector they stand for, and the near
 // field, which dominates a crease, came out at about half: the fold test read 0.5 of the model.)
+// Four angles, not eight: with the 2 x 2 turns the upsample mixes sixteen; eight cost the dragon's
+// 800-pixel frames ~9 ms of llvmpipe against ~5 and moved SSIM by -0.006 to +0.003 in the front-
+// and side-lit scenes, within what a turn of the pattern moves them (docs/quality.md, session 13).
 const int FURTHER_RINGS = 8;
-const int FURTHER_ANGLES = 8;
+const int FURTHER_ANGLES = 4;
 const float FURTHER_RADIUS = 0.5;
-
-// World width of full-resolution pixel px's footprint at its depth.
-float pixel_width(ivec2 px, vec2 fullSize, float depth, vec3 P) {
-  return length(surface_point((vec2(px) + vec2(1.5, 0.5)) / fullSize, depth) - P);
-}
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
@@ -79,6 +77,9 @@ void main() {
   vec2 full = vec2(fullSize);
   vec3 P = surface_point((vec2(px) + 0.5) / full, depth);
   vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  // A pixel's world width per unit of distance from the camera (at P; across the frame it changes
+  // by the off-axis angle's cosine, under 6 % at 36 degrees of view: the emitters' areas by 12 %).
+  float width_per_distance = length(surface_point((vec2(px) + vec2(1.5, 0.5)) / full, depth) - P) / distance(P, u_camera_pos);
   ivec2 size = textureSize(u_bounce, 0);
   float outer = FURTHER_RADIUS * full.y;  // in full-resolution pixels
   // The first draw's interleaving (bounce_gather.frag.glsl), for the same reason: each texel of a
@@ -112,8 +113,10 @@ void main() {
       float cosS = dot(Ns, d);   // x |d|
       float cosP = -dot(N, d);   // x |d|
       if (cosS <= 0.0 || cosP <= 0.0) continue;
-      float w = pixel_width(ps, full, ds, Ps);
-      float cosV = max(abs(dot(Ns, normalize(u_camera_pos - Ps))), 0.2);
+      vec3 toCamera = u_camera_pos - Ps;
+      float dist = length(toCamera);
+      float w = width_per_distance * dist;
+      float cosV = max(abs(dot(Ns, toCamera)) / dist, 0.2);
       float A = sector * w * w / cosV;
       float K = min(A, PI * r2) * cosS * cosP / (r2 * PI * r2);
       sum += K * vec4(b.xyz, 1.0);

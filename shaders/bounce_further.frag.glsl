@@ -54,11 +54,11 @@ layout(location = 0) out vec4 o_further;
 // the first bounce is smooth over a texel, the geometry is not. (Snapped to the pass's texels, the
 // near rings' samples sat up to a texel farther out than the sector they stand for, and the near
 // field, which dominates a crease, came out at about half: the fold test read 0.5 of the model.)
-// Four angles, not eight: with the 2 x 2 turns the upsample mixes sixteen; eight cost the dragon's
-// 800-pixel frames ~9 ms of llvmpipe against ~5 and moved SSIM by -0.006 to +0.003 in the front-
-// and side-lit scenes, within what a turn of the pattern moves them (docs/quality.md, session 13).
+// Eight angles: four (sixteen over the 2 x 2 turns) cost ~4 ms less of the dragon's 800-pixel
+// frames on llvmpipe and scored within a pattern turn's noise in the ten scenes, but read 1.71 of
+// the fold test's model at one point (too few samples for a near emitter: blotches).
 const int FURTHER_RINGS = 8;
-const int FURTHER_ANGLES = 4;
+const int FURTHER_ANGLES = 8;
 const float FURTHER_RADIUS = 0.5;
 
 void main() {
@@ -97,22 +97,22 @@ void main() {
       if (any(lessThan(ps, ivec2(0))) || any(greaterThanEqual(ps, fullSize))) continue;
       float ds = texelFetch(u_depth, ps, 0).r;
       if (ds >= 1.0) continue;  // the background
+      vec3 Ps = surface_point((vec2(ps) + 0.5) / full, ds);
+      vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
+      vec3 d = P - Ps;
+      float r2 = max(dot(d, d), 1e-12);
+      float cosS = dot(Ns, d);   // x |d|
+      float cosP = -dot(N, d);   // x |d|
+      if (cosS <= 0.0 || cosP <= 0.0) continue;  // first: most samples stop here, before two more reads
       ivec2 ts = min((ps + u_scale / 2) / u_scale, size - 1);  // the nearest texel of the first bounce
       vec4 b = texelFetch(u_bounce, ts, 0);
       if (b.a < 0.0) continue;
-      vec3 Ps = surface_point((vec2(ps) + 0.5) / full, ds);
-      vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
       // That texel's first bounce is the emitter's only if it lies on the same surface: near a fold
       // or a part seen edge-on (a plate's top seen at grazing, a few pixels high) the nearest texel
       // can be the other face's, whose light the emitter does not have (the corner tests' wall face
       // then received its own first bounce back through the plate: +26 %). Normals over 37 degrees
       // apart: left out (too little rather than light that is not there).
       if (dot(Ns, decode_normal(texelFetch(u_normal, ts * u_scale, 0).xy)) < 0.8) continue;
-      vec3 d = P - Ps;
-      float r2 = max(dot(d, d), 1e-12);
-      float cosS = dot(Ns, d);   // x |d|
-      float cosP = -dot(N, d);   // x |d|
-      if (cosS <= 0.0 || cosP <= 0.0) continue;
       vec3 toCamera = u_camera_pos - Ps;
       float dist = length(toCamera);
       float w = width_per_distance * dist;

@@ -1,6 +1,8 @@
+// An axis-aligned box appended to a mesh: the building block of the GL tests' small scenes
+// (slabs, walls, plates). Its normals are left to the caller (computeVertexNormals with a crease
+// angle below 90 degrees gives flat faces).
 #pragma once
-// Shared by the GL tests that build scenes from axis-aligned boxes (flat faces after
-// computeVertexNormals at 60 degrees).
+
 #include <cstdint>
 
 #include <glm/glm.hpp>

@@ -28,6 +28,8 @@
 // marble_shading.glsl (f0_from_ior).
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;
+// The further bounces' integrals and view factor (bounce_further.frag.glsl), on the same grid.
+layout(binding = UNIT_LIGHTING_BOUNCE_FURTHER) uniform sampler2D u_bounce_further;
 uniform int u_bounce_scale;     // full-resolution pixels per texel of the bounce pass
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
 uniform float u_ior;            // the emitters' Fresnel F0 (their glossy reflection)
@@ -49,13 +51,16 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   float pixel = length(surface_point(uv + vec2(1.0 / float(fullSize.x), 0.0), texelFetch(u_depth, px, 0).r) - P);
   float reach = pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
   vec4 sum = vec4(0.0), best = vec4(0.0), any = vec4(0.0);
+  vec4 sumF = vec4(0.0), bestF = vec4(0.0), anyF = vec4(0.0);  // the further bounces', weighed alike
   float weight = 0.0, bestMatch = 0.0, anyCount = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 ic = min(i0 + c, last);
     vec4 b = texelFetch(u_bounce, ic, 0);
     if (b.a < 0.0) continue;  // the background
+    vec4 bF = texelFetch(u_bounce_further, ic, 0);
     any += b;
+    anyF += bF;
     anyCount += 1.0;
     ivec2 ps = ic * u_bounce_scale;
     vec3 Ps = surface_point((vec2(ps) + 0.5) / vec2(fullSize), texelFetch(u_depth, ps, 0).r);
@@ -71,13 +76,16 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
     float match = cn * cn * plane * near;
     float wb = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
     sum += wb * match * b;
+    sumF += wb * match * bF;
     weight += wb * match;
     if (match > bestMatch) {
       bestMatch = match;
       best = b;
+      bestF = bF;
     }
   }
   vec4 b = weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
+  vec4 bF = weight >= BOUNCE_MIN_WEIGHT ? sumF / weight : (bestMatch > 0.0 ? bestF : anyF / max(anyCount, 1.0));
   // The gather's scalars (bounce.glsl): diffuse x albedo, glossy x Schlick's F split by F0.
   float F0 = f0_from_ior(u_ior).x;
   // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected
@@ -87,5 +95,11 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   // vein's contrast to the base colour), and it is spread by the subsurface blur's millimetres.
   float m = 1.0 - clamp(dot(N, normalize(u_camera_pos - P)), 0.0, 1.0), m2 = m * m;
   float Fv = F0 + (1.0 - F0) * m2 * m2 * m;
-  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z + Fv * b.a);
+  // The further bounces (bounce_further.frag.glsl): the second, albedo x (the first's terms over
+  // the emitters the camera sees), and the rest by the series 1 / (1 - albedo F), F the view factor
+  // of that stone (at most 0.8: a point can see no more than its hemisphere, and the floor keeps
+  // the series finite where the coarse sums overshoot).
+  vec3 second = u_pat_base_color * (u_pat_base_color * bF.x + F0 * bF.y + (1.0 - F0) * bF.z);
+  vec3 further = second / (1.0 - u_pat_base_color * (41.0 / 42.0) * min(bF.a, 0.8));
+  return u_light_radiance * (u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z + further + Fv * b.a);
 }

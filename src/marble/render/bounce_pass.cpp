@@ -7,6 +7,7 @@ namespace marble {
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
+      furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
@@ -20,6 +21,9 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   bounce_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
+  further_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
+  furtherFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(furtherFbo_.id(), GL_COLOR_ATTACHMENT0, further_.id(), 0);
 }
 
 void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
@@ -40,6 +44,14 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
+  // The further bounces, from the first bounce just drawn (outside the rectangle: none).
+  glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(furtherFbo_.id(), GL_COLOR, 0, zero);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, bounce_.id());
+  setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);
+  furtherProgram_.set("u_scale", scale_);
+  gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
 }

@@ -5,7 +5,9 @@
 // the lighting pass upsamples (shaders/bounce_upsample.glsl). Gathered at every lighting texel it
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
-// at 1.4x. It reads no material parameter: the emitters' albedo is applied by the lighting pass.
+// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on the same
+// grid (shaders/bounce_further.frag.glsl), into a second RGBA16F texture. It reads no material
+// parameter: the emitters' albedo is applied by the lighting pass.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -27,15 +29,17 @@ public:
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            float lightTexelWorld, const ScreenRect& rect);
   GLuint bounceTexture() const { return bounce_.id(); }
+  // The further bounces, gathered in screen space from the first (bounce_further.frag.glsl).
+  GLuint furtherTexture() const { return further_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }  // two RGBA16F
   PassTimer& timer() { return timer_; }
 
 private:
-  gl::Program program_;
+  gl::Program program_, furtherProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture bounce_;
-  gl::Framebuffer fbo_;
+  gl::Texture bounce_, further_;
+  gl::Framebuffer fbo_, furtherFbo_;
   int width_ = 0, height_ = 0, scale_ = 0;
   PassTimer timer_;
 };

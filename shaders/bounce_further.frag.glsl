@@ -47,7 +47,8 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // the first draw's: the first bounce
-uniform int u_scale;  // full-resolution pixels per texel of this pass
+uniform int u_scale;         // full-resolution pixels per texel of this draw: twice the first bounce's
+uniform int u_bounce_scale;  // and of the first bounce's (u_bounce)
 layout(location = 0) out vec4 o_further;
 
 // FURTHER_RINGS rings, each twice the radius of the one inside it, the outermost reaching
@@ -68,13 +69,14 @@ void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
   ivec2 fullSize = textureSize(u_depth, 0);
   ivec2 px = t * u_scale;
+  // The background: alpha -1, which the merge's upsample leaves out (bounce_bilateral.glsl).
   if (any(greaterThanEqual(px, fullSize))) {
-    o_further = vec4(0.0);
+    o_further = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   float depth = texelFetch(u_depth, px, 0).r;
   if (depth >= 1.0) {
-    o_further = vec4(0.0);
+    o_further = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   vec2 full = vec2(fullSize);
@@ -107,7 +109,7 @@ void main() {
       float cosS = dot(Ns, d);   // x |d|
       float cosP = -dot(N, d);   // x |d|
       if (cosS <= 0.0 || cosP <= 0.0) continue;  // first: most samples stop here, before two more reads
-      ivec2 ts = min((ps + u_scale / 2) / u_scale, size - 1);  // the nearest texel of the first bounce
+      ivec2 ts = min((ps + u_bounce_scale / 2) / u_bounce_scale, size - 1);  // the nearest texel of the first bounce
       vec4 b = texelFetch(u_bounce, ts, 0);
       if (b.a < 0.0) continue;
       // That texel's first bounce is the emitter's only if it lies on the same surface: near a fold
@@ -115,7 +117,7 @@ void main() {
       // can be the other face's, whose light the emitter does not have (the corner tests' wall face
       // then received its own first bounce back through the plate: +26 %). Normals over 37 degrees
       // apart: left out (too little rather than light that is not there).
-      if (dot(Ns, decode_normal(texelFetch(u_normal, ts * u_scale, 0).xy)) < 0.8) continue;
+      if (dot(Ns, decode_normal(texelFetch(u_normal, ts * u_bounce_scale, 0).xy)) < 0.8) continue;
       vec3 toCamera = u_camera_pos - Ps;
       float dist = length(toCamera);
       float w = width_per_distance * dist;

@@ -51,11 +51,7 @@ float specular_footprint_a2(vec3 dndx, vec3 dndy, float dx_on, float dy_on) {
   return min(2.0 * (vx + vy) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
 }
 
-// F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.
-vec3 f0_from_ior(float ior) {
-  float r = (ior - 1.0) / (ior + 1.0);
-  return vec3(r * r);
-}
+#include "fresnel_f0.glsl"
 
 // Split-sum environment BRDF, analytic fit (Karis 2014, "Physically Based Shading on Mobile").
 vec3 env_brdf_approx(vec3 F0, float roughness, float NoV) {

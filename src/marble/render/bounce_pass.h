@@ -5,9 +5,11 @@
 // the lighting pass upsamples (shaders/bounce_upsample.glsl). Gathered at every lighting texel it
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
-// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on the same
-// grid (shaders/bounce_further.frag.glsl), into a second RGBA16F texture. It reads no material
-// parameter: the emitters' albedo is applied by the lighting pass.
+// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on a grid
+// twice as coarse each way (shaders/bounce_further.frag.glsl; on the first's grid it cost the
+// dragon's 800² frames 1.06-1.08x by instructions), and a third adds them to the first on its grid
+// (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
+// per texel of this grid: the pass reads the base colour and the ior.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -27,19 +29,21 @@ public:
   // has bounceScale() of them.
   void resize(int width, int height, int lightingScale);
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           float lightTexelWorld, const ScreenRect& rect);
+           const Material& material, float lightTexelWorld, const ScreenRect& rect);
+  // All bounces (bounce_merge.frag.glsl's output), for the lighting pass.
   GLuint bounceTexture() const { return bounce_.id(); }
-  // The further bounces, gathered in screen space from the first (bounce_further.frag.glsl).
-  GLuint furtherTexture() const { return further_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }  // two RGBA16F
+  // Two RGBA16F on this grid (the first bounce, all bounces), one on the further bounces'.
+  size_t bytes() const {
+    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8;
+  }
   PassTimer& timer() { return timer_; }
 
 private:
-  gl::Program program_, furtherProgram_;
+  gl::Program program_, furtherProgram_, mergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture bounce_, further_;
-  gl::Framebuffer fbo_, furtherFbo_;
+  gl::Texture first_, further_, bounce_;
+  gl::Framebuffer firstFbo_, furtherFbo_, fbo_;
   int width_ = 0, height_ = 0, scale_ = 0;
   PassTimer timer_;
 };

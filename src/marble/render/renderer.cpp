@@ -311,7 +311,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     if (stale(Pass::Bounce)) {
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
                            passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture()},
-                          camera, light, scene.light, lightTexelWorld, rect);
+                          camera, light, scene.light, scene.material, lightTexelWorld, rect);
       ran(Pass::Bounce);
     }
   }
@@ -322,7 +322,6 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                             passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture(),
                             passes_->bounce.bounceTexture(),
-                            passes_->bounce.furtherTexture(),
                             passes_->bounce.scale()};
     // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still
     // name the G-buffer depth of an earlier frame size, deleted since (0 detaches).

@@ -129,8 +129,8 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
 // the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
-// (bounce_upsample.glsl applies those: the gather then reads no material parameter, and a colour
-// or ior change re-runs only the lighting pass); w, the radiance P's specular layer mirrors toward
+// (bounce_merge.frag.glsl applies those: the gather then reads no material parameter, and a colour
+// or ior change re-runs only the bounce pass's last draw and the lighting); w, the radiance P's specular layer mirrors toward
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
 vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec3 R = reflect(-V, N);

@@ -9,7 +9,8 @@
 // twice as coarse each way (shaders/bounce_further.frag.glsl; on the first's grid it cost the
 // dragon's 800² frames 1.06-1.08x by instructions), and a third adds them to the first on its grid
 // (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
-// per texel of this grid: the pass reads the base colour and the ior.
+// per texel of this grid: the pass reads the base colour and the ior, and where only they changed
+// it runs the third draw alone (`gather` false).
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -29,7 +30,7 @@ public:
   // has bounceScale() of them.
   void resize(int width, int height, int lightingScale);
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           const Material& material, float lightTexelWorld, const ScreenRect& rect);
+           const Material& material, float lightTexelWorld, const ScreenRect& rect, bool gather);
   // All bounces (bounce_merge.frag.glsl's output), for the lighting pass.
   GLuint bounceTexture() const { return bounce_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
@@ -40,6 +41,9 @@ public:
   PassTimer& timer() { return timer_; }
 
 private:
+  // The first two draws: the first bounce and the further bounces, before any material parameter.
+  void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                     float lightTexelWorld, const ScreenRect& rect);
   gl::Program program_, furtherProgram_, mergeProgram_;
   gl::VertexArray emptyVao_;
   gl::Texture first_, further_, bounce_;

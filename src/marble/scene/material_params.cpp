@@ -131,7 +131,7 @@ const ParamDesc kParams[] = {
     {.key = "base_color", .group = ParamGroup::BaseColour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "base", .tooltip = "Albedo of the stone between veins (linear RGB).",
      .doc = "the stone between veins; also the `floor` mode's flat colour and, in `marble`, the albedo of the light bounced inside the object",
-     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kLightingPassBit | kBouncePassBit,
+     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kBouncePassBit,
      .uniform = "u_pat_base_color", .choices = {}, .slider = {}, MARBLE_FIELD(BaseColourParams::base_color)},
     {.key = "vein_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "vein", .tooltip = "Albedo at the heart of a vein (linear RGB).",

@@ -38,7 +38,7 @@
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_falloff, light_vector, light_distance_of,
-// u_light_view_proj) and PI.
+// u_light_view_proj), rotation.glsl and PI.
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
@@ -141,16 +141,24 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
   sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod);
+  // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
+  // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
+  // outer four rings keep the angles they had when there were four (session 11): the new inner two
+  // add to the pattern without moving the rest, whose turn alone moves the scores (bounce_gather).
+  // The angles by rotation (rotation.glsl).
+  const float step = 2.0 * PI / float(BOUNCE_ANGLES);
+  const vec2 byStep = vec2(cos(step), sin(step)), byRing = vec2(cos(0.381966 * step), sin(0.381966 * step));
+  float phi0 = step * (turn + 0.381966 * float(1 + 4 - BOUNCE_RINGS));
+  vec2 ringDir = vec2(cos(phi0), sin(phi0));
   for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
+    vec2 dir = ringDir;
+    ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      // Each ring turned 0.381966 of a step from the one inside it, counted so that the outer four
-      // rings keep the angles they had when there were four (session 11): the new inner two add
-      // to the pattern without moving the rest, whose turn alone moves the scores (bounce_gather).
-      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring + 1 + 4 - BOUNCE_RINGS)) / float(BOUNCE_ANGLES);
-      sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
+      sum += bounce_sample(P, N, R, centre + r * dir, dA, size, maxLod);
+      dir = rotate2(dir, byStep);
     }
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light

@@ -43,6 +43,7 @@
 const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs it
 #include "gbuffer.glsl"
 #include "deferred_common.glsl"
+#include "rotation.glsl"
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
@@ -92,13 +93,21 @@ void main() {
   ivec2 q = t & 1;
   float turn = 0.25 * float(q.x + 2 * q.y);
   vec4 sum = vec4(0.0);
+  // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 ring) / FURTHER_ANGLES, by rotation
+  // (rotation.glsl).
+  const float step = 2.0 * PI / float(FURTHER_ANGLES);
+  const vec2 byStep = vec2(cos(step), sin(step)), byRing = vec2(cos(0.381966 * step), sin(0.381966 * step));
+  vec2 ringDir = vec2(cos(step * turn), sin(step * turn));
   for (int ring = 0; ring < FURTHER_RINGS; ++ring) {
     float r0 = outer * exp2(float(ring - FURTHER_RINGS)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);
     float sector = PI * (r1 * r1 - r0 * r0) / float(FURTHER_ANGLES);  // in full-resolution pixels
+    vec2 next = ringDir;
+    ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < FURTHER_ANGLES; ++k) {
-      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring)) / float(FURTHER_ANGLES);
-      ivec2 ps = px + ivec2(round(r * vec2(cos(phi), sin(phi))));
+      vec2 dir = next;
+      next = rotate2(next, byStep);  // before any `continue`
+      ivec2 ps = px + ivec2(round(r * dir));
       if (any(lessThan(ps, ivec2(0))) || any(greaterThanEqual(ps, fullSize))) continue;
       float ds = texelFetch(u_depth, ps, 0).r;
       if (ds >= 1.0) continue;  // the background

@@ -1,6 +1,10 @@
 #version 450 core
 // The bounce pass's second draw (`marble` only): the light's further bounces, gathered in screen
-// space from the first bounce (bounce.glsl) that the pass's first draw left at each of its texels.
+// space from the first bounce (bounce.glsl) that the pass's first draw left at each of its texels,
+// on a grid twice as coarse each way as the first's (a 64th of the lighting pass's texels): the
+// further bounces are smooth over it (the first bounce, itself smooth over tens of pixels, gathered
+// again over up to half the frame), and on the first's grid this draw cost the dragon's 800²
+// frames 1.06-1.08x by instructions (docs/performance.md, "Fourteenth session").
 //
 // Why: the first bounce's emitters are the surfaces the light sees (the reflective shadow map), but
 // stone lit only by the first bounce (a crease's shadowed wall, the coils' undersides) sends light
@@ -28,7 +32,7 @@
 // instead of from ambient occlusion): E_further = E2 / (1 - albedo F). On dragon-front it adds
 // 1.42x to the second bounce, Cycles' own ratio there 1.52x; in the fold test ~1.3x, where the
 // fold's fourth bounce adds ~1.1x (a fold's two faces, unlike a cavity, do not see themselves).
-// The albedo is applied by the lighting pass (bounce_upsample.glsl), so this pass stores, per unit
+// The albedo is applied by the pass's third draw (bounce_merge.frag.glsl), so this draw stores, per unit
 // of the light's radiance, the three first-bounce terms' integrals and F:
 //   rgb = sum_s K_s x (diffuse, glossy F0 part, glossy 1 - F0 part of E1_s/PI) x 41/42, a = F.
 // Approximations, each stated:

@@ -59,8 +59,8 @@ layout(location = 0) out vec4 o_further;
 // FURTHER_RINGS rings, each twice the radius of the one inside it, the outermost reaching
 // FURTHER_RADIUS of the frame's height, of FURTHER_ANGLES samples at even angles; the innermost
 // reaches in to 1/256 of the frame's height (3 pixels at 800). Seven rings: an eighth, in to 1.5
-// pixels, cost 1 M more instructions of the dragon's 800² frames (an eighth of this draw) and
-// changed the ten scenes within a pattern turn's noise (docs/quality.md, "Fourteenth session").
+// pixels, cost 0.93 M more instructions of the dragon's 800² frames (an eighth of this draw)
+// and changed the ten scenes within a pattern turn's noise (docs/quality.md, "Fourteenth session").
 // The samples read the G-buffer at their own pixel (the
 // emitter's position and normal exact), and the first bounce at the pass's texel nearest to it:
 // the first bounce is smooth over a texel, the geometry is not. (Snapped to the pass's texels, the

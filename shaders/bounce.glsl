@@ -21,8 +21,8 @@
 //   receives none;
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
-// - one bounce only (Cycles follows every bounce: ~albedo^2 more on deep creases, ~0.7 of the
-//   first bounce's again for albedo 0.85 where the bounce is large);
+// - one bounce from the light's map; the further bounces (from stone lit by this one, which the
+//   map cannot hold) are gathered in screen space from this bounce by bounce_further.frag.glsl;
 // - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
 //   projection in the light's view: a centre sample for the innermost disk (one texel of the map:
 //   BOUNCE_RINGS) and BOUNCE_RINGS rings,
@@ -38,7 +38,7 @@
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_falloff, light_vector, light_distance_of,
-// u_light_view_proj) and PI.
+// u_light_view_proj), rotation.glsl and PI.
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
@@ -129,8 +129,8 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
 // the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
-// (bounce_upsample.glsl applies those: the gather then reads no material parameter, and a colour
-// or ior change re-runs only the lighting pass); w, the radiance P's specular layer mirrors toward
+// (bounce_merge.frag.glsl applies those: the gather then reads no material parameter, and a colour
+// or ior change re-runs only the bounce pass's last draw and the lighting); w, the radiance P's specular layer mirrors toward
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
 vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec3 R = reflect(-V, N);
@@ -141,16 +141,24 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
   sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod);
+  // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
+  // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
+  // outer four rings keep the angles they had when there were four (session 11): the new inner two
+  // add to the pattern without moving the rest, whose turn alone moves the scores (bounce_gather).
+  // The angles by rotation (rotation.glsl).
+  const float step = 2.0 * PI / float(BOUNCE_ANGLES);
+  const vec2 byStep = vec2(cos(step), sin(step)), byRing = vec2(cos(0.381966 * step), sin(0.381966 * step));
+  float phi0 = step * (turn + 0.381966 * float(1 + 4 - BOUNCE_RINGS));
+  vec2 ringDir = vec2(cos(phi0), sin(phi0));
   for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
+    vec2 dir = ringDir;
+    ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      // Each ring turned 0.381966 of a step from the one inside it, counted so that the outer four
-      // rings keep the angles they had when there were four (session 11): the new inner two add
-      // to the pattern without moving the rest, whose turn alone moves the scores (bounce_gather).
-      float phi = 2.0 * PI * (float(k) + turn + 0.381966 * float(ring + 1 + 4 - BOUNCE_RINGS)) / float(BOUNCE_ANGLES);
-      sum += bounce_sample(P, N, R, centre + r * vec2(cos(phi), sin(phi)), dA, size, maxLod);
+      sum += bounce_sample(P, N, R, centre + r * dir, dA, size, maxLod);
+      dir = rotate2(dir, byStep);
     }
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light

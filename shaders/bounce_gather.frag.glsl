@@ -10,6 +10,7 @@
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
+#include "rotation.glsl"
 #include "bounce.glsl"
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;

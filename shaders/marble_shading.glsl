@@ -73,11 +73,7 @@ float footprint_filtered_distribution(float NoH, float a_stone2, float a2) {
   return w * ggx_distribution(NoH, sqrt(a2)) + (1.0 - w) * beckmann;
 }
 
-// F0 of a dielectric from its index of refraction against air: ((n-1)/(n+1))^2.
-vec3 f0_from_ior(float ior) {
-  float r = (ior - 1.0) / (ior + 1.0);
-  return vec3(r * r);
-}
+#include "fresnel_f0.glsl"
 
 // Split-sum environment BRDF, analytic fit (Karis 2014, "Physically Based Shading on Mobile").
 vec3 env_brdf_approx(vec3 F0, float roughness, float NoV) {

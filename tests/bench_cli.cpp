@@ -66,10 +66,11 @@ TEST(CliBench, MotionsRunThePassesTheyChange) {
   };
   // `marble` evaluates the pattern in the post pass (no albedo pass), and reuses the stored
   // diffuse part when neither the light nor the albedo changed. The bounce follows the view and
-  // the light, never the material.
+  // the light, and of the material the base colour and the ior (scattering: its last draw alone,
+  // which applies them; BouncePass::run).
   for (const Case& c : {Case{"none", 0, 0, 0, 0, 0, 0, 0}, Case{"camera", 0, 3, 3, 3, 3, 0, 3},
                         Case{"light", 3, 0, 0, 3, 0, 0, 3}, Case{"both", 3, 3, 3, 3, 3, 0, 3},
-                        Case{"params", 0, 0, 0, 0, 0, 3, 0}, Case{"scattering", 0, 0, 0, 3, 0, 0, 0},
+                        Case{"params", 0, 0, 0, 0, 0, 3, 0}, Case{"scattering", 0, 0, 0, 3, 0, 0, 3},
                         Case{"pattern", 0, 0, 3, 0, 0, 0, 0}}) {
     const auto j = benchJson(std::string("--motion ") + c.motion);
     ASSERT_TRUE(j.contains("pass_runs")) << c.motion;

@@ -87,14 +87,15 @@ TEST(PassList, TheFrameHasThePassesItsSettingsAskFor) {
   EXPECT_EQ(passReads(Pass::Lighting, sceneIn(RenderMode::Paper)) & passBit(Pass::Bounce), 0u);
 }
 
-// The bounce's emitters have the stone's base colour, which the lighting pass applies: `marble`'s
-// lighting reads the base colour and not the rest of the ramp (a vein colour must not re-run it,
-// nor the blur after it), and the bounce pass reads no material parameter at all.
-TEST(PassList, MarbleLightingReadsTheBaseColourAloneOfTheColours) {
-  const GroupSet lighting = passGroups(Pass::Lighting, RenderMode::Marble);
-  EXPECT_NE(lighting & groupBit(ParamGroup::BaseColour), 0u);
-  EXPECT_EQ(lighting & groupBit(ParamGroup::Colour), 0u);
-  EXPECT_EQ(passGroups(Pass::Bounce, RenderMode::Marble), 0u);
+// The bounce's emitters have the stone's base colour, which the bounce pass's last draw applies
+// (bounce_merge.frag.glsl): `marble`'s bounce reads the base colour and not the rest of the ramp (a
+// vein colour must not re-run it, nor the lighting and the blur after it), and the lighting reads
+// no colour at all (it takes the base colour through the bounce).
+TEST(PassList, MarbleBounceReadsTheBaseColourAloneOfTheColours) {
+  const GroupSet bounce = passGroups(Pass::Bounce, RenderMode::Marble);
+  EXPECT_NE(bounce & groupBit(ParamGroup::BaseColour), 0u);
+  EXPECT_EQ(bounce & groupBit(ParamGroup::Colour), 0u);
+  EXPECT_EQ(passGroups(Pass::Lighting, RenderMode::Marble) & (groupBit(ParamGroup::BaseColour) | groupBit(ParamGroup::Colour)), 0u);
   EXPECT_NE(passGroups(Pass::Post, RenderMode::Marble) & groupBit(ParamGroup::Colour), 0u) << "the pattern's ramp";
   // And the base colour is alone in its group: the groups are what the cache compares.
   int inGroup = 0;

@@ -1,12 +1,20 @@
 #include "marble/render/bounce_pass.h"
 
 #include "marble/render/frame_uniforms.h"
+#include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
 
 namespace marble {
+namespace {
+// Outside the rectangle there is no surface: alpha -1, which the upsamples leave out (alpha >= 0
+// is a surface's, bounce_gather.frag.glsl).
+constexpr float kNone[4] = {0, 0, 0, -1};
+}  // namespace
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
+      furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
+      mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
@@ -16,32 +24,67 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   width_ = w;
   height_ = h;
   scale_ = scale;
-  // Nearest: the upsample reads texels by index and weighs them itself.
+  // Nearest: the upsamples read texels by index and weigh them themselves.
+  first_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
+  firstFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(firstFbo_.id(), GL_COLOR_ATTACHMENT0, first_.id(), 0);
+  const int fw = (width + 2 * scale - 1) / (2 * scale), fh = (height + 2 * scale - 1) / (2 * scale);
+  further_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
+  furtherFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(furtherFbo_.id(), GL_COLOR_ATTACHMENT0, further_.id(), 0);
   bounce_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
 }
 
 void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
-                     const Light& light, float lightTexelWorld, const ScreenRect& rect) {
+                     const Light& light, const Material& material, float lightTexelWorld, const ScreenRect& rect,
+                     bool gather) {
   timer_.begin();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, width_, height_);
   gl::setScreenPassState();
-  // Outside the rectangle there is no surface: alpha -1, which the upsample leaves out (alpha >= 0
-  // is a surface's mirrored bounce, bounce_gather.frag.glsl).
-  const float none[4] = {0, 0, 0, -1};
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, none);
-  scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_NORMAL, in.normal);
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
+  if (gather) {
+    gatherBounces(camera, lightM, light, lightTexelWorld, rect);
+  }
+  // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, kNone);
+  scissorTo(scaledDown(rect, scale_));
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
+  setFrameUniforms(mergeProgram_, camera, lightM, light, lightTexelWorld);
+  uploadMaterialUniforms(mergeProgram_, material);
+  mergeProgram_.set("u_scale", scale_);
+  mergeProgram_.set("u_further_scale", 2 * scale_);
+  gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
+  scissorOff();
+  timer_.end();
+}
+
+void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                               float lightTexelWorld, const ScreenRect& rect) {
+  // The first bounce, from the light's map.
+  glBindFramebuffer(GL_FRAMEBUFFER, firstFbo_.id());
+  glViewport(0, 0, width_, height_);
+  glClearNamedFramebufferfv(firstFbo_.id(), GL_COLOR, 0, kNone);
+  scissorTo(scaledDown(rect, scale_));
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
-  scissorOff();
-  timer_.end();
+  // The further bounces, from the first, on the grid twice as coarse.
+  glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
+  glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
+  glClearNamedFramebufferfv(furtherFbo_.id(), GL_COLOR, 0, kNone);
+  scissorTo(scaledDown(rect, 2 * scale_));
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);
+  furtherProgram_.set("u_scale", 2 * scale_);
+  furtherProgram_.set("u_bounce_scale", scale_);
+  gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
 }
 
 }  // namespace marble

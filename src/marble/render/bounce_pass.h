@@ -5,7 +5,12 @@
 // the lighting pass upsamples (shaders/bounce_upsample.glsl). Gathered at every lighting texel it
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
-// at 1.4x. It reads no material parameter: the emitters' albedo is applied by the lighting pass.
+// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on a grid
+// twice as coarse each way (shaders/bounce_further.frag.glsl; on the first's grid it cost the
+// dragon's 800² frames 1.06-1.08x by instructions), and a third adds them to the first on its grid
+// (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
+// per texel of this grid: the pass reads the base colour and the ior, and where only they changed
+// it runs the third draw alone (`gather` false).
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -25,17 +30,24 @@ public:
   // has bounceScale() of them.
   void resize(int width, int height, int lightingScale);
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-           float lightTexelWorld, const ScreenRect& rect);
+           const Material& material, float lightTexelWorld, const ScreenRect& rect, bool gather);
+  // All bounces (bounce_merge.frag.glsl's output), for the lighting pass.
   GLuint bounceTexture() const { return bounce_.id(); }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  // Two RGBA16F on this grid (the first bounce, all bounces), one on the further bounces'.
+  size_t bytes() const {
+    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8;
+  }
   PassTimer& timer() { return timer_; }
 
 private:
-  gl::Program program_;
+  // The first two draws: the first bounce and the further bounces, before any material parameter.
+  void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                     float lightTexelWorld, const ScreenRect& rect);
+  gl::Program program_, furtherProgram_, mergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture bounce_;
-  gl::Framebuffer fbo_;
+  gl::Texture first_, further_, bounce_;
+  gl::Framebuffer firstFbo_, furtherFbo_, fbo_;
   int width_ = 0, height_ = 0, scale_ = 0;
   PassTimer timer_;
 };

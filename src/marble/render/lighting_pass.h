@@ -19,7 +19,7 @@ namespace marble {
 
 struct LightingInputs {
   GLuint albedo, normal, depth, lightDistance, lightDepth;
-  GLuint bounce;    // `marble`: the bounce pass's gather (BouncePass)
+  GLuint bounce;    // `marble`: the bounce pass's gather, all bounces (BouncePass)
   int bounceScale;  // and its full-resolution pixels per texel
 };
 

@@ -46,6 +46,13 @@ bool sameInput(PassInput i, const FrameInputs& a, const FrameInputs& b) {
 }
 
 bool PassCache::current(Pass p, const FrameInputs& now) const {
+  // The groups of the frame's mode: a pass that does not declare the mode reads the same
+  // groups in every mode it runs in (tests/pass_list_test.cpp).
+  return currentButMaterial(p, now) &&
+         sameGroups(made_[p]->inputs.scene.material, now.scene.material, passGroups(p, now.scene.render.mode));
+}
+
+bool PassCache::currentButMaterial(Pass p, const FrameInputs& now) const {
   const std::optional<Record>& r = made_[p];
   if (!r) return false;
   const PassDecl& d = passDecl(p);
@@ -55,9 +62,6 @@ bool PassCache::current(Pass p, const FrameInputs& now) const {
                                  : !sameInput(static_cast<PassInput>(i), r->inputs, now))
       return false;
   }
-  // The groups of the frame's mode: a pass that does not declare the mode reads the same
-  // groups in every mode it runs in (tests/pass_list_test.cpp).
-  if (!sameGroups(r->inputs.scene.material, now.scene.material, passGroups(p, now.scene.render.mode))) return false;
   const PassSet reads = passReads(p, now.scene);
   for (const PassDecl& q : passList())
     if ((reads & passBit(q.pass)) != 0 && r->generations[q.pass] != generation_[q.pass]) return false;

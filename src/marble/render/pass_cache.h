@@ -31,6 +31,9 @@ class PassCache {
 public:
   // Whether p's stored output is what running it for `now` would make.
   bool current(Pass p, const FrameInputs& now) const;
+  // The same, the material aside: p's output was made for `now` but for the material parameters it
+  // reads (the bounce pass re-runs only its last, cheap draw for them).
+  bool currentButMaterial(Pass p, const FrameInputs& now) const;
   // p's output was just made for `now`.
   void made(Pass p, const FrameInputs& now);
   // A renderer state input (LightMesh .. TurbulenceGrid) changed.

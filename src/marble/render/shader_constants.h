@@ -34,6 +34,7 @@
   X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, in bounce_gather.frag.glsl (its units 1, 2 above) */  \
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
+  X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_upsample.glsl: the pass's further bounces */            \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \
   X(UNIT_POST_BLURRED, 2)                                                                               \

@@ -131,7 +131,7 @@ const ParamDesc kParams[] = {
     {.key = "base_color", .group = ParamGroup::BaseColour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "base", .tooltip = "Albedo of the stone between veins (linear RGB).",
      .doc = "the stone between veins; also the `floor` mode's flat colour and, in `marble`, the albedo of the light bounced inside the object",
-     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kLightingPassBit,
+     .modes = kShadingModes | modeBit(RenderMode::Floor), .passes = kPattern | kFloorPassBit | kBouncePassBit,
      .uniform = "u_pat_base_color", .choices = {}, .slider = {}, MARBLE_FIELD(BaseColourParams::base_color)},
     {.key = "vein_color", .group = ParamGroup::Colour, .type = ParamType::Colour, .lo = 0, .hi = 1, .atMost = nullptr,
      .unit = "linear RGB", .label = "vein", .tooltip = "Albedo at the heart of a vein (linear RGB).",
@@ -366,7 +366,7 @@ const ParamDesc kParams[] = {
                 "stone's coefficients (Cycles' conversion); light entering the stone follows the Principled coupling, as in Blender.\n"
                 "Calcite is 1.49-1.66 (F0 about 0.04-0.06).",
      .doc = "index of refraction; F0 = ((n−1)/(n+1))²; calcite 1.486–1.658", .modes = kMarble,
-     .passes = kLightingPassBit | kPostPassBit, .uniform = "u_ior", .choices = {}, .slider = {1.0f, 3.0f, false},
+     .passes = kLightingPassBit | kPostPassBit | kBouncePassBit, .uniform = "u_ior", .choices = {}, .slider = {1.0f, 3.0f, false},
      MARBLE_FIELD(ScatteringParams::ior)},
     {.key = "translucency", .group = ParamGroup::Scattering, .type = ParamType::Float, .lo = 0.0, .hi = 10.0,
      .atMost = nullptr, .unit = "", .label = "translucency",

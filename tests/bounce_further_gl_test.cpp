@@ -1,0 +1,119 @@
+// The `marble` mode's further bounces (shaders/bounce_further.frag.glsl) at their absolute level, in
+// a fold: a lit plate (light straight down) and a wall standing on it. The wall's face toward the
+// plate gets no direct light, only the plate's first bounce; the plate then gets that back: the
+// second bounce, which the light's map cannot give (its emitter, the wall's face, is not lit). The
+// plate's radiance with the wall, less without it, is (the plate re-emits albedo x E, E = PI at
+// normal incidence: radiance a; the stone takes diffuse light in at 41/42)
+//   L2(x) = a^3 (41/42)^2 ∫_wall f(y) cosθ_y cosθ_x / (π r²) dA_y,
+//   f(y) = ∫_plate cosθ_p cosθ_y / (π r²) dA_p,
+// the analytic two-bounce radiosity of the fold, integrated here on the CPU (the wall's face on a
+// 48 x 48 grid, f at each point on 100 x 200: converged to 1 %). Neglected: the plate's fourth
+// bounce (a^2 f f' of the second: ~0.1 of it here) and what the plate's specular layer mirrors of
+// the wall (F0 0.04). At 1000 mm per unit the subsurface blur reaches ~0.02 units.
+// Measured (session 13): the screen-space second bounce alone 0.73 and 0.83 of L2 at 0.15 and 0.3
+// from the wall, with the series for the later bounces 1.07 and 1.13 (the series assumes a
+// neighbourhood that re-emits its own further bounce, ~1.3x here, where the fold's fourth bounce is
+// ~1.1x). Allowed 35 %. Controls (shader edited, rebuilt): further bounces off, 0 (fails); the
+// first version (samples snapped to the pass's texels, four rings over a quarter of the frame, the
+// first bounce's softened law), 0.51 and 0.42 with the series (fails); four angles per ring
+// instead of eight, 1.71 at 0.15 (fails).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "box_mesh.h"
+#include "gl_support.h"
+#include "image_probe.h"
+#include "principled_stone.h"
+#include "marble/mesh/vertex_normals.h"
+
+using namespace marble;
+using namespace marble::test;
+
+namespace {
+
+// The wall: x in [-kWall, kWall], y in [kPlateTop, 1]; the plate: y in [kPlateTop - 0.2,
+// kPlateTop], x in [kWall, 1]; both z in [-1, 1] (bounce_gl_test.cpp's corner).
+constexpr float kWall = 0.1f, kPlateTop = -0.6f;
+constexpr float kAlbedo = 0.8f;
+// A point on the plate's top, d from the wall's face.
+glm::vec3 probe(float d) { return {kWall + d, kPlateTop, 0.0f}; }
+
+Mesh fold(bool withWall) {
+  Mesh m;
+  if (withWall) addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  addBox(m, {kWall, kPlateTop - 0.2f, -1.0f}, {1.0f, kPlateTop, 1.0f});
+  computeVertexNormals(m, 60.0f);  // flat faces
+  return m;
+}
+
+Scene foldScene() {
+  Scene s;
+  s.mesh = "test:fold";
+  s.mm_per_unit = 1000.0f;
+  s.render.width = s.render.height = 256;
+  s.render.mode = RenderMode::Marble;
+  s.render.environment = Environment::None;
+  // Looking into the fold at 45 degrees: the camera sees the wall's face and the plate alike (the
+  // further bounces' emitters are the surfaces the camera sees).
+  s.camera.position = {kWall + 2.0f, kPlateTop + 2.0f, 0.0f};
+  s.camera.target = {kWall + 0.3f, kPlateTop + 0.3f, 0.0f};
+  s.camera.fov_y_deg = 40;
+  s.light.type = LightType::Directional;
+  s.light.position = {0.0f, 1.0f, 0.0f};  // straight down: the wall's face is edge-on to it
+  s.light.intensity = 1.0f;
+  s.material = test::principledStone(glm::vec3(kAlbedo));
+  return s;
+}
+
+// f(y, z): the plate's top face's view factor from the wall's face at (kWall, y, z).
+double plateSeenFromWall(double y, double z) {
+  const int nx = 100, nz = 200;
+  const double dx = (1.0 - kWall) / nx, dz = 2.0 / nz;
+  double sum = 0.0;
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k < nz; ++k) {
+      const double ux = (i + 0.5) * dx, uy = kPlateTop - y, uz = -1.0 + (k + 0.5) * dz - z;  // wall -> plate
+      const double r2 = ux * ux + uy * uy + uz * uz;
+      sum += ux * -uy / (r2 * r2 * M_PI);  // cosθ_y cosθ_p / (π r²), the cosines as dots over r
+    }
+  return sum * dx * dz;
+}
+
+// ∫_wall f(y) cosθ_y cosθ_x / (π r²) dA_y at the plate's point d from the wall.
+double twoBounceIntegral(float d) {
+  const int ny = 48, nz = 48;
+  const double dy = (1.0 - kPlateTop) / ny, dz = 2.0 / nz;
+  double sum = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int k = 0; k < nz; ++k) {
+      const double y = kPlateTop + (j + 0.5) * dy, z = -1.0 + (k + 0.5) * dz;
+      const double ux = -d, uy = y - kPlateTop, uz = z;  // plate point -> wall point
+      const double r2 = ux * ux + uy * uy + uz * uz;
+      sum += plateSeenFromWall(y, z) * (-ux) * uy / (r2 * r2 * M_PI);
+    }
+  return sum * dy * dz;
+}
+
+}  // namespace
+
+TEST(BounceFurther, TheFoldsPlateGetsItsLightBackFromTheWall) {
+  HeadlessContext& context = glContext();
+  (void)context;
+  const Scene s = foldScene();
+  Renderer withWall, plateAlone;
+  withWall.setMesh(fold(true));
+  plateAlone.setMesh(fold(false));
+  renderImage(withWall, s);
+  const ImageRGBF a = withWall.readHdr();
+  renderImage(plateAlone, s);
+  const ImageRGBF b = plateAlone.readHdr();
+  for (float d : {0.15f, 0.3f}) {
+    const glm::vec3 got = linearRgbAround(a, s, probe(d)) - linearRgbAround(b, s, probe(d));
+    const double expected = std::pow(kAlbedo, 3.0) * (41.0 / 42.0) * (41.0 / 42.0) * twoBounceIntegral(d);
+    std::cout << "[          ] d " << d << ": expected " << expected << ", got " << got.g << " ("
+              << got.g / expected << ")\n";
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected, 0.35 * expected) << "d " << d << " channel " << c;
+  }
+}

@@ -23,20 +23,13 @@
 #include "marble/mesh/point_ids.h"
 #include "marble/mesh/vertex_normals.h"
 
+#include "load_timing.h"
+
 namespace {
 
-double wallMs() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double cpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
+using load_timing::cpuMs;
+using load_timing::median;
+using load_timing::wallMs;
 
 bool sameMesh(const marble::Mesh& a, const marble::Mesh& b) {
   auto same = [](const auto& x, const auto& y) {

@@ -145,6 +145,14 @@ TEST_F(TransmissionSlab, PointLightFarAwayGivesTheSame) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], expected[c], 0.06f * expected[c]) << "channel " << c;
 }
 
+// The light entering at angle theta from the normal: cos · principled_entry(cos), the entry
+// weight both slanted-light tests expect.
+static float slantedEntry(float theta) {
+  const float c = std::cos(theta);
+  const float m = 1.0f - c;
+  return c * (1.0f - 0.5f * m * m * m * m * m);
+}
+
 // Light from behind at theta off the slab's normal (the light's map sees the 4 mm slab slanted,
 // its chord 4 mm / cos theta: 11.7 mm at 70 degrees). Cycles' walk enters cosine-weighted about the
 // normal whatever the light's slant, so a slanted slab passes what its thickness lets through: its
@@ -167,9 +175,7 @@ TEST_F(TransmissionSlab, SlantedLightPassesWhatTheSlabsThicknessLetsThrough) {
     s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};  // the light travels along (-sin, 0, cos)
     const ImageRGBF img = render(s);
     const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
-    const float c = std::cos(theta);
-    const float m = 1.0f - c;
-    const float entry = c * (1.0f - 0.5f * m * m * m * m * m);  // cos · principled_entry(cos)
+    const float entry = slantedEntry(theta);
     const float thickness = crossedMm() / kMmPerUnit * s.mm_per_unit;
     const glm::vec3 expected = entry * s.material.base_color * slabTransport(s.material, thickness);
     for (int ch = 0; ch < 3; ++ch) {
@@ -223,9 +229,7 @@ TEST_F(TransmissionShell, CurvedPlateLitAtASlantPassesWhatItsThicknessLetsThroug
     s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};
     const ImageRGBF img = render(s);
     const glm::vec3 centre = linearRgbAround(img, s, {0, 0, kHalfThickness});
-    const float c = std::cos(theta);
-    const float m = 1.0f - c;
-    const float entry = c * (1.0f - 0.5f * m * m * m * m * m);  // cos · principled_entry(cos)
+    const float entry = slantedEntry(theta);
     const float thickness = crossedMm() / kMmPerUnit * s.mm_per_unit;
     const float radii = (kShellRadius - 2.0f * kHalfThickness) / kShellRadius;  // inner / outer face
     const glm::vec3 expected = radii * entry * s.material.base_color * slabTransport(s.material, thickness);

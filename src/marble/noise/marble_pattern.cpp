@@ -8,6 +8,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -278,6 +279,8 @@ __attribute__((flatten)) void shadeRow(const PatParams& P, glm::vec3 origin, glm
 }  // namespace
 
 bool veinRowsUseLanes() { return patlanes::lanesAvailable(); }
+bool veinRowsUseWideLanes() { return patlanes::lanesAvailable() && patlanes::wideLanesAvailable() && patlanes::wideLanesWanted(); }
+void setVeinRowsWideLanes(bool on) { patlanes::wideLanesWanted() = on; }
 VeinRowCounts veinRowCounts() { return threadVeinRowCounts; }
 
 namespace {

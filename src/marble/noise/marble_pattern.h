@@ -79,6 +79,11 @@ struct VeinRowCounts {
   long long singlePoints = 0;
 };
 bool veinRowsUseLanes();
+// Whether the lanes shade on their AVX-512 build (where the CPU has AVX-512 F/VL/BW/DQ; the same
+// bits as the AVX2 build, fewer spills), and a switch to the AVX2 build on such a CPU, so that the
+// tests check both (process-wide; on by default).
+bool veinRowsUseWideLanes();
+void setVeinRowsWideLanes(bool on);
 VeinRowCounts veinRowCounts();
 
 // The vein model's turbulence (its octaves down to 2 texels, pattern_core.glsl

@@ -15,6 +15,7 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
+      entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
@@ -49,6 +50,10 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }
+  if (entriesStale_ || !gather) {
+    gatherEntries(camera, lightM, light, material, lightTexelWorld, in.bounceMapSize);
+    entriesStale_ = false;
+  }
   // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
@@ -63,6 +68,23 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
+}
+
+void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                               const Material& material, float lightTexelWorld, int mapSize) {
+  if (mapSize != entrySize_ || !entryFbo_) {
+    entrySize_ = mapSize;
+    // Linear: the lighting pass reads it bilinearly (bounce_entry.glsl), averaging the four turns.
+    entry_ = gl::makeTexture2D(GL_RGBA16F, mapSize, mapSize, GL_LINEAR);
+    entryFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(entryFbo_.id(), GL_COLOR_ATTACHMENT0, entry_.id(), 0);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, entryFbo_.id());
+  glViewport(0, 0, entrySize_, entrySize_);
+  scissorOff();  // the whole map: the camera's rectangle does not apply
+  setFrameUniforms(entryProgram_, camera, lightM, light, lightTexelWorld);
+  uploadMaterialUniforms(entryProgram_, material);
+  gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,

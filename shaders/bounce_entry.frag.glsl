@@ -1,6 +1,6 @@
 #version 450 core
 // The bounce pass's entry draw (`marble` only): the first bounce (bounce.glsl) gathered at the
-// light's side of the stone, one texel per texel of the reflective shadow map's finest level, so
+// light's side of the stone, one texel per texel of a level of the reflective shadow map, so
 // that the transmission carries it through (lighting.frag.glsl, marble_entering). Light that one
 // lit part sends to another lit part enters the stone there with the light's own; where the second
 // part is thin (a handle, a spout, a rim seen edge-on) it crosses to the side the camera sees. The
@@ -9,8 +9,8 @@
 // behind has its indirect light, 36 % of the picture, almost all within three pixels of the
 // silhouettes, two thirds of it where marble's camera-side bounce gave a third of it
 // (docs/quality.md, "Fifteenth session: the indirect light that crosses the thin parts").
-// Texel t of this grid is the map's finest texel t: its surface (the light-weighted mean position
-// and normal over it) is the receiver, so the grid depends on the mesh and the light only and the
+// Texel t of this grid is texel t of the map's level u_level (BouncePass: kEntryLevel): its surface
+// (the light-weighted mean position and normal over it) is the receiver, so the grid depends on the mesh and the light only and the
 // renderer re-gathers it when the light's map is redrawn or the base colour or ior change, not
 // when the camera moves.
 // Interleaved as the camera-side gather: each 2 x 2 block turns the pattern by quarters of its
@@ -23,6 +23,7 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
 uniform float u_ior;            // the emitters' Fresnel F0 (their glossy reflection)
+uniform int u_level;            // the reflective shadow map's level this grid's texels are (BouncePass)
 
 // rgb: irradiance / PI per unit of the light's radiance, the emitters' albedo and Fresnel factors
 // applied (as bounce_merge.frag.glsl applies them to the camera-side gather); a: unused.
@@ -30,8 +31,8 @@ layout(location = 0) out vec4 o_entry;
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
-  vec4 pw = texelFetch(u_bounce_position, t, 0);
-  vec3 n = texelFetch(u_bounce_normal, t, 0).xyz;
+  vec4 pw = texelFetch(u_bounce_position, t, u_level);
+  vec3 n = texelFetch(u_bounce_normal, t, u_level).xyz;
   if (pw.w <= 0.0 || dot(n, n) < 1e-8) {
     o_entry = vec4(0.0);
     return;

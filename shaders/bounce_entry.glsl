@@ -1,5 +1,5 @@
-// The first bounce that enters the stone on its lit side (bounce_entry.frag.glsl, gathered on the
-// reflective shadow map's finest grid), read for the transmission in the lighting pass: light one
+// The first bounce that enters the stone on its lit side (bounce_entry.frag.glsl, gathered on a
+// level of the reflective shadow map's grid), read for the transmission in the lighting pass: light one
 // lit part sends to another lit part, entering there beside the light's own and crossing a thin
 // part to the side the camera sees (lighting.frag.glsl, marble_entering).
 // Needs from the includer: deferred_common.glsl (u_light_view_proj).

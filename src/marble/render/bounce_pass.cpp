@@ -1,5 +1,7 @@
 #include "marble/render/bounce_pass.h"
 
+#include <algorithm>
+
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -9,6 +11,13 @@ namespace {
 // Outside the rectangle there is no surface: alpha -1, which the upsamples leave out (alpha >= 0
 // is a surface's, bounce_gather.frag.glsl).
 constexpr float kNone[4] = {0, 0, 0, -1};
+// The entry draw's grid: this level of the reflective shadow map (64² of the 1024² light map's
+// 128²). Its gather costs as much per texel as the camera-side first bounce's (21.6 M instructions
+// for the dragon's 100² texels at 800²), and it runs on every light move: at level 0 (128²) it
+// would cost ~35 M a light frame (~9 %), at level 1 ~9 M. The light it carries is smooth over
+// a thin part's width on the lit side (tens of millimetres), which level 1's texels (~25 mm on the
+// teapot) resolve as coarsely as the camera-side gather's grid.
+constexpr int kEntryLevel = 1;
 }  // namespace
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
@@ -72,10 +81,11 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
 
 void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                                const Material& material, float lightTexelWorld, int mapSize) {
-  if (mapSize != entrySize_ || !entryFbo_) {
-    entrySize_ = mapSize;
+  const int size = std::max(mapSize >> kEntryLevel, 1);
+  if (size != entrySize_ || !entryFbo_) {
+    entrySize_ = size;
     // Linear: the lighting pass reads it bilinearly (bounce_entry.glsl), averaging the four turns.
-    entry_ = gl::makeTexture2D(GL_RGBA16F, mapSize, mapSize, GL_LINEAR);
+    entry_ = gl::makeTexture2D(GL_RGBA16F, size, size, GL_LINEAR);
     entryFbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(entryFbo_.id(), GL_COLOR_ATTACHMENT0, entry_.id(), 0);
   }
@@ -84,6 +94,7 @@ void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices
   scissorOff();  // the whole map: the camera's rectangle does not apply
   setFrameUniforms(entryProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(entryProgram_, material);
+  entryProgram_.set("u_level", kEntryLevel);
   gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 

@@ -11,7 +11,7 @@
 // (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
 // per texel of this grid: the pass reads the base colour and the ior, and where only they changed
 // it runs the third draw alone (`gather` false). A fourth draw gathers the first bounce at the
-// light's side, on the reflective shadow map's finest grid (shaders/bounce_entry.frag.glsl), for
+// light's side, on a level of the reflective shadow map (shaders/bounce_entry.frag.glsl), for
 // the transmission to carry through thin parts; it depends on the light, the mesh, the base colour
 // and the ior only, so it runs after markEntriesStale() (the renderer calls it whenever the
 // light's map is redrawn) or when the material changed, not when only the camera moves.
@@ -44,7 +44,7 @@ public:
   void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
   // Two RGBA16F on this grid (the first bounce, all bounces), one on the further bounces'.
-  // And one RGBA16F on the reflective shadow map's finest grid (the entries).
+  // And one RGBA16F on the entries' grid.
   size_t bytes() const {
     return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
            static_cast<size_t>(entrySize_) * entrySize_ * 8;

@@ -5,14 +5,15 @@
 // lit part sends to another lit part enters the stone there with the light's own; where the second
 // part is thin (a handle, a spout, a rim seen edge-on) it crosses to the side the camera sees. The
 // camera-side gathers (bounce_gather, bounce_further) cannot hold it: their receivers are surfaces
-// the camera sees, and this light arrives on surfaces facing away from it. Cycles' teapot lit from
-// behind has its indirect light, 36 % of the picture, almost all within three pixels of the
-// silhouettes, two thirds of it where marble's camera-side bounce gave a third of it
-// (docs/quality.md, "Fifteenth session: the indirect light that crosses the thin parts").
-// Texel t of this grid is texel t of the map's level u_level (BouncePass: kEntryLevel): its surface
-// (the light-weighted mean position and normal over it) is the receiver, so the grid depends on the mesh and the light only and the
-// renderer re-gathers it when the light's map is redrawn or the base colour or ior change, not
-// when the camera moves.
+// the camera sees, and this light arrives on surfaces facing away from it. In Cycles' teapot lit
+// from behind it is 16 % of the indirect light (the translucent teapot's less the opaque one's;
+// docs/quality.md, "Fifteenth session: teapot-back's indirect light is the parts' lit rims lighting
+// each other"); the rest crosses the air between the parts' lit rims, which the camera-side gather
+// is meant to hold.
+// Texel t of this grid is texel t of the map's level u_level (BouncePass: kEntryLevel): its
+// surface (the light-weighted mean position and normal over it) is the receiver, so the grid
+// depends on the mesh, the light and the material only, and the renderer re-gathers it when the
+// light's map is redrawn or the base colour or ior change, not when the camera moves.
 // Interleaved as the camera-side gather: each 2 x 2 block turns the pattern by quarters of its
 // angular step, and the lighting pass reads the grid bilinearly.
 const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs it

@@ -1,6 +1,6 @@
 // The first bounce that enters a thin part on its lit side and crosses it (shaders/bounce_entry.
 // frag.glsl, bounce_entry.glsl; docs/quality.md, "Fifteenth session: teapot-back's indirect light
-// is the parts' rims lighting each other"). A thin plate (5 mm at 100 mm per unit) with a wall
+// is the parts' lit rims lighting each other"). A thin plate (5 mm at 100 mm per unit) with a wall
 // standing on it, the light from above at 45 degrees on the wall's side: the wall's face and the
 // plate's top are lit, and the wall's face sends light onto the plate's top. Seen from above, the
 // plate's top gains that bounce (the camera-side gather); seen from below, its underside gains the

@@ -70,6 +70,7 @@ float thickness_at(vec3 p) {
 #include "environment.glsl"
 #include "marble_light.glsl"
 #include "bounce_upsample.glsl"
+#include "bounce_entry.glsl"
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -446,6 +447,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
+  vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
     // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
@@ -454,9 +456,15 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
     float hidden = smoothstep(tol, 3.0 * tol, entry_hidden_by(P_in + light_vector(P_in) * s)) *
                    (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
+    // The first bounce entering at the same entry (bounce_entry.glsl), carried through the chord
+    // as light entering at normal incidence is (slab_transport: the straight model alone, without
+    // the rings' spread, which matters only where the chord is too long for it to be seen). Only
+    // where the camera does not see the entry: where it does, the camera-side gather already
+    // holds that light (marble_bounce) and the blur spreads it.
+    crossed = bounce_entering_at(P_in) * slab_transport(s * u_mm_per_unit) * hidden;
   }
-  return entering + light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight *
-                        u_translucency;
+  return entering + (light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight +
+                     u_light_radiance * crossed) * u_translucency;
 }
 
 // The paper's reflectance (§3.3) on colour C: the Schlick term F over it, by schlick_blend.

@@ -1,5 +1,7 @@
 #include "marble/render/bounce_pass.h"
 
+#include <algorithm>
+
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -9,12 +11,20 @@ namespace {
 // Outside the rectangle there is no surface: alpha -1, which the upsamples leave out (alpha >= 0
 // is a surface's, bounce_gather.frag.glsl).
 constexpr float kNone[4] = {0, 0, 0, -1};
+// The entry draw's grid: this level of the reflective shadow map (64² of the 1024² light map's
+// 128²). Its gather costs as much per texel as the camera-side first bounce's (21.6 M instructions
+// for the dragon's 100² texels at 800²), and it runs on every light move: at level 0 (128²) it
+// would cost ~35 M a light frame (~9 %), at level 1 ~9 M. The light it carries is smooth over
+// a thin part's width on the lit side (tens of millimetres), which level 1's texels (~25 mm on the
+// teapot) resolve as coarsely as the camera-side gather's grid.
+constexpr int kEntryLevel = 1;
 }  // namespace
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
+      entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
@@ -49,6 +59,10 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }
+  if (entriesStale_ || !gather) {
+    gatherEntries(camera, lightM, light, material, lightTexelWorld, in.bounceMapSize);
+    entriesStale_ = false;
+  }
   // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
@@ -63,6 +77,25 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
   timer_.end();
+}
+
+void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                               const Material& material, float lightTexelWorld, int mapSize) {
+  const int size = std::max(mapSize >> kEntryLevel, 1);
+  if (size != entrySize_ || !entryFbo_) {
+    entrySize_ = size;
+    // Linear: the lighting pass reads it bilinearly (bounce_entry.glsl), averaging the four turns.
+    entry_ = gl::makeTexture2D(GL_RGBA16F, size, size, GL_LINEAR);
+    entryFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(entryFbo_.id(), GL_COLOR_ATTACHMENT0, entry_.id(), 0);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, entryFbo_.id());
+  glViewport(0, 0, entrySize_, entrySize_);
+  scissorOff();  // the whole map: the camera's rectangle does not apply
+  setFrameUniforms(entryProgram_, camera, lightM, light, lightTexelWorld);
+  uploadMaterialUniforms(entryProgram_, material);
+  entryProgram_.set("u_level", kEntryLevel);
+  gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,

@@ -10,7 +10,11 @@
 // dragon's 800² frames 1.06-1.08x by instructions), and a third adds them to the first on its grid
 // (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
 // per texel of this grid: the pass reads the base colour and the ior, and where only they changed
-// it runs the third draw alone (`gather` false).
+// it runs the third draw alone (`gather` false). A fourth draw gathers the first bounce at the
+// light's side, on a level of the reflective shadow map (shaders/bounce_entry.frag.glsl), for
+// the transmission to carry through thin parts; it depends on the light, the mesh, the base colour
+// and the ior only, so it runs after markEntriesStale() (the renderer calls it whenever the
+// light's map is redrawn) or when the material changed, not when only the camera moves.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -21,6 +25,7 @@ namespace marble {
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
+  int bounceMapSize;                                   // the reflective shadow map's finest width
 };
 
 class BouncePass {
@@ -33,10 +38,16 @@ public:
            const Material& material, float lightTexelWorld, const ScreenRect& rect, bool gather);
   // All bounces (bounce_merge.frag.glsl's output), for the lighting pass.
   GLuint bounceTexture() const { return bounce_.id(); }
+  // The first bounce at the light's entries (bounce_entry.frag.glsl), for the lighting pass.
+  GLuint entryTexture() const { return entry_.id(); }
+  // The light's map was redrawn: the entry draw must run again at the next run().
+  void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
   // Two RGBA16F on this grid (the first bounce, all bounces), one on the further bounces'.
+  // And one RGBA16F on the entries' grid.
   size_t bytes() const {
-    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8;
+    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
+           static_cast<size_t>(entrySize_) * entrySize_ * 8;
   }
   PassTimer& timer() { return timer_; }
 
@@ -44,11 +55,15 @@ private:
   // The first two draws: the first bounce and the further bounces, before any material parameter.
   void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                      float lightTexelWorld, const ScreenRect& rect);
-  gl::Program program_, furtherProgram_, mergeProgram_;
+  // The fourth draw: the first bounce at the light's entries, the material applied.
+  void gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                     const Material& material, float lightTexelWorld, int mapSize);
+  gl::Program program_, furtherProgram_, mergeProgram_, entryProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture first_, further_, bounce_;
-  gl::Framebuffer firstFbo_, furtherFbo_, fbo_;
-  int width_ = 0, height_ = 0, scale_ = 0;
+  gl::Texture first_, further_, bounce_, entry_;
+  gl::Framebuffer firstFbo_, furtherFbo_, fbo_, entryFbo_;
+  int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0;
+  bool entriesStale_ = true;
   PassTimer timer_;
 };
 

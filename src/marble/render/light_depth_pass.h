@@ -22,6 +22,7 @@ public:
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
   int size() const { return size_; }
+  int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest width
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
   // mipmaps a third more) + depth 4 at its own size.
   size_t bytes() const {

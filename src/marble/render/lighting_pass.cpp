@@ -71,6 +71,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   const GLuint textures[] = {in.albedo, in.normal, in.depth, in.lightDistance, in.lightDepth};
   glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 5, textures);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, in.bounce);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_ENTRY, in.bounceEntry);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));

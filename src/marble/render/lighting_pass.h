@@ -21,6 +21,7 @@ struct LightingInputs {
   GLuint albedo, normal, depth, lightDistance, lightDepth;
   GLuint bounce;    // `marble`: the bounce pass's gather, all bounces (BouncePass)
   int bounceScale;  // and its full-resolution pixels per texel
+  GLuint bounceEntry;  // `marble`: the first bounce at the light's entries (BouncePass)
 };
 
 class LightingPass {

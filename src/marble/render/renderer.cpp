@@ -277,6 +277,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   const LightMatrices& light = now.light;
   if (stale(Pass::LightDepth)) {
     passes_->lightDepth.run(lightMesh(), model, light);
+    passes_->bounce.markEntriesStale();
     ran(Pass::LightDepth);
   }
   passes_->geometry.resize(width, height);
@@ -310,7 +311,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     passes_->bounce.resize(width, height, scale);
     if (stale(Pass::Bounce)) {
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
-                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture()},
+                           passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
+                           passes_->lightDepth.bounceSize()},
                           camera, light, scene.light, scene.material, lightTexelWorld, rect,
                           !cache_.currentButMaterial(Pass::Bounce, now));
       ran(Pass::Bounce);
@@ -323,7 +325,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                             passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture(),
                             passes_->bounce.bounceTexture(),
-                            passes_->bounce.scale()};
+                            passes_->bounce.scale(),
+                            passes_->bounce.entryTexture()};
     // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still
     // name the G-buffer depth of an earlier frame size, deleted since (0 detaches).
     passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(),

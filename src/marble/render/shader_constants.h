@@ -35,6 +35,7 @@
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_upsample.glsl: the pass's further bounces */            \
+  X(UNIT_LIGHTING_BOUNCE_ENTRY, 11)   /* bounce_entry.glsl: the bounce at the light's entries */         \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \
   X(UNIT_POST_BLURRED, 2)                                                                               \

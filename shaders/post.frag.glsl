@@ -121,6 +121,8 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   o_surface_reflected = vec4(reflected, 1.0);
 #endif
 #endif
+  // Stored or computed, the same two values and the same sum (a multiply-add fused across this
+  // sum in one program and not the other would break that: PassFixture.PatternOnlyFrames* checks).
   return marble_diffuse(px, depth, N) + reflected;
 }
 

@@ -14,11 +14,25 @@
 //   2  neither changed (gloss, exposure, background): the stored diffuse part, one read.
 // On llvmpipe every texture read costs about as much over the frame as a simple pass's
 // arithmetic, and a pass of its own costs more: the albedo pass is not run for `marble`.
+//
+// SURFACE_REUSE (source 0 only; a constant of the program, chosen by the renderer): in a frame in
+// which only the pattern changed, everything but the albedo is what the previous frame computed.
+//   0  nothing stored or read (the camera's and the light's frames: nothing to reuse);
+//   1  a frame that changed only the pattern: it also writes the upsampled blurred light and the
+//      reflected light (o_surface_light, o_surface_reflected, RGBA32F: the values exactly);
+//   2  the next such frames: they read those two back instead of the upsample, the shadow's
+//      taps, GGX and the environment (about a third of the contour presets' pattern frame).
+// The values are stored as 32-bit floats, the precision they are computed in, and combined with
+// the albedo by the same operations, so a reused frame equals a fresh one bit for bit
+// (PostSurfaceReuse tests).
 #include "gbuffer.glsl"
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
 #include "subsurface_common.glsl"
 
+#ifndef SURFACE_REUSE
+#define SURFACE_REUSE 0
+#endif
 #if COMPOSE_MARBLE == 1 && DIFFUSE_SOURCE == 0
 #include "marble_pattern.glsl"
 #include "pattern_at_pixel.glsl"
@@ -28,6 +42,10 @@ in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_diffuse;  // DIFFUSE_SOURCE 0 and 1: blurred light x albedo, linear
 layout(location = 2) out vec4 o_albedo;   // DIFFUSE_SOURCE 0: the pattern's colour
+layout(location = 3) out vec4 o_surface_light;      // SURFACE_REUSE 1: the upsampled blurred light
+layout(location = 4) out vec4 o_surface_reflected;  // SURFACE_REUSE 1: the reflected light
+layout(binding = UNIT_POST_SURFACE_LIGHT) uniform sampler2D u_surface_light;          // SURFACE_REUSE 2
+layout(binding = UNIT_POST_SURFACE_REFLECTED) uniform sampler2D u_surface_reflected;  // SURFACE_REUSE 2
 layout(binding = UNIT_POST_HDR) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
 layout(binding = UNIT_POST_BLURRED) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
 layout(binding = UNIT_POST_DIFFUSE) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
@@ -72,7 +90,15 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #else
   vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
 #endif
-  vec3 d = as_stored_half(upsample_blurred(u_blurred, px, depth) * albedo);
+#if SURFACE_REUSE == 2
+  vec3 light = texelFetch(u_surface_light, px, 0).rgb;
+#else
+  vec3 light = upsample_blurred(u_blurred, px, depth);
+#if SURFACE_REUSE == 1
+  o_surface_light = vec4(light, 1.0);
+#endif
+#endif
+  vec3 d = as_stored_half(light * albedo);
   o_diffuse = vec4(d, 1.0);
   return d;
 #endif
@@ -82,13 +108,22 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 // highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2).
 vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
+#if SURFACE_REUSE == 2
+  vec3 reflected = texelFetch(u_surface_reflected, px, 0).rgb;
+#else
   vec3 P = surface_point(v_uv, depth);
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  return marble_diffuse(px, depth, N) +
-         marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+  vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+#if SURFACE_REUSE == 1
+  o_surface_reflected = vec4(reflected, 1.0);
+#endif
+#endif
+  // Stored or computed, the same two values and the same sum (a multiply-add fused across this
+  // sum in one program and not the other would break that: PassFixture.PatternOnlyFrames* checks).
+  return marble_diffuse(px, depth, N) + reflected;
 }
 
 void main() {
@@ -101,7 +136,11 @@ void main() {
     // their differences are left out (specular_footprint_a2).
     vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
     float on = surface ? 1.0 : 0.0;
+#if SURFACE_REUSE == 2
+    float a2 = 0.0;  // in the stored reflected light
+#else
     float a2 = specular_footprint_a2(dFdx(N), dFdy(N), dFdx(on), dFdy(on));
+#endif
     c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
   } else {
     c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;

@@ -121,6 +121,48 @@ TEST_F(PassFixture, PatternChangeReRunsOnlyThePatternAndMatchesAFreshRender) {
   EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0);
 }
 
+// Frames that change only the pattern (`--motion pattern`, the panel's pattern sliders) take the
+// reflected and the upsampled blurred light from the frame before (SurfaceReuse): the first such
+// frame stores them, the next ones read them back. Each equals a fresh render bit for bit, for
+// the paper's model and the two vein models; a change of anything else (the gloss, the camera)
+// computes them again. Negative controls (docs/performance.md, fifteenth session): reading the
+// stored light in place of the stored reflected light, or keys that ignore the gloss, fail here.
+TEST_F(PassFixture, PatternOnlyFramesReuseTheSurfaceAndMatchAFreshRender) {
+  for (VeinModel model : {VeinModel::Paper, VeinModel::Network, VeinModel::Breccia}) {
+    Renderer r;
+    r.setMesh(builtinMesh("sphere"));
+    Scene s = marbleScene("sphere", 64);
+    s.material.vein_model = model;
+    const std::string where = "vein model " + std::to_string(static_cast<int>(model)) + ": ";
+    renderImage(r, s);
+    EXPECT_EQ(r.passTimes(true).surfaceReuse, static_cast<int>(SurfaceReuse::None)) << where << "the first frame";
+    const int expected[] = {static_cast<int>(SurfaceReuse::Store), static_cast<int>(SurfaceReuse::Read),
+                            static_cast<int>(SurfaceReuse::Read)};
+    for (int frame = 0; frame < 3; ++frame) {
+      s.material.seed += 17;  // the pattern group only
+      s.material.vein_warp *= 1.2f;
+      const ImageRGBA8 cached = renderImage(r, s);
+      EXPECT_EQ(r.passTimes(true).surfaceReuse, expected[frame]) << where << "pattern frame " << frame;
+      EXPECT_FALSE(r.passTimes(true).ran[Pass::Lighting]) << where;
+      EXPECT_EQ(meanAbsDiff(cached, freshRender("sphere", s)), 0.0) << where << "pattern frame " << frame;
+    }
+    // The gloss with the pattern: the reflected light changed, nothing is read back.
+    s.material.roughness = 0.6f;
+    s.material.seed += 17;
+    EXPECT_EQ(meanAbsDiff(renderImage(r, s), freshRender("sphere", s)), 0.0) << where << "gloss and pattern";
+    EXPECT_EQ(r.passTimes(true).surfaceReuse, static_cast<int>(SurfaceReuse::None)) << where << "gloss";
+    // The camera: everything is new; the next pattern frame stores again, the one after reads.
+    s.camera.position += glm::vec3(0.3f, 0.1f, 0.0f);
+    EXPECT_EQ(meanAbsDiff(renderImage(r, s), freshRender("sphere", s)), 0.0) << where << "camera";
+    EXPECT_EQ(r.passTimes(true).surfaceReuse, static_cast<int>(SurfaceReuse::None)) << where << "camera";
+    for (int frame = 0; frame < 2; ++frame) {
+      s.material.seed += 17;
+      EXPECT_EQ(meanAbsDiff(renderImage(r, s), freshRender("sphere", s)), 0.0) << where << "after the camera";
+      EXPECT_EQ(r.passTimes(true).surfaceReuse, expected[frame]) << where << "after the camera " << frame;
+    }
+  }
+}
+
 // The base colour is another matter since the bounce (shaders/bounce.glsl): the light bounced
 // inside the object comes off the stone with its base colour, which the bounce pass's last draw
 // applies to its gathers (bounce_merge.frag.glsl); so a base colour re-runs the bounce pass (that

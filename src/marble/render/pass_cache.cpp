@@ -45,6 +45,20 @@ bool sameInput(PassInput i, const FrameInputs& a, const FrameInputs& b) {
   return false;
 }
 
+bool sameButPattern(const FrameInputs& a, const FrameInputs& b) {
+  for (size_t i = kRendererStateInputs; i < kPassInputCount; ++i) {
+    const auto input = static_cast<PassInput>(i);
+    if (input != PassInput::SeenPattern && input != PassInput::Scene && !sameInput(input, a, b)) return false;
+  }
+  // The scene but its material; the material's groups that anything but the pattern reads (a
+  // group the pattern shares with another reader, such as the base colour, is compared).
+  Scene withB = a.scene;
+  withB.material = b.scene.material;
+  if (!(withB == b.scene)) return false;
+  const GroupSet others = groupsRead(~static_cast<uint32_t>(kAlbedoPassBit), a.scene.render.mode);
+  return sameGroups(a.scene.material, b.scene.material, others);
+}
+
 bool PassCache::current(Pass p, const FrameInputs& now) const {
   // The groups of the frame's mode: a pass that does not declare the mode reads the same
   // groups in every mode it runs in (tests/pass_list_test.cpp).

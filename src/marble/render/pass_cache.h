@@ -27,6 +27,12 @@ struct FrameInputs {
 // Whether `a` and `b` agree on input `i` (the renderer's state inputs: always; they go by revision).
 bool sameInput(PassInput i, const FrameInputs& a, const FrameInputs& b);
 
+// Whether a and b agree on everything a `marble` frame's reflected light and upsampled blurred
+// light are made from, of the frame's values: all of them but the pattern -- the material groups
+// only the pattern's evaluation reads (groupsRead(kAlbedoPassBit)) and how it is seen (SeenPattern).
+// (The passes' outputs and the renderer's state are compared by the caller.)
+bool sameButPattern(const FrameInputs& a, const FrameInputs& b);
+
 class PassCache {
 public:
   // Whether p's stored output is what running it for `now` would make.

@@ -110,6 +110,9 @@ struct PassTimes {
   // `marble`: where the post pass took the diffuse part from (DiffuseSource: 0 the pattern,
   // evaluated there; 1 the stored albedo; 2 the stored diffuse part); -1 for other modes.
   int diffuseSource = -1;
+  // `marble`, the pattern evaluated: what the post pass did with the reflected and the upsampled
+  // blurred light (SurfaceReuse: 0 computed, 1 computed and stored, 2 read back); -1 otherwise.
+  int surfaceReuse = -1;
 };
 
 }  // namespace marble

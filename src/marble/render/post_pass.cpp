@@ -22,11 +22,13 @@ float fxaaLuma(const glm::vec3& displayColor) { return glm::dot(displayColor, gl
 
 namespace {
 std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource source, const Material& material,
-                                        GLuint turbulenceGrid) {
+                                        GLuint turbulenceGrid, SurfaceReuse reuse) {
   std::vector<std::string> d = {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", "ENV_KIND " + std::to_string(envKind),
                                 "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2)};
-  if (marble && source == DiffuseSource::Pattern)
+  if (marble && source == DiffuseSource::Pattern) {
     for (std::string& p : patternDefines(material, turbulenceGrid)) d.push_back(std::move(p));
+    d.push_back("SURFACE_REUSE " + std::to_string(static_cast<int>(reuse)));
+  }
   return d;
 }
 }  // namespace
@@ -39,11 +41,25 @@ PostPass::PostPass(const ShaderLibrary& shaders)
 }
 
 const gl::Program& PostPass::program(bool marble, int envKind, DiffuseSource source, const Material& material,
-                                     GLuint turbulenceGrid) {
+                                     GLuint turbulenceGrid, SurfaceReuse reuse) {
+  const bool pattern = marble && source == DiffuseSource::Pattern;
   const uint32_t s = marble ? static_cast<uint32_t>(source) : 2u;
-  const uint32_t pattern = marble && source == DiffuseSource::Pattern ? patternVariantKey(material, turbulenceGrid) : 0u;
-  const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | pattern << 4;
-  return programs_.get(key, [&] { return variantDefines(marble, envKind, source, material, turbulenceGrid); });
+  const uint32_t r = pattern ? static_cast<uint32_t>(reuse) : 0u;
+  const uint32_t patternKey = pattern ? patternVariantKey(material, turbulenceGrid) : 0u;
+  const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | r << 4 | patternKey << 6;
+  return programs_.get(key, [&] {
+    return variantDefines(marble, envKind, source, material, turbulenceGrid, pattern ? reuse : SurfaceReuse::None);
+  });
+}
+
+GLuint PostPass::surfaceLightTexture() {
+  if (!surfaceLight_) surfaceLight_ = gl::makeTexture2D(GL_RGBA32F, width_, height_, GL_NEAREST);
+  return surfaceLight_.id();
+}
+
+GLuint PostPass::surfaceReflectedTexture() {
+  if (!surfaceReflected_) surfaceReflected_ = gl::makeTexture2D(GL_RGBA32F, width_, height_, GL_NEAREST);
+  return surfaceReflected_.id();
 }
 
 void PostPass::compileAll() {
@@ -59,6 +75,9 @@ void PostPass::compileAll() {
         program(true, kind, DiffuseSource::Pattern, material, 0);
         if (turbulenceGridDimensions(material) > 0) program(true, kind, DiffuseSource::Pattern, material, 1);
       }
+    // A pattern-only frame's two (SurfaceReuse), for the default material.
+    program(true, kind, DiffuseSource::Pattern, Material{}, 0, SurfaceReuse::Store);
+    program(true, kind, DiffuseSource::Pattern, Material{}, 0, SurfaceReuse::Read);
     for (VeinModel v : {VeinModel::Network, VeinModel::Breccia}) {  // solid whatever the mapping
       Material material;
       material.vein_model = v;
@@ -73,10 +92,13 @@ void PostPass::resize(int width, int height) {
   width_ = width;
   height_ = height;
   diffuse_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_NEAREST);
+  surfaceLight_ = {};  // made again at the new size when next needed
+  surfaceReflected_ = {};
 }
 
 void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width,
-                   int height, const ScreenRect& rect, Output output, DiffuseSource source) {
+                   int height, const ScreenRect& rect, Output output, DiffuseSource source, SurfaceReuse reuse) {
+  if (scene.render.mode != RenderMode::Marble || source != DiffuseSource::Pattern) reuse = SurfaceReuse::None;
   const bool linearOutput = output == Output::Linear;
   const RenderSettings& settings = scene.render;
   const bool marble = settings.mode == RenderMode::Marble;
@@ -100,13 +122,22 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   }
   // The outputs this source writes besides the picture (post.frag.glsl): the diffuse part at 1,
   // the albedo at 2.
-  const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  const GLsizei outputs = !marble || source == DiffuseSource::Stored ? 1 : source == DiffuseSource::StoredAlbedo ? 2 : 3;
+  // (SurfaceReuse::Store: the upsampled light at 3, the reflected light at 4.)
+  const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
+                        GL_COLOR_ATTACHMENT4};
+  const GLsizei outputs = !marble || source == DiffuseSource::Stored ? 1
+                          : source == DiffuseSource::StoredAlbedo     ? 2
+                          : reuse == SurfaceReuse::Store              ? 5
+                                                                      : 3;
   glNamedFramebufferDrawBuffers(targetFbo, outputs, all);
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
   glBindTextures(shader::UNIT_POST_HDR, 7, textures);
+  if (reuse == SurfaceReuse::Read) {
+    glBindTextureUnit(shader::UNIT_POST_SURFACE_LIGHT, surfaceLightTexture());
+    glBindTextureUnit(shader::UNIT_POST_SURFACE_REFLECTED, surfaceReflectedTexture());
+  }
   const int envKind = environmentKind(settings, view.environment);
-  const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid);
+  const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid, reuse);
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_luma_alpha", output == Output::DisplayWithLuma ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);

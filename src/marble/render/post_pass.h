@@ -43,6 +43,17 @@ enum class DiffuseSource {
   Stored = 2,        // neither: the diffuse texture written by an earlier frame
 };
 
+// What a DiffuseSource::Pattern frame keeps of, or takes from, the frame before it besides the
+// albedo: SURFACE_REUSE in shaders/post.frag.glsl. In a frame that changed only the pattern
+// (`--motion pattern`, the panel's pattern sliders) the upsampled blurred light and the reflected
+// light are what the previous frame computed; the renderer stores them in the first such frame
+// and reads them back in the next ones (Renderer::drawFrame says when they are current).
+enum class SurfaceReuse {
+  None = 0,   // computed, not stored (the camera's and the light's frames: nothing to reuse)
+  Store = 1,  // computed and written to surfaceLightTexture() and surfaceReflectedTexture()
+  Read = 2,   // read from them
+};
+
 // FXAA's luma of a display colour (fxaa_luma in post.frag.glsl).
 float fxaaLuma(const glm::vec3& displayColor);
 
@@ -61,20 +72,27 @@ public:
   // and, for `marble` from DiffuseSource Pattern or StoredAlbedo, diffuseTexture() at
   // GL_COLOR_ATTACHMENT1 and (Pattern) the albedo texture at GL_COLOR_ATTACHMENT2, which the
   // pass writes too.
+  // SurfaceReuse::Store: the two surface textures at GL_COLOR_ATTACHMENT3 and 4 of targetFbo too
+  // (Read: not attached, they are sampled); only with DiffuseSource::Pattern.
   void run(const PostInputs& in, const Scene& scene, const PostView& view, GLuint targetFbo, int width, int height,
-           const ScreenRect& rect, Output output, DiffuseSource source);
+           const ScreenRect& rect, Output output, DiffuseSource source, SurfaceReuse reuse = SurfaceReuse::None);
   void resize(int width, int height);
   GLuint diffuseTexture() const { return diffuse_.id(); }  // `marble`: blurred light x albedo, RGBA16F
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  // SurfaceReuse: the upsampled blurred light and the reflected light, RGBA32F (made on first use:
+  // 32 bytes a pixel that only pattern-changing frames need).
+  GLuint surfaceLightTexture();
+  GLuint surfaceReflectedTexture();
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * (surfaceLight_ ? 40 : 8); }
   PassTimer& timer() { return timer_; }
   void compileAll();
 
 private:
   const gl::Program& program(bool marble, int envKind, DiffuseSource source, const Material& material,
-                            GLuint turbulenceGrid);
+                            GLuint turbulenceGrid, SurfaceReuse reuse = SurfaceReuse::None);
   gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
   gl::Texture diffuse_;
+  gl::Texture surfaceLight_, surfaceReflected_;
   int width_ = 0, height_ = 0;
   PassTimer timer_;
 };

@@ -252,6 +252,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   const CameraMatrices camera = cameraMatrices(scene.camera, static_cast<float>(width) / static_cast<float>(height));
   times_.ran = {};
   times_.diffuseSource = -1;
+  times_.surfaceReuse = -1;
   // One counter for every renderer in the process: a token is never handed out twice, so one
   // renderer's token never matches another's frame either. 64 bits do not wrap.
   static std::atomic<uint64_t> lastSerial{0};
@@ -359,11 +360,28 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                                : !storedDiffuse_ || !sameReads(*storedDiffuse_) ? DiffuseSource::StoredAlbedo
                                                                                : DiffuseSource::Stored;
   const GLuint turbulenceGrid = marble && source == DiffuseSource::Pattern ? turbulence_.update(scene.material) : 0;
+  // A frame that changed only the pattern: the reflected and the upsampled blurred light are the
+  // last frame's. The first such frame stores them, the next ones read them (SurfaceReuse); a
+  // frame that changed anything else (the camera, the light) stores nothing, so costs no more.
+  SurfaceReuse reuse = SurfaceReuse::None;
+  const SurfaceKey surface{now, cache_.generations(), cache_.stateRevision()};
+  if (marble && source == DiffuseSource::Pattern) {
+    if (storedSurface_ && storedSurface_->same(surface))
+      reuse = SurfaceReuse::Read;
+    else if (lastSurface_ && lastSurface_->same(surface))
+      reuse = SurfaceReuse::Store;
+  }
+  const bool store = reuse == SurfaceReuse::Store;
+  display.attach(GL_COLOR_ATTACHMENT3, store ? passes_->post.surfaceLightTexture() : 0);
+  display.attach(GL_COLOR_ATTACHMENT4, store ? passes_->post.surfaceReflectedTexture() : 0);
   passes_->post.run(postInputs(), scene, {camera, light, lightTexelWorld, environment(), model, turbulenceGrid},
                     display.fbo(), width, height, rect,
-                    fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source);
+                    fxaa ? PostPass::Output::DisplayWithLuma : PostPass::Output::Display, source, reuse);
   times_.ran[Pass::Post] = true;
   if (marble) {
+    lastSurface_ = surface;
+    if (store) storedSurface_ = surface;
+    if (source == DiffuseSource::Pattern) times_.surfaceReuse = static_cast<int>(reuse);
     times_.diffuseSource = static_cast<int>(source);
     if (source == DiffuseSource::Pattern) cache_.made(Pass::Albedo, now);  // the post pass wrote it
     if (source != DiffuseSource::Stored) storedDiffuse_ = cache_.generations();
@@ -407,6 +425,13 @@ const std::vector<ScreenRect>& Renderer::aaSpans(const glm::mat4& mvp, int width
     aaSpansWholeFrame_ = wholeFrame;
   }
   return aaSpans_;
+}
+
+bool Renderer::SurfaceKey::same(const SurfaceKey& o) const {
+  if (stateRevision != o.stateRevision || !sameButPattern(inputs, o.inputs)) return false;
+  for (const PassDecl& q : passList())
+    if (q.pass != Pass::Albedo && generations[q.pass] != o.generations[q.pass]) return false;
+  return true;
 }
 
 OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target, int width, int height,

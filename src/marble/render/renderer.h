@@ -188,6 +188,17 @@ private:
   // What the post pass's stored diffuse part (`marble`) was made from: the generations of
   // kStoredDiffuseReads' passes when it was written.
   std::optional<PerPass<uint64_t>> storedDiffuse_;
+  // What a `marble` frame's reflected and upsampled blurred light are made from: the frame's
+  // values (compared by sameButPattern), the passes' outputs (by generation, the albedo's aside)
+  // and the renderer's state (by revision).
+  struct SurfaceKey {
+    FrameInputs inputs;
+    PerPass<uint64_t> generations;
+    uint64_t stateRevision = 0;
+    bool same(const SurfaceKey& o) const;
+  };
+  std::optional<SurfaceKey> lastSurface_;    // the last `marble` frame's
+  std::optional<SurfaceKey> storedSurface_;  // the post pass's stored surface textures' (SurfaceReuse)
   // What the last frame drew: a caller holding its token, with the same inputs, draws nothing.
   struct OutputKey {
     Scene scene;

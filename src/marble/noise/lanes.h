@@ -40,26 +40,6 @@ typedef int32_t I8 __attribute__((vector_size(32)));
 // Set when a Mask with lanes that disagree was used as a bool on this thread (see above).
 inline thread_local bool laneDivergence = false;
 
-// Where this file is compiled for AVX-512 (F, VL, BW, DQ on the command line: the macros are not set
-// by a target attribute), a Mask is a mask register (k): comparisons write k, selects are
-// vblendmps/vpblendmd with any of the 32 vector registers (VEX vblendvps reaches only 0-15). The
-// same lanes are chosen either way.
-#if defined(__AVX512VL__) && defined(__AVX512DQ__) && defined(__AVX512BW__) && !defined(MARBLE_LANES_NO_KMASK)
-#define MARBLE_LANES_KMASK 1
-struct Mask {
-  __mmask8 k;  // bit l: lane l true
-  // NOLINTNEXTLINE(google-explicit-constructor): as below
-  __attribute__((always_inline)) operator bool() const {
-    if (k != 0 && k != 0xff) laneDivergence = true;
-    return k != 0;
-  }
-};
-MARBLE_LANE Mask operator&&(Mask a, Mask b) { return {static_cast<__mmask8>(a.k & b.k)}; }
-MARBLE_LANE Mask operator||(Mask a, Mask b) { return {static_cast<__mmask8>(a.k | b.k)}; }
-MARBLE_LANE Mask operator!(Mask a) { return {static_cast<__mmask8>(~a.k)}; }
-// Whether every lane is true (no divergence is recorded: the caller handles both cases).
-MARBLE_LANE bool allLanes(Mask m) { return m.k == 0xff; }
-#else
 struct Mask {
   I8 v;  // -1 (true) or 0 per lane
   // NOLINTNEXTLINE(google-explicit-constructor): GLSL's `if (a < b)` needs the conversion
@@ -76,17 +56,6 @@ struct Mask {
 MARBLE_LANE Mask operator&&(Mask a, Mask b) { return {a.v & b.v}; }
 MARBLE_LANE Mask operator||(Mask a, Mask b) { return {a.v | b.v}; }
 MARBLE_LANE Mask operator!(Mask a) { return {~a.v}; }
-MARBLE_LANE bool allLanes(Mask m) {
-#if defined(__x86_64__) || defined(__i386__)
-  return _mm256_movemask_ps(reinterpret_cast<__m256>(m.v)) == 0xff;
-#else
-  int32_t all = -1;
-  for (int i = 0; i < kLanes; ++i) all &= m.v[i];
-  return all != 0;
-#endif
-}
-
-#endif
 
 struct LaneU;
 
@@ -113,12 +82,7 @@ struct LaneF {
   }
   __attribute__((always_inline)) constexpr explicit LaneF(F8 x) : v(x) {}
   explicit LaneF(LaneU u);
-#ifdef MARBLE_LANES_KMASK
-  __attribute__((always_inline)) explicit LaneF(Mask m)  // float(bool): 1 or +0
-      : v(reinterpret_cast<F8>(_mm256_maskz_mov_ps(m.k, _mm256_set1_ps(1.0f)))) {}
-#else
   __attribute__((always_inline)) explicit LaneF(Mask m) : v(__builtin_convertvector(m.v & 1, F8)) {}  // float(bool): 1 or 0
-#endif
   __attribute__((always_inline)) LaneF& operator+=(LaneF b) { v += b.v; return *this; }
   __attribute__((always_inline)) LaneF& operator-=(LaneF b) { v -= b.v; return *this; }
   __attribute__((always_inline)) LaneF& operator*=(LaneF b) { v *= b.v; return *this; }
@@ -156,26 +120,12 @@ MARBLE_LANE LaneF operator-(LaneF a, LaneF b) { return LaneF(a.v - b.v); }
 MARBLE_LANE LaneF operator*(LaneF a, LaneF b) { return LaneF(a.v * b.v); }
 MARBLE_LANE LaneF operator/(LaneF a, LaneF b) { return LaneF(a.v / b.v); }
 MARBLE_LANE LaneF operator-(LaneF a) { return LaneF(-a.v); }
-#ifdef MARBLE_LANES_KMASK
-#define MARBLE_FCMP(op, pred) \
-  MARBLE_LANE Mask operator op(LaneF a, LaneF b) { \
-    return {_mm256_cmp_ps_mask(reinterpret_cast<__m256>(a.v), reinterpret_cast<__m256>(b.v), pred)}; }
-MARBLE_FCMP(<, _CMP_LT_OS)
-MARBLE_FCMP(<=, _CMP_LE_OS)
-MARBLE_FCMP(>, _CMP_GT_OS)
-MARBLE_FCMP(>=, _CMP_GE_OS)
-MARBLE_FCMP(==, _CMP_EQ_OQ)
-MARBLE_FCMP(!=, _CMP_NEQ_UQ)
-#undef MARBLE_FCMP
-#else
 MARBLE_LANE Mask operator<(LaneF a, LaneF b) { return {a.v < b.v}; }
 MARBLE_LANE Mask operator<=(LaneF a, LaneF b) { return {a.v <= b.v}; }
 MARBLE_LANE Mask operator>(LaneF a, LaneF b) { return {a.v > b.v}; }
 MARBLE_LANE Mask operator>=(LaneF a, LaneF b) { return {a.v >= b.v}; }
 MARBLE_LANE Mask operator==(LaneF a, LaneF b) { return {a.v == b.v}; }
 MARBLE_LANE Mask operator!=(LaneF a, LaneF b) { return {a.v != b.v}; }
-
-#endif
 
 MARBLE_LANE LaneU operator+(LaneU a, LaneU b) { return LaneU(a.v + b.v); }
 MARBLE_LANE LaneU operator-(LaneU a, LaneU b) { return LaneU(a.v - b.v); }
@@ -185,34 +135,18 @@ MARBLE_LANE LaneU operator&(LaneU a, LaneU b) { return LaneU(a.v & b.v); }
 MARBLE_LANE LaneU operator|(LaneU a, LaneU b) { return LaneU(a.v | b.v); }
 MARBLE_LANE LaneU operator>>(LaneU a, uint32_t s) { return LaneU(a.v >> s); }
 MARBLE_LANE LaneU operator<<(LaneU a, uint32_t s) { return LaneU(a.v << s); }
-#ifdef MARBLE_LANES_KMASK
-MARBLE_LANE Mask operator<(LaneU a, LaneU b) { return {_mm256_cmplt_epu32_mask(reinterpret_cast<__m256i>(a.v), reinterpret_cast<__m256i>(b.v))}; }
-MARBLE_LANE Mask operator>=(LaneU a, LaneU b) { return {_mm256_cmpge_epu32_mask(reinterpret_cast<__m256i>(a.v), reinterpret_cast<__m256i>(b.v))}; }
-MARBLE_LANE Mask operator==(LaneU a, LaneU b) { return {_mm256_cmpeq_epu32_mask(reinterpret_cast<__m256i>(a.v), reinterpret_cast<__m256i>(b.v))}; }
-#else
 MARBLE_LANE Mask operator<(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v < b.v)}; }
 MARBLE_LANE Mask operator>=(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v >= b.v)}; }
 MARBLE_LANE Mask operator==(LaneU a, LaneU b) { return {reinterpret_cast<I8>(a.v == b.v)}; }
-#endif
 
 // Per-lane choice: m ? a : b. The uint choice is made on signed lanes with the mask as it is:
 // with the mask converted to unsigned lanes GCC 12 no longer sees that it is a comparison's
 // (all bits 0 or 1 per lane) and inverts it by a compare with zero before each byte blend
 // (336 of them in shadeBatch); the same lanes are chosen either way.
-#ifdef MARBLE_LANES_KMASK
-MARBLE_LANE LaneF select(Mask m, LaneF a, LaneF b) {
-  return LaneF(reinterpret_cast<F8>(_mm256_mask_blend_ps(m.k, reinterpret_cast<__m256>(b.v), reinterpret_cast<__m256>(a.v))));
-}
-MARBLE_LANE LaneU select(Mask m, LaneU a, LaneU b) {
-  return LaneU(reinterpret_cast<U8>(
-      _mm256_mask_blend_epi32(m.k, reinterpret_cast<__m256i>(b.v), reinterpret_cast<__m256i>(a.v))));
-}
-#else
 MARBLE_LANE LaneF select(Mask m, LaneF a, LaneF b) { return LaneF(m.v ? a.v : b.v); }
 MARBLE_LANE LaneU select(Mask m, LaneU a, LaneU b) {
   return LaneU(reinterpret_cast<U8>(m.v ? reinterpret_cast<I8>(a.v) : reinterpret_cast<I8>(b.v)));
 }
-#endif
 
 // The scalar build's definitions, lane by lane (marble_pattern.cpp): min/max as `a < b ? a : b`.
 MARBLE_LANE LaneF min(LaneF a, LaneF b) { return LaneF(a.v < b.v ? a.v : b.v); }

@@ -60,15 +60,9 @@ Scene plateScene(bool fromBelow) {
 // underside.
 glm::vec3 gainFromTheWall(bool fromBelow, float d) {
   const Scene s = plateScene(fromBelow);
-  Renderer withWall, plateAlone;
-  withWall.setMesh(plateWithWall(true));
-  plateAlone.setMesh(plateWithWall(false));
-  renderImage(withWall, s);
-  const ImageRGBF a = withWall.readHdr();
-  renderImage(plateAlone, s);
-  const ImageRGBF b = plateAlone.readHdr();
+  const HdrPair img = renderHdrPair(s, plateWithWall(true), plateWithWall(false));
   const glm::vec3 p{kWall + d, fromBelow ? kPlateTop - kPlate : kPlateTop, 0.0f};
-  return linearRgbAround(a, s, p) - linearRgbAround(b, s, p);
+  return linearRgbAround(img.first, s, p) - linearRgbAround(img.second, s, p);
 }
 
 }  // namespace

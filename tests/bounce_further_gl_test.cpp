@@ -102,13 +102,9 @@ TEST(BounceFurther, TheFoldsPlateGetsItsLightBackFromTheWall) {
   HeadlessContext& context = glContext();
   (void)context;
   const Scene s = foldScene();
-  Renderer withWall, plateAlone;
-  withWall.setMesh(fold(true));
-  plateAlone.setMesh(fold(false));
-  renderImage(withWall, s);
-  const ImageRGBF a = withWall.readHdr();
-  renderImage(plateAlone, s);
-  const ImageRGBF b = plateAlone.readHdr();
+  const HdrPair img = renderHdrPair(s, fold(true), fold(false));
+  const ImageRGBF& a = img.first;
+  const ImageRGBF& b = img.second;
   for (float d : {0.15f, 0.3f}) {
     const glm::vec3 got = linearRgbAround(a, s, probe(d)) - linearRgbAround(b, s, probe(d));
     const double expected = std::pow(kAlbedo, 3.0) * (41.0 / 42.0) * (41.0 / 42.0) * twoBounceIntegral(d);

@@ -146,13 +146,9 @@ struct Bounce : ::testing::Test {
   // The probe's radiance in scene s with the plate beside it, less with the plate on the wall's
   // far side: the light the plate sends to the probe.
   glm::vec3 fromThePlate(const Scene& s, float h) {
-    Renderer facing, away;
-    facing.setMesh(corner(true));
-    away.setMesh(corner(false));
-    renderImage(facing, s);
-    const glm::vec3 with = linearRgbAround(facing.readHdr(), s, probe(h));
-    renderImage(away, s);
-    const glm::vec3 without = linearRgbAround(away.readHdr(), s, probe(h));
+    const HdrPair img = renderHdrPair(s, corner(true), corner(false));
+    const glm::vec3 with = linearRgbAround(img.first, s, probe(h));
+    const glm::vec3 without = linearRgbAround(img.second, s, probe(h));
     std::cout << "[          ] plate facing " << with.g << ", away " << without.g << "\n";
     return with - without;
   }
@@ -222,13 +218,9 @@ TEST_F(Bounce, NoneWhereThePlateIsBehindTheFace) {
   Mesh wallOnly;
   addBox(wallOnly, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
   computeVertexNormals(wallOnly, 60.0f);
-  Renderer alone, away;
-  alone.setMesh(wallOnly);
-  away.setMesh(corner(false));
-  renderImage(alone, s);
-  const glm::vec3 a = linearRgbAround(alone.readHdr(), s, probe(kHeight));
-  renderImage(away, s);
-  const glm::vec3 b = linearRgbAround(away.readHdr(), s, probe(kHeight));
+  const HdrPair img = renderHdrPair(s, wallOnly, corner(false));
+  const glm::vec3 a = linearRgbAround(img.first, s, probe(kHeight));
+  const glm::vec3 b = linearRgbAround(img.second, s, probe(kHeight));
   const double cornerBounce = 0.8 * 0.8 * (41.0 / 42.0) * viewFactorOfPlate(kHeight);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], a[c], 0.01 * cornerBounce) << "channel " << c;
 }

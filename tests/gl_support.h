@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <utility>
 
 #include "marble/gl/debug_output.h"
 #include "marble/gl/headless_context.h"
@@ -38,6 +39,23 @@ inline ImageRGBA8 renderImage(Renderer& renderer, const Scene& scene) {
   renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   return target.read();
+}
+
+// The HDR pictures of one scene drawn with two meshes (a fresh renderer each): a test that isolates
+// the light one part sends subtracts the picture without that part from the picture with it.
+struct HdrPair {
+  ImageRGBF first, second;
+};
+inline HdrPair renderHdrPair(const Scene& scene, Mesh first, Mesh second) {
+  HdrPair pair;
+  Renderer a, b;
+  a.setMesh(std::move(first));
+  renderImage(a, scene);
+  pair.first = a.readHdr();
+  b.setMesh(std::move(second));
+  renderImage(b, scene);
+  pair.second = b.readHdr();
+  return pair;
 }
 
 inline glm::vec3 pixel(const ImageRGBA8& img, int x, int y) {

@@ -57,7 +57,10 @@ void main() {
   vec2 c = (vec2(h) + 0.5) / input_size;
   float za = texture(u_entering, c + one).a, zb = texture(u_entering, c - one).a;
   float ga = za > 0.0 ? abs(za - depth) : 1e30, gb = zb > 0.0 ? abs(zb - depth) : 1e30;
-  float slope = min(min(ga, gb), 1e3) * u_mm_per_unit * texels_per_mm;  // mm of depth per mm of screen
+  // Where both sides are on the stone and agree within 2x, their mean (the central difference:
+  // smooth where the surface curves); else the smaller side.
+  float g = max(ga, gb) < 2.0 * min(ga, gb) ? 0.5 * (ga + gb) : min(ga, gb);
+  float slope = min(g, 1e3) * u_mm_per_unit * texels_per_mm;  // mm of depth per mm of screen
   texels_per_mm /= sqrt(1.0 + slope * slope);
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {

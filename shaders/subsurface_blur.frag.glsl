@@ -44,6 +44,24 @@ void main() {
   // the nearest texel, narrow profiles lost their shape (SSIM against Cycles on dragon-front
   // 0.765 against 0.757; docs/quality.md).
   float texels_per_mm = u_pixels_per_mm_at_unit_depth / (float(u_scale) * max(depth, 1e-6));
+  // The profile is a function of the distance along the surface; a tap's screen offset x lies
+  // x sqrt(1 + s^2) away on a surface whose view depth rises by s mm per mm of screen along this
+  // pass's axis. So the taps are drawn in by that factor and each samples the profile at its own
+  // distance (the weights stay: the measure's stretch is the same for every tap and cancels in
+  // the normalisation). Without it the light entering a part was spread sqrt(1 + s^2) times too
+  // far over the slanted parts next to it: rims and small creases brighter than Cycles' in the
+  // direct light (docs/quality.md, "Twelfth session", item 3, and "Sixteenth session"). The
+  // slope is the smaller one-sided difference of the view depth, so that a depth step (another
+  // part behind) is not taken for one; capped where one side is off the stone.
+  vec2 one = u_direction / input_size;
+  vec2 c = (vec2(h) + 0.5) / input_size;
+  float za = texture(u_entering, c + one).a, zb = texture(u_entering, c - one).a;
+  float ga = za > 0.0 ? abs(za - depth) : 1e30, gb = zb > 0.0 ? abs(zb - depth) : 1e30;
+  // Where both sides are on the stone and agree within 2x, their mean (the central difference:
+  // smooth where the surface curves); else the smaller side.
+  float g = max(ga, gb) < 2.0 * min(ga, gb) ? 0.5 * (ga + gb) : min(ga, gb);
+  float slope = min(g, 1e3) * u_mm_per_unit * texels_per_mm;  // mm of depth per mm of screen
+  texels_per_mm /= sqrt(1.0 + slope * slope);
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {
     vec2 t = vec2(h) + 0.5 + u_direction * (sign(float(i)) * u_offsets_mm[abs(i)] * texels_per_mm);

@@ -1,0 +1,99 @@
+// The subsurface blur spreads the light by the diffusion profile's distance *along the surface*
+// (shaders/subsurface_blur.frag.glsl: the taps drawn in by sqrt(1 + s^2) where the view depth
+// rises s mm per mm of screen). A plate lit from -x at 30 degrees of elevation behind a wall: the wall's shadow
+// ends on the plate at a straight edge along z, and the blur carries the lit side's light across
+// it over a width set by the stone's profile (the white stone at 150 mm per unit: a few
+// pixels). Seen from straight above and from 70 degrees off the plate's normal (the camera turned
+// about the edge's line, so the edge's profile runs along the slanted screen axis), the width
+// measured along the plate must be the same. Without the correction the slanted view spreads the
+// profile up to 1 / cos 70 = 2.9 times too far along the plate. Measured, 10-90 % widths: 0.026
+// from above, 0.028 at 70 degrees (1.08); with main's blur (the negative control: the shader's
+// correction removed, the tests rebuilt, since they embed the shaders) 0.026 and 0.044 (1.69),
+// failing. The rest of the width is the shadow map's filter and the pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "box_mesh.h"
+#include "gl_support.h"
+#include "image_probe.h"
+#include "principled_stone.h"
+#include "marble/mesh/vertex_normals.h"
+
+using namespace marble;
+using namespace marble::test;
+
+namespace {
+
+constexpr float kElevationDeg = 25.0f;
+constexpr float kWallX = -0.7f, kWall = 0.4f;
+
+// The plate's top at y = 0 and the wall on it, spanning [-1, 1] in x and z and centred in y, so the
+// renderer's normalization leaves them where they are (as GrazingShadow's plate).
+Mesh plateAndWall() {
+  Mesh m;
+  addBox(m, {-1.0f, -kWall, -1.0f}, {1.0f, 0.0f, 1.0f});
+  addBox(m, {kWallX - 0.1f, 0.0f, -1.0f}, {kWallX, kWall, 1.0f});
+  computeVertexNormals(m, 60.0f);  // flat faces
+  return m;
+}
+
+float shadowEnd() { return kWallX + kWall / std::tan(glm::radians(kElevationDeg)); }
+
+// The camera `tiltDeg` off the plate's normal toward +x, 3 units from the shadow's end.
+Scene plateScene(float tiltDeg, float fovDeg) {
+  Scene s;
+  s.mesh = "test:plate-and-wall";
+  s.mm_per_unit = 150.0f;
+  s.render.width = s.render.height = 256;
+  s.render.mode = RenderMode::Marble;
+  s.render.environment = Environment::None;
+  const float t = glm::radians(tiltDeg);
+  s.camera.target = {shadowEnd(), 0.0f, 0.0f};
+  s.camera.position = s.camera.target + 3.0f * glm::vec3(std::sin(t), std::cos(t), 0.0f);
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.fov_y_deg = fovDeg;
+  s.light.type = LightType::Directional;
+  const float e = glm::radians(kElevationDeg);
+  s.light.position = {-std::cos(e), std::sin(e), 0.0f};  // toward the light
+  s.light.intensity = 1.0f;
+  s.material = principledStone();
+  s.material.roughness = 1.0f;  // no highlight in the way
+  return s;
+}
+
+// The distance along the plate (x) over which the light rises from 10 % to 90 % of the way from
+// the shadow to the lit plate, scanned in 0.002-unit steps (the shadow 0.86 units long: the dark
+// reference over half a unit from the wall, whose lit top must stay out of the picture of the edge).
+float edgeWidth(float tiltDeg, float fovDeg) {
+  const Scene s = plateScene(tiltDeg, fovDeg);
+  Renderer r;
+  r.setMesh(plateAndWall());
+  renderImage(r, s);
+  const ImageRGBF img = r.readHdr();
+  auto luma = [&](float x) { return glm::dot(linearRgbAround(img, s, {x, 0.0f, 0.0f}), glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
+  const float lit = luma(shadowEnd() + 0.3f), dark = luma(shadowEnd() - 0.3f);
+  EXPECT_GT(lit, 4.0f * dark) << "lit " << lit << ", shadowed " << dark;
+  float a = NAN, b = NAN;
+  for (float x = shadowEnd() - 0.3f; x <= shadowEnd() + 0.3f; x += 0.002f) {
+    const float f = (luma(x) - dark) / (lit - dark);
+    if (std::isnan(a) && f >= 0.1f) a = x;
+    if (std::isnan(b) && f >= 0.9f) b = x;
+  }
+  return b - a;
+}
+
+}  // namespace
+
+TEST(BlurAlongSurface, TheEdgesSpreadIsTheSameSeenAtASlant) {
+  HeadlessContext& context = glContext();
+  (void)context;
+  const float straight = edgeWidth(0.0f, 20.0f);
+  // Zoomed so that a pixel covers about as much of the plate along x as from above.
+  const float slanted = edgeWidth(70.0f, 8.0f);
+  std::cout << "[          ] 10-90 % width along the plate: from above " << straight << ", at 70 degrees " << slanted
+            << " (ratio " << slanted / straight << ")\n";
+  ASSERT_GT(straight, 0.01f);  // the profile spans several pixels (0.004 units per pixel from above)
+  EXPECT_NEAR(slanted / straight, 1.0f, 0.25f);
+}

@@ -51,7 +51,7 @@ void main() {
   // the normalisation). Without it the light entering a part was spread sqrt(1 + s^2) times too
   // far over the slanted parts next to it: rims and small creases brighter than Cycles' in the
   // direct light (docs/quality.md, "Twelfth session", item 3, and "Sixteenth session"). The
-  // slope is the smaller one-sided difference of the view depth, so that a depth step (another
+  // slope comes from the view depth one texel either side (below), so that a depth step (another
   // part behind) is not taken for one; capped where one side is off the stone.
   vec2 one = u_direction / input_size;
   vec2 c = (vec2(h) + 0.5) / input_size;

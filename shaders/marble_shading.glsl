@@ -139,7 +139,7 @@ float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
 // shaped by the GGX lobe -- where the four taps were a third of the pass's time on llvmpipe.
 float bilinear_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
   vec3 uvz;
-  if (!shadow_lookup_along_light(P, N, light_view_proj, texel_world, uvz)) return 1.0;
+  if (!shadow_lookup(P, N, light_view_proj, texel_world, uvz)) return 1.0;
   return texture(u_light_shadow, uvz);
 }
 

@@ -126,20 +126,34 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   return marble_diffuse(px, depth, N) + reflected;
 }
 
+// The squared change of the normal from pixel p to its neighbour q, or -1 where q is off the
+// object or outside the frame (specular_footprint_a2's inputs).
+float normal_step_d2(ivec2 q, vec3 N) {
+  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return -1.0;
+  if (texelFetch(u_depth, q, 0).r >= 1.0) return -1.0;
+  vec3 d = decode_normal(texelFetch(u_normal, q, 0).xy) - N;
+  return dot(d, d);
+}
+
+// The highlight's footprint widening at surface pixel p (normal N), from its four neighbours: both
+// sides of each axis, so a depth edge on one side is left out (footprint_axis_d2), which the 2x2
+// quad's screen derivatives could not do (they see one side only).
+float footprint_a2_at(ivec2 p, vec3 N) {
+  float dx2 = footprint_axis_d2(normal_step_d2(p - ivec2(1, 0), N), normal_step_d2(p + ivec2(1, 0), N));
+  float dy2 = footprint_axis_d2(normal_step_d2(p - ivec2(0, 1), N), normal_step_d2(p + ivec2(0, 1), N));
+  return specular_footprint_a2(dx2, dy2);
+}
+
 void main() {
   float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) {
-    // The normal's screen derivatives are taken here, where every pixel of a 2x2 quad runs (no
-    // derivative is defined inside a branch some of them skip); background pixels hold 0 and
-    // their differences are left out (specular_footprint_a2).
     vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
-    float on = surface ? 1.0 : 0.0;
 #if SURFACE_REUSE == 2
     float a2 = 0.0;  // in the stored reflected light
 #else
-    float a2 = specular_footprint_a2(dFdx(N), dFdy(N), dFdx(on), dFdy(on));
+    float a2 = surface ? footprint_a2_at(ivec2(gl_FragCoord.xy), N) : 0.0;
 #endif
     c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
   } else {

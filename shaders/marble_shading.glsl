@@ -38,17 +38,31 @@ float fresnel_dielectric(float c, float eta) {
 // Geometric Specular Antialiasing"): a pixel's highlight is the GGX lobe averaged over the normals
 // its footprint covers; their spread widens the lobe, alpha^2 += 2 sigma^2 (GGX's alpha^2 as twice
 // the slopes' variance, Beckmann's relation). sigma^2: the normal's variance over a box one pixel
-// wide, |dN/dx|^2 / 12 + |dN/dy|^2 / 12 (a box pixel: what --supersample's block average and
-// Cycles' --box reference integrate). Without it a highlight narrower than a pixel is point-sampled:
-// on the side-lit reference scenes (a highlight's core ~ a pixel of the 800^2 frame) marble's
-// highlights landed on different pixels than Cycles' (docs/quality.md, "Tenth session").
-// A neighbour off the object (on = 0) is left out; a jump to another surface (a depth edge) is
-// capped at SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's kappa, 0.18).
+// wide, d_x^2 / 12 + d_y^2 / 12 (a box pixel: what --supersample's block average and Cycles' --box
+// reference integrate), d the normal's change to the next pixel along each axis. Without it a
+// highlight narrower than a pixel is point-sampled: on the side-lit reference scenes (a highlight's
+// core ~ a pixel of the 800^2 frame) marble's highlights landed on different pixels than Cycles'
+// (docs/quality.md, "Tenth session"). d^2 per axis: footprint_axis_d2. A jump to another surface
+// is capped at SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's kappa, 0.18).
 const float SPECULAR_FOOTPRINT_MAX_A2 = 0.18;
-float specular_footprint_a2(vec3 dndx, vec3 dndy, float dx_on, float dy_on) {
-  float vx = dx_on == 0.0 ? dot(dndx, dndx) : 0.0;
-  float vy = dy_on == 0.0 ? dot(dndy, dndy) : 0.0;
-  return min(2.0 * (vx + vy) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
+float specular_footprint_a2(float dx2, float dy2) {
+  return min(2.0 * (dx2 + dy2) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
+}
+
+// The normal's squared change per pixel along one axis, from the squared differences to the two
+// neighbours on it (negative: that neighbour is off the object, left out): the smaller of the two
+// (the minmod rule of slope limiters, van Leer 1979). On a smooth surface the two sides agree to
+// the surface's change of curvature; where one neighbour lies on another surface (a depth edge
+// inside the object: a part in front, the far side of a fold) its difference is no spread of this
+// surface's normal, and taking it (the 2x2 quad's one difference, used before session 16) capped
+// the lobe at kappa on the pixel next to the edge, which erased silhouette glints Cycles keeps
+// (dragon-back's brightest pixel 0.28 of Cycles' converged value; docs/quality.md, "Sixteenth
+// session"). Error: where the normal turns faster on one side (a crease) the spread is that of
+// the flatter side; the crease's own pixels are then closer to point-sampled.
+float footprint_axis_d2(float before, float after) {
+  if (before < 0.0) return max(after, 0.0);
+  if (after < 0.0) return before;
+  return min(before, after);
 }
 
 // The stone's GGX lobe (alpha^2 = a_stone2) averaged over a pixel's normals, which widen it to

@@ -126,20 +126,45 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   return marble_diffuse(px, depth, N) + reflected;
 }
 
+// The squared change of the normal from pixel p to its neighbour q, or -1 where q is off the
+// object or outside the frame (specular_footprint_a2's inputs).
+float normal_step_d2(ivec2 q, vec3 N) {
+  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return -1.0;
+  if (texelFetch(u_depth, q, 0).r >= 1.0) return -1.0;
+  vec3 d = decode_normal(texelFetch(u_normal, q, 0).xy) - N;
+  return dot(d, d);
+}
+
+// The highlight's footprint widening at surface pixel p (normal N), from both neighbours on each
+// axis, so a depth edge on one side is left out (footprint_axis_d2). The neighbour inside the 2x2
+// quad comes from the fine screen derivatives (d*_quad: N's and coverage's), the one outside it
+// from two texel reads: half the reads of fetching all four (post pass +21 M instructions a
+// frame on the dragon at 800^2 with four; docs/performance.md, "Sixteenth session").
+float quad_step_d2(vec3 dn, float d_on) { return d_on == 0.0 ? dot(dn, dn) : -1.0; }
+float footprint_a2_at(ivec2 p, vec3 N, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy) {
+  // The quad pairs columns 2i | 2i+1 (and rows): an even pixel's partner is at +1, its outer
+  // neighbour at -1; an odd one's the other way round.
+  ivec2 outer = ivec2((p.x & 1) == 0 ? p.x - 1 : p.x + 1, (p.y & 1) == 0 ? p.y - 1 : p.y + 1);
+  float dx2 = footprint_axis_d2(quad_step_d2(dndx_quad, don_dx), normal_step_d2(ivec2(outer.x, p.y), N));
+  float dy2 = footprint_axis_d2(quad_step_d2(dndy_quad, don_dy), normal_step_d2(ivec2(p.x, outer.y), N));
+  return specular_footprint_a2(dx2, dy2);
+}
+
 void main() {
   float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) {
-    // The normal's screen derivatives are taken here, where every pixel of a 2x2 quad runs (no
-    // derivative is defined inside a branch some of them skip); background pixels hold 0 and
-    // their differences are left out (specular_footprint_a2).
+    // The fine derivatives are taken here, where every pixel of a 2x2 quad runs (none is defined
+    // inside a branch some of them skip); background pixels hold N = 0 and on = 0.
     vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
     float on = surface ? 1.0 : 0.0;
 #if SURFACE_REUSE == 2
     float a2 = 0.0;  // in the stored reflected light
 #else
-    float a2 = specular_footprint_a2(dFdx(N), dFdy(N), dFdx(on), dFdy(on));
+    vec3 dndx = dFdxFine(N), dndy = dFdyFine(N);
+    float dondx = dFdxFine(on), dondy = dFdyFine(on);
+    float a2 = surface ? footprint_a2_at(ivec2(gl_FragCoord.xy), N, dndx, dndy, dondx, dondy) : 0.0;
 #endif
     c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
   } else {

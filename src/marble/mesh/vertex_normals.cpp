@@ -67,13 +67,22 @@ struct PointsOutput {
   std::vector<CopyUse> uses;
 };
 
+// What the passes after the first need of a usable triangle, in one record so that a corner costs
+// one cache miss, not four (its point, its neighbours' points, its vertex, normal and angle).
+struct Triangle {
+  uint32_t point[3];  // point[0] == kNone: the triangle takes no part (degenerate, out of range)
+  uint32_t vertex[3];
+  glm::vec3 normal;
+  float angle[3];
+};
+
 struct Corners {
-  const Mesh& mesh;
-  const std::vector<uint32_t>& cornerPoint;  // kNone for the corners of unusable triangles
-  const std::vector<glm::vec3>& faceNormal;
-  const std::vector<float>& cornerAngle;
+  const std::vector<Triangle>& triangles;
   float cosCrease;
   bool noCrease;
+  uint32_t point(uint32_t c) const { return triangles[c / 3].point[c % 3]; }
+  uint32_t vertex(uint32_t c) const { return triangles[c / 3].vertex[c % 3]; }
+  const glm::vec3& normal(uint32_t c) const { return triangles[c / 3].normal; }
 };
 
 // Scratch arrays of one thread, reused from point to point.
@@ -98,7 +107,6 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
 // (vertex, fan) pair is a copy, made at its first corner.
 void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
                  PointsOutput& out) {
-  const std::vector<uint32_t>& indices = in.mesh.indices;
   s.parent.resize(k);
   for (uint32_t i = 0; i < k; ++i) s.parent[i] = i;
   if (in.noCrease) {
@@ -110,7 +118,7 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
     // join. (Every triangle that uses the edge has a corner at p and uses it once: its points are
     // distinct.)
     auto join = [&](uint32_t i, uint32_t j) {
-      if (glm::dot(in.faceNormal[list[i] / 3], in.faceNormal[list[j] / 3]) >= in.cosCrease) {
+      if (glm::dot(in.normal(list[i]), in.normal(list[j])) >= in.cosCrease) {
         const uint32_t ri = findRoot(s.parent, i), rj = findRoot(s.parent, j);
         if (ri != rj) s.parent[std::max(ri, rj)] = std::min(ri, rj);
       }
@@ -120,8 +128,10 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
       // compared with every corner's two edges, without branches; a sort would cost more.
       uint32_t to[kSmallPoint], from[kSmallPoint];
       for (uint32_t i = 0; i < k; ++i) {
-        to[i] = in.cornerPoint[nextCorner(list[i])];
-        from[i] = in.cornerPoint[previousCorner(list[i])];
+        const Triangle& t = in.triangles[list[i] / 3];
+        const uint32_t slot = list[i] % 3;
+        to[i] = t.point[slot == 2 ? 0 : slot + 1];
+        from[i] = t.point[slot == 0 ? 2 : slot - 1];
       }
       for (uint32_t i = 0; i < k; ++i) {
         uint32_t forward = 0, incoming = 0, j = 0;
@@ -136,8 +146,8 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
     s.ends.resize(2 * size_t{k});
     for (uint32_t i = 0; i < k; ++i) {
       const uint32_t c = list[i];
-      s.ends[2 * i] = (uint64_t{in.cornerPoint[nextCorner(c)]} << 33) | i;
-      s.ends[2 * i + 1] = (uint64_t{in.cornerPoint[previousCorner(c)]} << 33) | (uint64_t{1} << 32) | i;
+      s.ends[2 * i] = (uint64_t{in.point(nextCorner(c))} << 33) | i;
+      s.ends[2 * i + 1] = (uint64_t{in.point(previousCorner(c))} << 33) | (uint64_t{1} << 32) | i;
     }
     uint64_t* const ends = s.ends.data();
     sortSmall(ends, ends + 2 * k);
@@ -166,26 +176,27 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
       s.fanOf[i] = s.fanOf[root];
     }
     const uint32_t c = list[i];
-    s.fanSum[s.fanOf[i]] += in.faceNormal[c / 3] * in.cornerAngle[c];
+    const Triangle& t = in.triangles[c / 3];
+    s.fanSum[s.fanOf[i]] += t.normal * t.angle[c % 3];
   }
 
   // The common case: one fan, one vertex.
-  const uint32_t v0 = indices[list[0]];
+  const uint32_t v0 = in.vertex(list[0]);
   bool oneVertex = true;
-  for (uint32_t i = 1; i < k && oneVertex; ++i) oneVertex = indices[list[i]] == v0;
+  for (uint32_t i = 1; i < k && oneVertex; ++i) oneVertex = in.vertex(list[i]) == v0;
   if (s.fanSum.size() == 1 && oneVertex) {
-    normals[v0] = unitOr(s.fanSum[0], in.faceNormal[list[0] / 3]);
+    normals[v0] = unitOr(s.fanSum[0], in.normal(list[0]));
     return;
   }
 
   // (vertex, fan, local index) sorted: each pair's first corner leads its run, and a vertex's
   // runs follow one another.
   s.vertexFan.resize(k);
-  for (uint32_t i = 0; i < k; ++i) s.vertexFan[i] = (uint64_t{indices[list[i]]} << 32) | (uint64_t{s.fanOf[i]} << 16) | i;
+  for (uint32_t i = 0; i < k; ++i) s.vertexFan[i] = (uint64_t{in.vertex(list[i])} << 32) | (uint64_t{s.fanOf[i]} << 16) | i;
   if (k > 0xFFFF || s.fanSum.size() > 0xFFFF) {
     // More than 65,535 corners at one point: keys too wide for one word; sort pairs instead.
     std::vector<std::pair<uint64_t, uint32_t>> wide(k);
-    for (uint32_t i = 0; i < k; ++i) wide[i] = {(uint64_t{indices[list[i]]} << 32) | s.fanOf[i], i};
+    for (uint32_t i = 0; i < k; ++i) wide[i] = {(uint64_t{in.vertex(list[i])} << 32) | s.fanOf[i], i};
     std::sort(wide.begin(), wide.end());
     for (uint32_t a = 0; a < k;) {
       const uint32_t v = static_cast<uint32_t>(wide[a].first >> 32);
@@ -193,14 +204,14 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
       uint32_t b = a, keepFan = kNone, keepAt = kNone;
       for (; b < k && (wide[b].first >> 32) == v; ++b)
         if (wide[b].second < keepAt) keepAt = wide[b].second, keepFan = static_cast<uint32_t>(wide[b].first);
-      normals[v] = unitOr(s.fanSum[keepFan], in.faceNormal[list[keepAt] / 3]);
+      normals[v] = unitOr(s.fanSum[keepFan], in.normal(list[keepAt]));
       for (uint32_t r = a; r < b;) {
         uint32_t e = r + 1;
         while (e < b && wide[e].first == wide[r].first) ++e;
         const uint32_t fan = static_cast<uint32_t>(wide[r].first);
         if (fan != keepFan) {
           const uint32_t at = list[wide[r].second];
-          out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.faceNormal[at / 3])});
+          out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.normal(at))});
           for (uint32_t m = r + 1; m < e; ++m) out.uses.push_back({list[wide[m].second], at});
         }
         r = e;
@@ -219,14 +230,14 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
     uint32_t b = a, keepFan = kNone, keepAt = kNone;
     for (; b < k && vertexOf(keys[b]) == v; ++b)
       if (localOf(keys[b]) < keepAt) keepAt = localOf(keys[b]), keepFan = fanOfKey(keys[b]);
-    normals[v] = unitOr(s.fanSum[keepFan], in.faceNormal[list[keepAt] / 3]);
+    normals[v] = unitOr(s.fanSum[keepFan], in.normal(list[keepAt]));
     for (uint32_t r = a; r < b;) {
       const uint32_t fan = fanOfKey(keys[r]);
       uint32_t e = r + 1;
       while (e < b && fanOfKey(keys[e]) == fan) ++e;
       if (fan != keepFan) {
         const uint32_t at = list[localOf(keys[r])];
-        out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.faceNormal[at / 3])});
+        out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.normal(at))});
         for (uint32_t m = r + 1; m < e; ++m) out.uses.push_back({list[localOf(keys[m])], at});
       }
       r = e;
@@ -258,14 +269,14 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   // Pass 1, per triangle: unit normal (zero for degenerate or out-of-range triangles, which take no
   // part), each corner's angle and point (kNone where the triangle takes no part); per thread, the
   // usable corners counted by point.
-  std::vector<glm::vec3> faceNormal(triangles, glm::vec3(0.0f));
-  std::vector<float> cornerAngle(corners, 0.0f);
-  std::vector<uint32_t> cornerPoint(corners, kNone);
+  std::vector<Triangle> triangle(triangles);
   std::vector<std::vector<uint32_t>> count(threads);
   onEachThread([&](unsigned thread) {
     std::vector<uint32_t>& n = count[thread];
     n.assign(nv, 0);
     for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      Triangle& out = triangle[t];
+      out.point[0] = kNone;
       const uint32_t* v = &mesh.indices[3 * t];
       if (v[0] >= nv || v[1] >= nv || v[2] >= nv) continue;
       const uint32_t q[3] = {point[v[0]], point[v[1]], point[v[2]]};
@@ -275,10 +286,11 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
       const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
       const double len = glm::length(normal);
       if (!(len > 0.0) || !std::isfinite(len)) continue;
-      faceNormal[t] = glm::vec3(normal / len);
+      out.normal = glm::vec3(normal / len);
       for (int k = 0; k < 3; ++k) {
-        cornerAngle[3 * t + k] = cornerAngleOf(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
-        cornerPoint[3 * t + k] = q[k];
+        out.angle[k] = cornerAngleOf(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+        out.point[k] = q[k];
+        out.vertex[k] = v[k];
         ++n[q[k]];
       }
     }
@@ -302,8 +314,11 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   std::vector<uint32_t> byPoint(pointStart[nv]);
   onEachThread([&](unsigned thread) {
     uint32_t* const slot = count[thread].data();
-    for (size_t c = 3 * (triangles * thread / threads), end = 3 * (triangles * (thread + 1) / threads); c < end; ++c)
-      if (cornerPoint[c] != kNone) byPoint[slot[cornerPoint[c]]++] = static_cast<uint32_t>(c);
+    for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      const Triangle& tri = triangle[t];
+      if (tri.point[0] == kNone) continue;
+      for (uint32_t k = 0; k < 3; ++k) byPoint[slot[tri.point[k]]++] = static_cast<uint32_t>(3 * t + k);
+    }
   });
   { std::vector<std::vector<uint32_t>>().swap(count); }
 
@@ -311,7 +326,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   // its share of the corners; it writes only its points' vertices' normals.
   std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
-  const Corners in{mesh, cornerPoint, faceNormal, cornerAngle,
+  const Corners in{triangle,
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
                    creaseAngleDeg >= kNoCreaseDeg};
   onEachThread([&](unsigned thread) {

@@ -53,6 +53,29 @@ Mesh latticeSoup(unsigned seed, size_t vertices, size_t triangles) {
   return m;
 }
 
+// A folded grid (heights at random, so some edges are creases) with a few hundred of its triangles
+// repeated, some flipped: edges with 3 triangles and opposite windings at points of ~6-12 corners,
+// the point pass's small path (the lattice soups' points have hundreds of corners).
+Mesh foldedGridWithExtras(unsigned seed) {
+  std::mt19937 rng(seed);
+  Mesh m;
+  const int n = 40;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) m.positions.emplace_back(x * 0.1f, y * 0.1f, static_cast<float>(rng() % 3) * 0.06f);
+  auto at = [&](int x, int y) { return static_cast<uint32_t>(y * (n + 1) + x); };
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      m.indices.insert(m.indices.end(), {at(x, y), at(x + 1, y), at(x + 1, y + 1), at(x, y), at(x + 1, y + 1), at(x, y + 1)});
+  const size_t triangles = m.indices.size() / 3;
+  for (int i = 0; i < 300; ++i) {
+    const size_t t = rng() % triangles;
+    uint32_t v[3] = {m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]};
+    if (i % 2) std::swap(v[1], v[2]);
+    m.indices.insert(m.indices.end(), v, v + 3);
+  }
+  return m;
+}
+
 // One point at the centre of a 400-triangle fan (its bucket is sorted by std::sort, not by the
 // insertion sort the small buckets get), every other spoke folded by 70 degrees.
 Mesh foldedFan() {
@@ -87,6 +110,9 @@ TEST(VertexNormalsEquivalence, SoupsAndFansEqualTheSortedReference) {
     for (float crease : {kDefaultCreaseAngleDeg, 10.0f, kNoCreaseDeg})
       expectSameAsReference(latticeSoup(seed, 3000, 20000), crease, "lattice soup");
   for (float crease : {kDefaultCreaseAngleDeg, 80.0f, kNoCreaseDeg}) expectSameAsReference(foldedFan(), crease, "folded fan");
+  for (unsigned seed : {1u, 2u})
+    for (float crease : {kDefaultCreaseAngleDeg, 20.0f, kNoCreaseDeg})
+      expectSameAsReference(foldedGridWithExtras(seed), crease, "folded grid with extras");
   // Only degenerate triangles: no edge is used at all (found by fuzz_obj under UBSan: an empty
   // bucket array's null data() must not be offset).
   Mesh degenerate;

@@ -12,6 +12,7 @@
 #include "marble/mesh/vertex_normals.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -26,6 +27,9 @@ namespace {
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 // Points with at most this many corners find their edges by comparing all pairs.
 constexpr uint32_t kSmallPoint = 16;
+// Points a thread takes at a time in the point pass: large enough that the shared counter is
+// rare, small enough to even out the threads' shares.
+constexpr size_t kPointBlock = 4096;
 
 uint32_t nextCorner(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
 uint32_t previousCorner(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
@@ -288,7 +292,8 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
       if (!(len > 0.0) || !std::isfinite(len)) continue;
       out.normal = glm::vec3(normal / len);
       for (int k = 0; k < 3; ++k) {
-        out.angle[k] = cornerAngleOf(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+        // |e1 x e2| is twice the area at every corner: the face's `len` (equal up to rounding).
+        out.angle[k] = static_cast<float>(atan2OfLength(len, glm::dot(p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k])));
         out.point[k] = q[k];
         out.vertex[k] = v[k];
         ++n[q[k]];
@@ -322,25 +327,22 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   });
   { std::vector<std::vector<uint32_t>>().swap(count); }
 
-  // Pass 3, per point: fans, normals, vertices. Each thread takes a range of points holding about
-  // its share of the corners; it writes only its points' vertices' normals.
+  // Pass 3, per point: fans, normals, vertices. The threads take blocks of points in turn as they
+  // finish (the cost per corner varies along the ids: a subdivided mesh's first points, the coarse
+  // mesh's, have their corners spread over the file); each writes only its points' vertices' normals.
   std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
   const Corners in{triangle,
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
                    creaseAngleDeg >= kNoCreaseDeg};
+  std::atomic<size_t> nextBlock{0};
   onEachThread([&](unsigned thread) {
-    auto firstPoint = [&](unsigned t) {
-      const uint32_t target = static_cast<uint32_t>(uint64_t{pointStart[nv]} * t / threads);
-      return static_cast<size_t>(std::lower_bound(pointStart.begin(), pointStart.end() - 1, target) - pointStart.begin());
-    };
-    const size_t begin = thread == 0 ? 0 : firstPoint(thread);
-    const size_t end = thread + 1 == threads ? nv : firstPoint(thread + 1);
     Scratch scratch;
-    for (size_t p = begin; p < end; ++p) {
-      const uint32_t k = pointStart[p + 1] - pointStart[p];
-      if (k != 0) settlePoint(in, byPoint.data() + pointStart[p], k, scratch, normals, outputs[thread]);
-    }
+    for (size_t begin; (begin = nextBlock.fetch_add(kPointBlock, std::memory_order_relaxed)) < nv;)
+      for (size_t p = begin, end = std::min(nv, begin + kPointBlock); p < end; ++p) {
+        const uint32_t k = pointStart[p + 1] - pointStart[p];
+        if (k != 0) settlePoint(in, byPoint.data() + pointStart[p], k, scratch, normals, outputs[thread]);
+      }
   });
 
   // The copies, numbered in the order of the corners that make them (as one pass in corner order

@@ -91,11 +91,13 @@ struct Corners {
 
 // Scratch arrays of one thread, reused from point to point.
 struct Scratch {
-  std::vector<uint64_t> ends;     // edge ends: (other point << 33) | (incoming << 32) | local index
+  // Edge ends of a point with more than kSmallPoint corners: (other point << 33) | (incoming << 32)
+  // | local index (point ids are < the vertex count, at most kMaxVertices = 5e7 < 2^31).
+  std::vector<uint64_t> ends;
   std::vector<uint32_t> parent;   // union-find over the point's local indices
   std::vector<uint32_t> fanOf;    // local index -> fan (local)
   std::vector<glm::vec3> fanSum;  // per local fan
-  std::vector<uint64_t> vertexFan;  // (vertex << 32 | fan) << ... see settle()
+  std::vector<uint64_t> vertexFan;  // (vertex << 32) | (local fan << 16) | local index
 };
 
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {

@@ -43,7 +43,8 @@ inline double atan2OfLength(double y, double x) {
   return x < 0.0 ? kPi - a : a;
 }
 
-// The angle at p0 between the edges to p1 and p2, in radians.
+// The angle at p0 between the edges to p1 and p2, in radians. (vertex_normals.cpp calls
+// atan2OfLength with the face's cross length, the same |e1 x e2| for all three corners.)
 inline float cornerAngleOf(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
   const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
   return static_cast<float>(atan2OfLength(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2)));

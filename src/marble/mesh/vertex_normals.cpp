@@ -264,7 +264,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   const size_t triangles = corners / 3;
   if (point.size() != nv) throw std::invalid_argument("computeVertexNormals: one point id per vertex expected");
 
-  // One range of triangles per thread (for the first two passes) and of points (for the third).
+  // One range of triangles per thread for the first two passes; blocks of points for the third.
   const unsigned threads = workerThreadCount(corners, 150000);
   auto onEachThread = [&](auto&& work) {
     parallelFor(threads, 1, [&](size_t begin, size_t end) {
@@ -272,9 +272,9 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     });
   };
 
-  // Pass 1, per triangle: unit normal (zero for degenerate or out-of-range triangles, which take no
-  // part), each corner's angle and point (kNone where the triangle takes no part); per thread, the
-  // usable corners counted by point.
+  // Pass 1, per triangle: its record (unit normal, each corner's angle, point and vertex; point[0] =
+  // kNone for degenerate or out-of-range triangles, which take no part); per thread, the usable
+  // corners counted by point.
   std::vector<Triangle> triangle(triangles);
   std::vector<std::vector<uint32_t>> count(threads);
   onEachThread([&](unsigned thread) {

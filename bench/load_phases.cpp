@@ -1,7 +1,8 @@
 // marble_load_phases: loadMesh's steps timed one by one (issue 20, "loading at disk speed"): the
 // file read, the parse, up axis and normalization, the points (equal positions), duplicate
-// triangles, the crease normals, and the whole loadMesh for comparison. Medians over interleaved runs of wall time and of the
-// process's CPU time (all threads): on a shared machine the CPU time is the steadier figure.
+// triangles, the crease normals, and the whole loadMesh for comparison. Medians over interleaved runs of wall time, of the
+// process's CPU time (all threads) and of the calling thread's CPU time (the critical path: about
+// the wall time on free cores): on a shared machine the CPU times are the steadier figures.
 //
 //   marble_load_phases [--runs N] [--up z] [--crease DEG] FILE...      (.obj .ply .stl)
 //
@@ -29,6 +30,7 @@ namespace {
 
 using load_timing::cpuMs;
 using load_timing::median;
+using load_timing::threadMs;
 using load_timing::wallMs;
 
 bool sameMesh(const marble::Mesh& a, const marble::Mesh& b) {
@@ -44,19 +46,22 @@ constexpr size_t kPhaseCount = std::size(kPhases);
 
 // One load, step by step; adds each step's wall and CPU time.
 marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, float crease,
-                         std::vector<std::vector<double>>& wall, std::vector<std::vector<double>>& cpu) {
+                         std::vector<std::vector<double>>& wall, std::vector<std::vector<double>>& cpu,
+                         std::vector<std::vector<double>>& thread) {
   namespace md = marble::mesh_detail;
   const std::string file = path.string();
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  double w = wallMs(), c = cpuMs(), w0 = w, c0 = c;
+  double w = wallMs(), c = cpuMs(), h = threadMs(), w0 = w, c0 = c, h0 = h;
   size_t phase = 0;
   auto lap = [&] {
-    const double w1 = wallMs(), c1 = cpuMs();
+    const double w1 = wallMs(), c1 = cpuMs(), h1 = threadMs();
     wall[phase].push_back(w1 - w);
     cpu[phase].push_back(c1 - c);
+    thread[phase].push_back(h1 - h);
     w = w1;
     c = c1;
+    h = h1;
     ++phase;
   };
   std::string data = md::readWholeFile(path, file);
@@ -75,6 +80,7 @@ marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, f
   lap();
   wall[phase].push_back(wallMs() - w0);
   cpu[phase].push_back(cpuMs() - c0);
+  thread[phase].push_back(threadMs() - h0);
   return mesh;
 }
 
@@ -97,37 +103,38 @@ int main(int argc, char** argv) {
     return 2;
   }
   using Samples = std::vector<std::vector<double>>;
-  std::vector<Samples> wall(files.size(), Samples(kPhaseCount)), cpu = wall;
+  std::vector<Samples> wall(files.size(), Samples(kPhaseCount)), cpu = wall, thread = wall;
   try {
     std::vector<std::string> warnings;
     options.warnings = &warnings;
     for (size_t f = 0; f < files.size(); ++f) {
-      Samples w(kPhaseCount), c(kPhaseCount);
-      if (!sameMesh(loadInSteps(files[f], options.up, options.creaseAngleDeg, w, c), marble::loadMesh(files[f], options))) {
+      Samples w(kPhaseCount), c(kPhaseCount), h(kPhaseCount);
+      if (!sameMesh(loadInSteps(files[f], options.up, options.creaseAngleDeg, w, c, h), marble::loadMesh(files[f], options))) {
         std::fprintf(stderr, "marble_load_phases: %s: the steps differ from loadMesh\n", files[f].string().c_str());
         return 1;
       }
     }
     for (int r = 0; r < runs; ++r)
       for (size_t f = 0; f < files.size(); ++f) {
-        loadInSteps(files[f], options.up, options.creaseAngleDeg, wall[f], cpu[f]);
-        const double w0 = wallMs(), c0 = cpuMs();
+        loadInSteps(files[f], options.up, options.creaseAngleDeg, wall[f], cpu[f], thread[f]);
+        const double w0 = wallMs(), c0 = cpuMs(), h0 = threadMs();
         marble::loadMesh(files[f], options);
         wall[f][kPhaseCount - 1].push_back(wallMs() - w0);
         cpu[f][kPhaseCount - 1].push_back(cpuMs() - c0);
+        thread[f][kPhaseCount - 1].push_back(threadMs() - h0);
       }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "marble_load_phases: %s\n", e.what());
     return 2;
   }
-  std::printf("median of %d interleaved runs; ms CPU (all threads) / ms wall\n\n| file |", runs);
+  std::printf("median of %d interleaved runs; ms CPU (all threads) / ms CPU (calling thread) / ms wall\n\n| file |", runs);
   for (const char* p : kPhases) std::printf(" %s |", p);
   std::printf("\n| --- |");
   for (size_t p = 0; p < kPhaseCount; ++p) std::printf(" ---: |");
   std::printf("\n");
   for (size_t f = 0; f < files.size(); ++f) {
     std::printf("| %s |", files[f].filename().string().c_str());
-    for (size_t p = 0; p < kPhaseCount; ++p) std::printf(" %.0f / %.0f |", median(cpu[f][p]), median(wall[f][p]));
+    for (size_t p = 0; p < kPhaseCount; ++p) std::printf(" %.0f / %.0f / %.0f |", median(cpu[f][p]), median(thread[f][p]), median(wall[f][p]));
     std::printf("\n");
   }
   return 0;

@@ -1,7 +1,7 @@
 #pragma once
 // The clocks and the median the load benchmarks (load_compare.cpp, load_phases.cpp) report
 // with: wall time for what the user waits, process CPU time (all threads) for what the load
-// costs on a loaded machine. Header-only: the benchmarks link marble_lib, not the app's
+// costs on a loaded machine, the calling thread's CPU time for the critical path. Header-only: the benchmarks link marble_lib, not the app's
 // bench_clock.
 #include <time.h>
 
@@ -17,6 +17,13 @@ inline double wallMs() {
 inline double cpuMs() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+// The calling thread's CPU time: with the work split evenly over threads, about the wall time
+// the load would take on free cores (it runs the serial steps and its share of each parallel one).
+inline double threadMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 inline double median(std::vector<double> v) {

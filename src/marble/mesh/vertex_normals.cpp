@@ -1,52 +1,256 @@
-// Angle-weighted vertex normals with a crease angle (vertex_normals.h): points by exact position
-// (point_ids.h: found once in loadMesh and shared with the duplicate check), smooth edges from
-// the triangles around each edge (bucketed by point), fans of corners by union-find, one normal
-// per fan, render vertices duplicated where one vertex spans several fans.
+// Angle-weighted vertex normals with a crease angle (vertex_normals.h), point by point: points by
+// exact position (point_ids.h: found once in loadMesh and shared with the duplicate check); the
+// usable corners filed under their points (a counting sort, stable: each point's list is in corner
+// order); then each point alone -- over threads, no locks -- finds its edges among its own corners'
+// neighbours, joins its corners into fans, sums each fan's normal and settles its vertices. Only
+// the copies of vertices that span several fans are numbered on one thread, afterwards.
+//
+// Why per point: a set of corners joined through smooth edges never crosses points (two corners
+// are joined only at a shared point), and every triangle that uses an edge {p, q} has a corner at p.
+// So a point's corner list (about 6 corners on a closed mesh) holds everything its fans depend on,
+// and the union-find runs on a few local indices instead of 4.8 M corners scattered over memory.
 #include "marble/mesh/vertex_normals.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "marble/core/parallel_for.h"
+#include "marble/mesh/corner_angle.h"
 #include "marble/mesh/point_ids.h"
 
 namespace marble {
 namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
+// Points with at most this many corners find their edges by comparing all pairs.
+constexpr uint32_t kSmallPoint = 16;
+// Points a thread takes at a time in the point pass: large enough that the shared counter is
+// rare, small enough to even out the threads' shares.
+constexpr size_t kPointBlock = 4096;
 
-struct UnionFind {
-  std::vector<uint32_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  uint32_t find(uint32_t x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];  // path halving
-      x = parent[x];
+uint32_t nextCorner(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+uint32_t previousCorner(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
+
+glm::vec3 unitOr(glm::vec3 v, glm::vec3 fallback) {
+  const float len = glm::length(v);
+  return std::isfinite(len) && len > 0.0f ? v / len : fallback;
+}
+
+// Sorts a small array (a point's edge ends or vertices: a handful) by insertion, a large one (a
+// fan of thousands of triangles) by std::sort. Stable for the small ones; the large ones' keys
+// carry their position, so they are unique.
+template <class T>
+void sortSmall(T* first, T* last) {
+  if (last - first > 24) {
+    std::sort(first, last);
+    return;
+  }
+  for (T* i = first + 1; i < last; ++i)
+    for (T* k = i; k > first && k[-1] > k[0]; --k) std::swap(k[-1], k[0]);
+}
+
+// A copy of a render vertex for a fan other than the vertex's first: made at `corner` (the first
+// corner of that vertex in that fan), used by the corners that name it.
+struct Copy {
+  uint32_t corner;
+  uint32_t vertex;
+  glm::vec3 normal;
+};
+struct CopyUse {
+  uint32_t corner;
+  uint32_t madeAt;  // the Copy's corner
+};
+
+// What one thread's points leave for the serial step: the copies they make and the corners that
+// use them.
+struct PointsOutput {
+  std::vector<Copy> copies;
+  std::vector<CopyUse> uses;
+};
+
+// What the passes after the first need of a usable triangle, in one record so that a corner costs
+// one cache miss, not four (its point, its neighbours' points, its vertex, normal and angle).
+struct Triangle {
+  uint32_t point[3];  // point[0] == kNone: the triangle takes no part (degenerate, out of range)
+  uint32_t vertex[3];
+  glm::vec3 normal;
+  float angle[3];
+};
+
+struct Corners {
+  const std::vector<Triangle>& triangles;
+  float cosCrease;
+  bool noCrease;
+  uint32_t point(uint32_t c) const { return triangles[c / 3].point[c % 3]; }
+  uint32_t vertex(uint32_t c) const { return triangles[c / 3].vertex[c % 3]; }
+  const glm::vec3& normal(uint32_t c) const { return triangles[c / 3].normal; }
+};
+
+// Scratch arrays of one thread, reused from point to point.
+struct Scratch {
+  // Edge ends of a point with more than kSmallPoint corners: (other point << 33) | (incoming << 32)
+  // | local index (point ids are < the vertex count, at most kMaxVertices = 5e7 < 2^31).
+  std::vector<uint64_t> ends;
+  std::vector<uint32_t> parent;   // union-find over the point's local indices
+  std::vector<uint32_t> fanOf;    // local index -> fan (local)
+  std::vector<glm::vec3> fanSum;  // per local fan
+  std::vector<uint64_t> vertexFan;  // (vertex << 32) | (local fan << 16) | local index
+};
+
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+// The fans of one point whose usable corners are list[0..k) (ascending), their normals, and its
+// vertices: the first fan each vertex meets (in corner order) keeps the vertex; every other
+// (vertex, fan) pair is a copy, made at its first corner.
+void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
+                 PointsOutput& out) {
+  s.parent.resize(k);
+  for (uint32_t i = 0; i < k; ++i) s.parent[i] = i;
+  if (in.noCrease) {
+    for (uint32_t i = 1; i < k; ++i) s.parent[i] = 0;
+  } else {
+    // Each corner uses two edges at this point: out to the next corner's point (forward) and in
+    // from the previous one's. An edge {p, q} is smooth when exactly two of p's corners use it, one
+    // each way, and their faces are within the crease angle (Blender's rule); the two corners then
+    // join. (Every triangle that uses the edge has a corner at p and uses it once: its points are
+    // distinct.)
+    auto join = [&](uint32_t i, uint32_t j) {
+      if (glm::dot(in.normal(list[i]), in.normal(list[j])) >= in.cosCrease) {
+        const uint32_t ri = findRoot(s.parent, i), rj = findRoot(s.parent, j);
+        if (ri != rj) s.parent[std::max(ri, rj)] = std::min(ri, rj);
+      }
+    };
+    if (k <= kSmallPoint) {
+      // The common case (a closed mesh has ~6 corners a point): each corner's forward edge
+      // compared with every corner's two edges, without branches; a sort would cost more.
+      uint32_t to[kSmallPoint], from[kSmallPoint];
+      for (uint32_t i = 0; i < k; ++i) {
+        const Triangle& t = in.triangles[list[i] / 3];
+        const uint32_t slot = list[i] % 3;
+        to[i] = t.point[slot == 2 ? 0 : slot + 1];
+        from[i] = t.point[slot == 0 ? 2 : slot - 1];
+      }
+      for (uint32_t i = 0; i < k; ++i) {
+        uint32_t forward = 0, incoming = 0, j = 0;
+        for (uint32_t m = 0; m < k; ++m) {
+          forward += to[m] == to[i];
+          incoming += from[m] == to[i];
+          j = from[m] == to[i] ? m : j;
+        }
+        if (forward == 1 && incoming == 1) join(i, j);
+      }
+    } else {
+    s.ends.resize(2 * size_t{k});
+    for (uint32_t i = 0; i < k; ++i) {
+      const uint32_t c = list[i];
+      s.ends[2 * i] = (uint64_t{in.point(nextCorner(c))} << 33) | i;
+      s.ends[2 * i + 1] = (uint64_t{in.point(previousCorner(c))} << 33) | (uint64_t{1} << 32) | i;
     }
-    return x;
+    uint64_t* const ends = s.ends.data();
+    sortSmall(ends, ends + 2 * k);
+    for (uint32_t a = 0; a < 2 * k;) {
+      uint32_t b = a + 1;
+      while (b < 2 * k && (ends[b] >> 33) == (ends[a] >> 33)) ++b;
+      // Sorted by direction within the edge: a forward use, then an incoming one.
+      if (b - a == 2 && ((ends[a] >> 32) & 1) == 0 && ((ends[a + 1] >> 32) & 1) == 1) {
+        join(static_cast<uint32_t>(ends[a]), static_cast<uint32_t>(ends[a + 1]));
+      }
+      a = b;
+    }
+    }
   }
-  void unite(uint32_t a, uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+
+  // Fans numbered by their lowest corner; each fan's sum in corner order (as one pass over all
+  // corners in file order would add them).
+  s.fanOf.resize(k);
+  s.fanSum.clear();
+  for (uint32_t i = 0; i < k; ++i) {
+    const uint32_t root = findRoot(s.parent, i);
+    if (root == i) {
+      s.fanOf[i] = static_cast<uint32_t>(s.fanSum.size());
+      s.fanSum.emplace_back(0.0f);
+    } else {
+      s.fanOf[i] = s.fanOf[root];
+    }
+    const uint32_t c = list[i];
+    const Triangle& t = in.triangles[c / 3];
+    s.fanSum[s.fanOf[i]] += t.normal * t.angle[c % 3];
   }
-};
 
-// One use of an edge by a triangle, filed under the edge's lower point id: the higher one, and the
-// corner it runs from (3t + k: from corner k to corner (k + 1) % 3) with, in the top bit, whether it
-// runs lower -> higher. Corner indices are < 3 * kMaxTriangles < 2^31.
-struct EdgeUse {
-  uint32_t hi;
-  uint32_t fromAndDirection;
-  uint32_t from() const { return fromAndDirection & 0x7FFFFFFFu; }
-  bool forward() const { return (fromAndDirection >> 31) != 0; }
-};
+  // The common case: one fan, one vertex.
+  const uint32_t v0 = in.vertex(list[0]);
+  bool oneVertex = true;
+  for (uint32_t i = 1; i < k && oneVertex; ++i) oneVertex = in.vertex(list[i]) == v0;
+  if (s.fanSum.size() == 1 && oneVertex) {
+    normals[v0] = unitOr(s.fanSum[0], in.normal(list[0]));
+    return;
+  }
 
-uint32_t nextCorner(uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; }
+  // (vertex, fan, local index) sorted: each pair's first corner leads its run, and a vertex's
+  // runs follow one another.
+  s.vertexFan.resize(k);
+  for (uint32_t i = 0; i < k; ++i) s.vertexFan[i] = (uint64_t{in.vertex(list[i])} << 32) | (uint64_t{s.fanOf[i]} << 16) | i;
+  if (k > 0xFFFF || s.fanSum.size() > 0xFFFF) {
+    // More than 65,535 corners at one point: keys too wide for one word; sort pairs instead.
+    std::vector<std::pair<uint64_t, uint32_t>> wide(k);
+    for (uint32_t i = 0; i < k; ++i) wide[i] = {(uint64_t{in.vertex(list[i])} << 32) | s.fanOf[i], i};
+    std::sort(wide.begin(), wide.end());
+    for (uint32_t a = 0; a < k;) {
+      const uint32_t v = static_cast<uint32_t>(wide[a].first >> 32);
+      // The vertex's first corner: the least local index over its runs.
+      uint32_t b = a, keepFan = kNone, keepAt = kNone;
+      for (; b < k && (wide[b].first >> 32) == v; ++b)
+        if (wide[b].second < keepAt) keepAt = wide[b].second, keepFan = static_cast<uint32_t>(wide[b].first);
+      normals[v] = unitOr(s.fanSum[keepFan], in.normal(list[keepAt]));
+      for (uint32_t r = a; r < b;) {
+        uint32_t e = r + 1;
+        while (e < b && wide[e].first == wide[r].first) ++e;
+        const uint32_t fan = static_cast<uint32_t>(wide[r].first);
+        if (fan != keepFan) {
+          const uint32_t at = list[wide[r].second];
+          out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.normal(at))});
+          for (uint32_t m = r + 1; m < e; ++m) out.uses.push_back({list[wide[m].second], at});
+        }
+        r = e;
+      }
+      a = b;
+    }
+    return;
+  }
+  uint64_t* const keys = s.vertexFan.data();
+  sortSmall(keys, keys + k);
+  auto vertexOf = [](uint64_t key) { return static_cast<uint32_t>(key >> 32); };
+  auto fanOfKey = [](uint64_t key) { return static_cast<uint32_t>(key >> 16) & 0xFFFFu; };
+  auto localOf = [](uint64_t key) { return static_cast<uint32_t>(key) & 0xFFFFu; };
+  for (uint32_t a = 0; a < k;) {
+    const uint32_t v = vertexOf(keys[a]);
+    uint32_t b = a, keepFan = kNone, keepAt = kNone;
+    for (; b < k && vertexOf(keys[b]) == v; ++b)
+      if (localOf(keys[b]) < keepAt) keepAt = localOf(keys[b]), keepFan = fanOfKey(keys[b]);
+    normals[v] = unitOr(s.fanSum[keepFan], in.normal(list[keepAt]));
+    for (uint32_t r = a; r < b;) {
+      const uint32_t fan = fanOfKey(keys[r]);
+      uint32_t e = r + 1;
+      while (e < b && fanOfKey(keys[e]) == fan) ++e;
+      if (fan != keepFan) {
+        const uint32_t at = list[localOf(keys[r])];
+        out.copies.push_back({at, v, unitOr(s.fanSum[fan], in.normal(at))});
+        for (uint32_t m = r + 1; m < e; ++m) out.uses.push_back({list[localOf(keys[m])], at});
+      }
+      r = e;
+    }
+    a = b;
+  }
+}
 
 }  // namespace
 
@@ -57,144 +261,115 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
+  const size_t triangles = corners / 3;
   if (point.size() != nv) throw std::invalid_argument("computeVertexNormals: one point id per vertex expected");
 
-  // Per triangle: unit normal (zero for degenerate or out-of-range triangles, which take no part);
-  // per corner: its angle.
-  std::vector<glm::vec3> faceNormal(corners / 3, glm::vec3(0.0f));
-  std::vector<float> cornerAngle(corners, 0.0f);
-  // Triangles are independent: split over threads (each writes only its own entries).
-  parallelFor(corners / 3, 50000, [&](size_t begin, size_t end) {
-    for (size_t t = begin; t < end; ++t) {
+  // One range of triangles per thread for the first two passes; blocks of points for the third.
+  const unsigned threads = workerThreadCount(corners, 150000);
+  auto onEachThread = [&](auto&& work) {
+    parallelFor(threads, 1, [&](size_t begin, size_t end) {
+      for (size_t t = begin; t < end; ++t) work(static_cast<unsigned>(t));
+    });
+  };
+
+  // Pass 1, per triangle: its record (unit normal, each corner's angle, point and vertex; point[0] =
+  // kNone for degenerate or out-of-range triangles, which take no part); per thread, the usable
+  // corners counted by point.
+  std::vector<Triangle> triangle(triangles);
+  std::vector<std::vector<uint32_t>> count(threads);
+  onEachThread([&](unsigned thread) {
+    std::vector<uint32_t>& n = count[thread];
+    n.assign(nv, 0);
+    for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      Triangle& out = triangle[t];
+      out.point[0] = kNone;
       const uint32_t* v = &mesh.indices[3 * t];
       if (v[0] >= nv || v[1] >= nv || v[2] >= nv) continue;
-      if (point[v[0]] == point[v[1]] || point[v[1]] == point[v[2]] || point[v[0]] == point[v[2]]) continue;
+      const uint32_t q[3] = {point[v[0]], point[v[1]], point[v[2]]};
+      if (q[0] == q[1] || q[1] == q[2] || q[0] == q[2]) continue;
       const glm::dvec3 p[3] = {glm::dvec3(mesh.positions[v[0]]), glm::dvec3(mesh.positions[v[1]]),
                                glm::dvec3(mesh.positions[v[2]])};
-      const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-      const double len = glm::length(n);
+      const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
+      const double len = glm::length(normal);
       if (!(len > 0.0) || !std::isfinite(len)) continue;
-      faceNormal[t] = glm::vec3(n / len);
+      out.normal = glm::vec3(normal / len);
       for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-        cornerAngle[3 * t + k] = static_cast<float>(std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2)));
+        // |e1 x e2| is twice the area at every corner: the face's `len` (equal up to rounding).
+        out.angle[k] = static_cast<float>(atan2OfLength(len, glm::dot(p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k])));
+        out.point[k] = q[k];
+        out.vertex[k] = v[k];
+        ++n[q[k]];
       }
     }
   });
-  auto usable = [&](size_t t) { return faceNormal[t] != glm::vec3(0.0f); };
 
-  // Fans: corners of one point joined through smooth edges (or all of them, without a crease).
-  UnionFind fans(corners);
-  if (creaseAngleDeg >= kNoCreaseDeg) {
-    std::vector<uint32_t> firstCorner(nv, kNone);  // by point id (ids are < nv)
-    for (uint32_t c = 0; c < corners; ++c) {
-      if (!usable(c / 3)) continue;
-      uint32_t& first = firstCorner[point[mesh.indices[c]]];
-      if (first == kNone) first = c;
-      else fans.unite(first, c);
-    }
-  } else {
-    // The uses of each edge side by side: bucketed by lower point (a counting sort, linear), then
-    // sorted by higher point within the bucket (a handful each). The same (lo, hi) order as one
-    // sort of all uses, and which of an edge's two uses comes first does not change the result
-    // (the rule below is symmetric in them).
-    // Each corner's point, once (one random read per corner instead of four).
-    std::vector<uint32_t> cornerPoint(corners);
-    for (uint32_t c = 0; c < corners; ++c) cornerPoint[c] = point[mesh.indices[c]];
-    std::vector<uint32_t> bucketStart(nv + 1, 0);
-    for (uint32_t c = 0; c < corners; ++c)
-      if (usable(c / 3)) ++bucketStart[std::min(cornerPoint[c], cornerPoint[nextCorner(c)]) + 1];
-    for (size_t p = 0; p < nv; ++p) bucketStart[p + 1] += bucketStart[p];
-    std::vector<EdgeUse> uses(bucketStart[nv]);
-    {
-      std::vector<uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
-      for (uint32_t c = 0; c < corners; ++c) {
-        if (!usable(c / 3)) continue;
-        const uint32_t a = cornerPoint[c], b = cornerPoint[nextCorner(c)];
-        uses[fill[std::min(a, b)]++] = {std::max(a, b), c | (a < b ? 0x80000000u : 0u)};
-      }
-    }
-    const float cosCrease = static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0));
+  // Where each thread's corners of each point go: points in order, within a point the threads in
+  // order (so every list stays in corner order). `count` becomes each thread's next slot.
+  std::vector<uint32_t> pointStart(nv + 1);
+  {
+    uint32_t total = 0;
     for (size_t p = 0; p < nv; ++p) {
-      EdgeUse* const first = uses.data() + bucketStart[p];
-      EdgeUse* const last = uses.data() + bucketStart[p + 1];
-      if (first == last) continue;  // (also: no pointer arithmetic on an empty array's null data())
-      // Buckets hold ~3 uses: insertion sort, where std::sort's set-up would cost more; a point
-      // with very many edges (a fan of thousands of triangles) gets std::sort.
-      if (last - first > 16) {
-        std::sort(first, last, [](const EdgeUse& x, const EdgeUse& y) { return x.hi < y.hi; });
-      } else {
-        for (EdgeUse* i = first + 1; i < last; ++i)
-          for (EdgeUse* k = i; k > first && k[-1].hi > k->hi; --k) std::swap(k[-1], k[0]);
-      }
-      for (EdgeUse* i = first; i < last;) {
-        EdgeUse* j = i;
-        while (j < last && j->hi == i->hi) ++j;
-        // Smooth only between exactly two triangles wound the same way (they run the edge in
-        // opposite directions) whose normals are within the crease angle: Blender's rule.
-        if (j - i == 2 && i[0].forward() != i[1].forward() &&
-            glm::dot(faceNormal[i[0].from() / 3], faceNormal[i[1].from() / 3]) >= cosCrease) {
-          // Triangle 1 runs the edge A -> B, triangle 2 B -> A: join the corners at the same point.
-          const uint32_t a1 = i[0].from(), b1 = nextCorner(a1);
-          const uint32_t b2 = i[1].from(), a2 = nextCorner(b2);
-          fans.unite(a1, a2);
-          fans.unite(b1, b2);
-        }
-        i = j;
+      pointStart[p] = total;
+      for (unsigned t = 0; t < threads; ++t) {
+        const uint32_t n = count[t][p];
+        count[t][p] = total;
+        total += n;
       }
     }
+    pointStart[nv] = total;
   }
-
-  // One normal per fan: its faces' normals weighted by their corners' angles, added in corner
-  // order. The fans numbered in the order of their first corners as they are met: a set's root is
-  // its lowest corner, so a corner that is its own root starts a fan, and any other's root was
-  // numbered before it. (One compact sum per fan and one root search per corner, instead of a
-  // sum per corner -- 57 MB for 1.6 M triangles -- and a second search in the pass below.)
-  std::vector<uint32_t> fanOf(corners, kNone);
-  std::vector<glm::vec3> fanSum;
-  for (uint32_t c = 0; c < corners; ++c) {
-    if (!usable(c / 3)) continue;
-    const uint32_t root = fans.find(c);
-    if (root == c) {
-      fanOf[c] = static_cast<uint32_t>(fanSum.size());
-      fanSum.emplace_back(0.0f);
-    } else {
-      fanOf[c] = fanOf[root];
+  std::vector<uint32_t> byPoint(pointStart[nv]);
+  onEachThread([&](unsigned thread) {
+    uint32_t* const slot = count[thread].data();
+    for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      const Triangle& tri = triangle[t];
+      if (tri.point[0] == kNone) continue;
+      for (uint32_t k = 0; k < 3; ++k) byPoint[slot[tri.point[k]]++] = static_cast<uint32_t>(3 * t + k);
     }
-    fanSum[fanOf[c]] += faceNormal[c / 3] * cornerAngle[c];
-  }
-  { std::vector<uint32_t>().swap(fans.parent); }
-  auto unitOr = [](glm::vec3 v, glm::vec3 fallback) {
-    const float len = glm::length(v);
-    return std::isfinite(len) && len > 0.0f ? v / len : fallback;
-  };
+  });
+  { std::vector<std::vector<uint32_t>>().swap(count); }
 
-  // A render vertex keeps its index for the first fan it meets and is copied for every other one.
-  std::vector<uint32_t> vertexFan(nv, kNone);
+  // Pass 3, per point: fans, normals, vertices. The threads take blocks of points in turn as they
+  // finish (the cost per corner varies along the ids: a subdivided mesh's first points, the coarse
+  // mesh's, have their corners spread over the file); each writes only its points' vertices' normals.
   std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
-  std::unordered_map<uint64_t, uint32_t> copies;  // (vertex, fan) -> the copy's index
-  const bool hasTexcoords = mesh.texcoords.size() == nv;
-  for (uint32_t c = 0; c < corners; ++c) {
-    if (!usable(c / 3)) continue;
-    const uint32_t v = mesh.indices[c], fan = fanOf[c];
-    if (vertexFan[v] == kNone) {
-      vertexFan[v] = fan;
-      normals[v] = unitOr(fanSum[fan], faceNormal[c / 3]);
-      continue;
-    }
-    if (vertexFan[v] == fan) continue;
-    const uint64_t key = (static_cast<uint64_t>(v) << 32) | fan;
-    auto [it, added] = copies.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
-    if (added) {
-      const glm::vec3 position = mesh.positions[v];  // a copy: push_back may reallocate
-      mesh.positions.push_back(position);
-      if (hasTexcoords) {
-        const glm::vec2 uv = mesh.texcoords[v];
-        mesh.texcoords.push_back(uv);
+  std::vector<PointsOutput> outputs(threads);
+  const Corners in{triangle,
+                   static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
+                   creaseAngleDeg >= kNoCreaseDeg};
+  std::atomic<size_t> nextBlock{0};
+  onEachThread([&](unsigned thread) {
+    Scratch scratch;
+    for (size_t begin; (begin = nextBlock.fetch_add(kPointBlock, std::memory_order_relaxed)) < nv;)
+      for (size_t p = begin, end = std::min(nv, begin + kPointBlock); p < end; ++p) {
+        const uint32_t k = pointStart[p + 1] - pointStart[p];
+        if (k != 0) settlePoint(in, byPoint.data() + pointStart[p], k, scratch, normals, outputs[thread]);
       }
-      normals.push_back(unitOr(fanSum[fan], faceNormal[c / 3]));
-    }
-    mesh.indices[c] = it->second;
+  });
+
+  // The copies, numbered in the order of the corners that make them (as one pass in corner order
+  // would meet them): few (the crease edges' and seams' vertices), so on one thread.
+  std::vector<Copy> copies;
+  std::vector<CopyUse> uses;
+  for (PointsOutput& o : outputs) {
+    copies.insert(copies.end(), o.copies.begin(), o.copies.end());
+    uses.insert(uses.end(), o.uses.begin(), o.uses.end());
+  }
+  std::sort(copies.begin(), copies.end(), [](const Copy& a, const Copy& b) { return a.corner < b.corner; });
+  const bool hasTexcoords = mesh.texcoords.size() == nv;
+  mesh.positions.reserve(nv + copies.size());
+  if (hasTexcoords) mesh.texcoords.reserve(nv + copies.size());
+  normals.reserve(nv + copies.size());
+  for (const Copy& copy : copies) {
+    mesh.indices[copy.corner] = static_cast<uint32_t>(mesh.positions.size());
+    mesh.positions.push_back(mesh.positions[copy.vertex]);  // reserved: no reallocation
+    if (hasTexcoords) mesh.texcoords.push_back(mesh.texcoords[copy.vertex]);
+    normals.push_back(copy.normal);
+  }
+  for (const CopyUse& use : uses) {
+    const auto made = std::lower_bound(copies.begin(), copies.end(), use.madeAt,
+                                       [](const Copy& a, uint32_t corner) { return a.corner < corner; });
+    mesh.indices[use.corner] = mesh.indices[made->corner];
   }
   mesh.normals = std::move(normals);
 }

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -81,7 +82,7 @@ struct Triangle {
 };
 
 struct Corners {
-  const std::vector<Triangle>& triangles;
+  const Triangle* triangles;
   float cosCrease;
   bool noCrease;
   uint32_t point(uint32_t c) const { return triangles[c / 3].point[c % 3]; }
@@ -275,7 +276,10 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   // Pass 1, per triangle: its record (unit normal, each corner's angle, point and vertex; point[0] =
   // kNone for degenerate or out-of-range triangles, which take no part); per thread, the usable
   // corners counted by point.
-  std::vector<Triangle> triangle(triangles);
+  // Fresh arrays of this size are left unset (make_unique_for_overwrite) where every element the
+  // later passes read is written first: zeroing 77 MB (1.6 M triangles) on the calling thread
+  // faulted in every page there, before the threads wrote them again.
+  const std::unique_ptr<Triangle[]> triangle = std::make_unique_for_overwrite<Triangle[]>(triangles);
   std::vector<std::vector<uint32_t>> count(threads);
   onEachThread([&](unsigned thread) {
     std::vector<uint32_t>& n = count[thread];
@@ -305,7 +309,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
 
   // Where each thread's corners of each point go: points in order, within a point the threads in
   // order (so every list stays in corner order). `count` becomes each thread's next slot.
-  std::vector<uint32_t> pointStart(nv + 1);
+  const std::unique_ptr<uint32_t[]> pointStart = std::make_unique_for_overwrite<uint32_t[]>(nv + 1);
   {
     uint32_t total = 0;
     for (size_t p = 0; p < nv; ++p) {
@@ -318,7 +322,8 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     }
     pointStart[nv] = total;
   }
-  std::vector<uint32_t> byPoint(pointStart[nv]);
+  // Every slot is written: the counts above are the usable corners filed below.
+  const std::unique_ptr<uint32_t[]> byPoint = std::make_unique_for_overwrite<uint32_t[]>(pointStart[nv]);
   onEachThread([&](unsigned thread) {
     uint32_t* const slot = count[thread].data();
     for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
@@ -334,7 +339,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   // mesh's, have their corners spread over the file); each writes only its points' vertices' normals.
   std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
-  const Corners in{triangle,
+  const Corners in{triangle.get(),
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
                    creaseAngleDeg >= kNoCreaseDeg};
   std::atomic<size_t> nextBlock{0};
@@ -343,7 +348,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     for (size_t begin; (begin = nextBlock.fetch_add(kPointBlock, std::memory_order_relaxed)) < nv;)
       for (size_t p = begin, end = std::min(nv, begin + kPointBlock); p < end; ++p) {
         const uint32_t k = pointStart[p + 1] - pointStart[p];
-        if (k != 0) settlePoint(in, byPoint.data() + pointStart[p], k, scratch, normals, outputs[thread]);
+        if (k != 0) settlePoint(in, byPoint.get() + pointStart[p], k, scratch, normals, outputs[thread]);
       }
   });
 

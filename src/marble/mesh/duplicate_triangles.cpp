@@ -108,7 +108,10 @@ size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point, 
         bool duplicate = false;
         std::optional<Key> key;  // triangle t's, made at the first full hash match
         for (; slots[slot] != kEmpty; slot = (slot + 1) & mask) {
-          const uint32_t k = static_cast<uint32_t>(slots[slot]);
+          const uint64_t entry = slots[slot];
+          // The slot's high half first: reading hashes[k] on every probe is a cache miss each.
+          if (static_cast<uint32_t>(entry >> 32) != high) continue;
+          const uint32_t k = static_cast<uint32_t>(entry);
           if (hashes[k] != h) continue;
           if (!key) key = canonical(mesh, point, t);
           if (canonical(mesh, point, k) == *key) {

@@ -358,6 +358,11 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     Scratch scratch;
     for (size_t begin; (begin = nextBlock.fetch_add(kPointBlock, std::memory_order_relaxed)) < nv;)
       for (size_t p = begin, end = std::min(nv, begin + kPointBlock); p < end; ++p) {
+        // The records of the corners of a point two ahead, prefetched: a point's corners are
+        // scattered over the 77 MB of records (one miss each, most of this pass's time).
+        if (p + 2 < end)
+          for (uint32_t i = pointStart[p + 2], e = pointStart[p + 3]; i < e && i < pointStart[p + 2] + kSmallPoint; ++i)
+            __builtin_prefetch(&triangle[byPoint[i] / 3]);
         const uint32_t k = pointStart[p + 1] - pointStart[p];
         if (k != 0) settlePoint(in, byPoint.get() + pointStart[p], k, scratch, normals, outputs[thread]);
       }

@@ -75,6 +75,19 @@ TEST(PointIds, DuplicateCheckByPointsEqualsTheCheckByPositions) {
   }
 }
 
+TEST(PointIds, DuplicateCheckDoesNotDependOnTheNumberOfTables) {
+  // Split over tables (one thread each, by hash), each key's first triangle must still be kept:
+  // 1 to 7 tables against the std::set check, on soups whose duplicates are spread over the file.
+  for (unsigned seed : {4u, 5u})
+    for (unsigned tables : {1u, 2u, 3u, 4u, 7u}) {
+      Mesh m = duplicateSoup(seed);
+      const std::vector<uint32_t> expected = withoutDuplicatesByPositions(m);
+      const size_t removed = removeDuplicateTriangles(m, pointIds(m.positions), tables);
+      EXPECT_GT(removed, 1000u) << "seed " << seed << ", " << tables << " tables";
+      EXPECT_EQ(m.indices, expected) << "seed " << seed << ", " << tables << " tables";
+    }
+}
+
 TEST(PointIds, DuplicateComparisonDetectsAMissedRotation) {
   // Negative control: a check that ignored rotations keeps other triangles, and the comparison
   // above sees it.

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "marble/core/parallel_for.h"
@@ -51,53 +53,93 @@ uint64_t hashOf(const Key& key) {
 size_t removeDuplicateTriangles(Mesh& mesh) { return removeDuplicateTriangles(mesh, pointIds(mesh.positions)); }
 
 size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point) {
+  return removeDuplicateTriangles(mesh, point, 0);
+}
+
+size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point, unsigned tables) {
   const size_t count = mesh.indices.size() / 3;
   if (count < 2) return 0;
-  // Every triangle's hash first, over threads (triangles are independent).
-  std::vector<uint64_t> hashes(count);
-  parallelFor(count, 100000, [&](size_t begin, size_t end) {
-    for (size_t t = begin; t < end; ++t) hashes[t] = hashOf(canonical(mesh, point, t));
+  if (tables == 0) tables = workerThreadCount(count, 100000, 4);
+  // A triangle's table: the hash's top bits (the slot within a table takes its low bits). All
+  // triangles of one key meet in one table, and each table is filled in file order, so each key's
+  // first triangle is kept whatever the number of tables: the tables are independent (one thread
+  // each, no locks) and the result is the one-table result.
+  auto tableOf = [tables](uint64_t h) { return static_cast<unsigned>(((h >> 32) * tables) >> 32); };
+  // Every triangle's hash first, over threads (triangles are independent), and each range's
+  // count per table (to size the tables). Every element is written, so the array is left unset
+  // (zeroing 13 MB at 1.6 M triangles would fault its pages in on the calling thread).
+  const std::unique_ptr<uint64_t[]> hashes = std::make_unique_for_overwrite<uint64_t[]>(count);
+  const unsigned hashRanges = workerThreadCount(count, 100000);
+  std::vector<std::vector<size_t>> perRange(hashRanges, std::vector<size_t>(tables, 0));
+  parallelFor(hashRanges, 1, [&](size_t first, size_t last) {
+    for (size_t r = first; r < last; ++r) {
+      std::vector<size_t> n(tables, 0);  // counted here, not in perRange[r]: no shared cache line
+      for (size_t t = count * r / hashRanges, end = count * (r + 1) / hashRanges; t < end; ++t) {
+        // The points of a triangle a few ahead, prefetched (its vertices are scattered).
+        if (t + 8 < end)
+          for (size_t k = 0; k < 3; ++k)
+            if (const uint32_t v = mesh.indices[3 * (t + 8) + k]; v < point.size()) __builtin_prefetch(&point[v]);
+        hashes[t] = hashOf(canonical(mesh, point, t));
+        ++n[tableOf(hashes[t])];
+      }
+      perRange[r] = std::move(n);
+    }
   });
-  // Then in file order, open addressing over kept triangles, load factor <= 1/2. A slot holds a
-  // kept triangle's position in the output (low 32 bits) and the high half of its hash, so that
-  // a probe reads one word; a key is recomputed only when the whole hash matches (rare). The slot
-  // of a triangle a few ahead is prefetched: the table is far larger than the caches.
-  size_t capacity = 16;
-  while (capacity < count * 2) capacity *= 2;
-  const size_t mask = capacity - 1;
-  constexpr uint64_t kEmpty = UINT64_MAX;  // no triangle's slot: output positions are < 2^32 - 1
-  std::vector<uint64_t> slots(capacity, kEmpty);
-  std::vector<uint32_t> keptHashLow;  // the low half of each kept triangle's hash
-  keptHashLow.reserve(count);
-  constexpr size_t kAhead = 8;
-  size_t kept = 0;
-  for (size_t t = 0; t < count; ++t) {
-    if (t + kAhead < count) __builtin_prefetch(&slots[static_cast<size_t>(hashes[t + kAhead]) & mask]);
-    const uint64_t h = hashes[t];
-    const uint32_t high = static_cast<uint32_t>(h >> 32);
-    size_t slot = static_cast<size_t>(h) & mask;
-    bool duplicate = false;
-    std::optional<Key> key;  // triangle t's, made at the first full hash match
-    for (; slots[slot] != kEmpty; slot = (slot + 1) & mask) {
-      const uint64_t entry = slots[slot];
-      const uint32_t k = static_cast<uint32_t>(entry);
-      if (static_cast<uint32_t>(entry >> 32) != high || keptHashLow[k] != static_cast<uint32_t>(h)) continue;
-      if (!key) key = canonical(mesh, point, t);
-      if (canonical(mesh, point, k) == *key) {
-        duplicate = true;
-        break;
+  // Then each table in file order, open addressing, load factor <= 1/2. A slot holds a kept
+  // triangle's index (low 32 bits) and the high half of its hash, so that a probe reads one word;
+  // a key is recomputed only when the whole hash matches (rare). The indices are moved only after
+  // all tables are done, so a kept triangle's key is read from its own place. The slot of a
+  // triangle a few ahead is prefetched when it is this table's: the tables are far larger than
+  // the caches.
+  std::vector<std::vector<uint32_t>> dropped(tables);  // per table, ascending
+  parallelFor(tables, 1, [&](size_t first, size_t last) {
+    for (size_t table = first; table < last; ++table) {
+      size_t members = 0;
+      for (const std::vector<size_t>& n : perRange) members += n[table];
+      size_t capacity = 16;
+      while (capacity < members * 2) capacity *= 2;
+      const size_t mask = capacity - 1;
+      constexpr uint64_t kEmpty = UINT64_MAX;  // no triangle's slot: indices are < 2^32 - 1
+      std::vector<uint64_t> slots(capacity, kEmpty);
+      constexpr size_t kAhead = 16;
+      for (size_t t = 0; t < count; ++t) {
+        if (t + kAhead < count && tableOf(hashes[t + kAhead]) == table)
+          __builtin_prefetch(&slots[static_cast<size_t>(hashes[t + kAhead]) & mask]);
+        const uint64_t h = hashes[t];
+        if (tableOf(h) != table) continue;
+        const uint32_t high = static_cast<uint32_t>(h >> 32);
+        size_t slot = static_cast<size_t>(h) & mask;
+        bool duplicate = false;
+        std::optional<Key> key;  // triangle t's, made at the first full hash match
+        for (; slots[slot] != kEmpty; slot = (slot + 1) & mask) {
+          const uint64_t entry = slots[slot];
+          // The slot's high half first: reading hashes[k] on every probe is a cache miss each.
+          if (static_cast<uint32_t>(entry >> 32) != high) continue;
+          const uint32_t k = static_cast<uint32_t>(entry);
+          if (hashes[k] != h) continue;
+          if (!key) key = canonical(mesh, point, t);
+          if (canonical(mesh, point, k) == *key) {
+            duplicate = true;
+            break;
+          }
+        }
+        if (duplicate) dropped[table].push_back(static_cast<uint32_t>(t));
+        else slots[slot] = (static_cast<uint64_t>(high) << 32) | t;
       }
     }
-    if (duplicate) continue;
-    slots[slot] = (static_cast<uint64_t>(high) << 32) | kept;
-    keptHashLow.push_back(static_cast<uint32_t>(h));
-    if (kept != t)
+  });
+  // The dropped triangles of all tables in file order; the rest moved down over them.
+  std::vector<uint32_t> drop;
+  for (const std::vector<uint32_t>& d : dropped) drop.insert(drop.end(), d.begin(), d.end());
+  if (drop.empty()) return 0;
+  std::sort(drop.begin(), drop.end());
+  drop.push_back(static_cast<uint32_t>(count));  // a sentinel
+  size_t kept = drop[0];
+  for (size_t d = 0; d + 1 < drop.size(); ++d)
+    for (size_t t = drop[d] + 1; t < drop[d + 1]; ++t, ++kept)
       for (int i = 0; i < 3; ++i) mesh.indices[3 * kept + i] = mesh.indices[3 * t + i];
-    ++kept;
-  }
-  const size_t removed = count - kept;
   mesh.indices.resize(3 * kept);
-  return removed;
+  return count - kept;
 }
 
 }  // namespace marble

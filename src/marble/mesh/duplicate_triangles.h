@@ -24,5 +24,8 @@ namespace marble {
 size_t removeDuplicateTriangles(Mesh& mesh);
 // The same with the vertices' points (pointIds(mesh.positions), point_ids.h) already found.
 size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& pointIds);
+// The same with the number of hash tables (one thread each) set: 0 = automatic (one per 100,000
+// triangles, up to the hardware threads and 4). The result does not depend on it (tests).
+size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& pointIds, unsigned tables);
 
 }  // namespace marble

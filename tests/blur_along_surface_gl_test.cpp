@@ -15,11 +15,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "box_mesh.h"
 #include "gl_support.h"
 #include "image_probe.h"
+#include "plate_and_wall.h"
 #include "principled_stone.h"
-#include "marble/mesh/vertex_normals.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -29,17 +28,9 @@ namespace {
 constexpr float kElevationDeg = 25.0f;
 constexpr float kWallX = -0.7f, kWall = 0.4f;
 
-// The plate's top at y = 0 and the wall on it, spanning [-1, 1] in x and z and centred in y, so the
-// renderer's normalization leaves them where they are (as GrazingShadow's plate).
-Mesh plateAndWall() {
-  Mesh m;
-  addBox(m, {-1.0f, -kWall, -1.0f}, {1.0f, 0.0f, 1.0f});
-  addBox(m, {kWallX - 0.1f, 0.0f, -1.0f}, {kWallX, kWall, 1.0f});
-  computeVertexNormals(m, 60.0f);  // flat faces
-  return m;
-}
+Mesh plateAndWall() { return test::plateAndWall(kWallX, kWall); }
 
-float shadowEnd() { return kWallX + kWall / std::tan(glm::radians(kElevationDeg)); }
+float shadowEnd() { return wallShadowEnd(kWallX, kWall, kElevationDeg); }
 
 // The camera `tiltDeg` off the plate's normal toward +x, 3 units from the shadow's end.
 Scene plateScene(float tiltDeg, float fovDeg) {

@@ -12,11 +12,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "box_mesh.h"
 #include "gl_support.h"
 #include "image_probe.h"
+#include "plate_and_wall.h"
 #include "principled_stone.h"
-#include "marble/mesh/vertex_normals.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -26,17 +25,9 @@ namespace {
 constexpr float kElevationDeg = 6.0f;
 constexpr float kWallX = -0.7f, kWall = 0.1f;
 
-// The plate's top at y = 0, the wall on it; spans [-1, 1] in x and z and is centred in y, so the
-// renderer's normalization (bounding box centred, largest extent 2) leaves it where it is.
-Mesh plateAndWall() {
-  Mesh m;
-  addBox(m, {-1.0f, -kWall, -1.0f}, {1.0f, 0.0f, 1.0f});
-  addBox(m, {kWallX - 0.1f, 0.0f, -1.0f}, {kWallX, kWall, 1.0f});
-  computeVertexNormals(m, 60.0f);  // flat faces
-  return m;
-}
+Mesh plateAndWall() { return test::plateAndWall(kWallX, kWall); }
 
-float shadowEnd() { return kWallX + kWall / std::tan(glm::radians(kElevationDeg)); }
+float shadowEnd() { return wallShadowEnd(kWallX, kWall, kElevationDeg); }
 
 Scene grazingScene() {
   Scene s;

@@ -28,9 +28,7 @@ namespace {
 constexpr float kElevationDeg = 25.0f;
 constexpr float kWallX = -0.7f, kWall = 0.4f;
 
-Mesh plateAndWall() { return test::plateAndWall(kWallX, kWall); }
-
-float shadowEnd() { return wallShadowEnd(kWallX, kWall, kElevationDeg); }
+const PlateAndWall kPlate{kWallX, kWall, kElevationDeg};
 
 // The camera `tiltDeg` off the plate's normal toward +x, 3 units from the shadow's end.
 Scene plateScene(float tiltDeg, float fovDeg) {
@@ -41,7 +39,7 @@ Scene plateScene(float tiltDeg, float fovDeg) {
   s.render.mode = RenderMode::Marble;
   s.render.environment = Environment::None;
   const float t = glm::radians(tiltDeg);
-  s.camera.target = {shadowEnd(), 0.0f, 0.0f};
+  s.camera.target = {kPlate.shadowEnd(), 0.0f, 0.0f};
   s.camera.position = s.camera.target + 3.0f * glm::vec3(std::sin(t), std::cos(t), 0.0f);
   s.camera.up = {0.0f, 0.0f, -1.0f};
   s.camera.fov_y_deg = fovDeg;
@@ -60,14 +58,14 @@ Scene plateScene(float tiltDeg, float fovDeg) {
 float edgeWidth(float tiltDeg, float fovDeg) {
   const Scene s = plateScene(tiltDeg, fovDeg);
   Renderer r;
-  r.setMesh(plateAndWall());
+  r.setMesh(kPlate.mesh());
   renderImage(r, s);
   const ImageRGBF img = r.readHdr();
   auto luma = [&](float x) { return glm::dot(linearRgbAround(img, s, {x, 0.0f, 0.0f}), glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
-  const float lit = luma(shadowEnd() + 0.3f), dark = luma(shadowEnd() - 0.3f);
+  const float lit = luma(kPlate.shadowEnd() + 0.3f), dark = luma(kPlate.shadowEnd() - 0.3f);
   EXPECT_GT(lit, 4.0f * dark) << "lit " << lit << ", shadowed " << dark;
   float a = NAN, b = NAN;
-  for (float x = shadowEnd() - 0.3f; x <= shadowEnd() + 0.3f; x += 0.002f) {
+  for (float x = kPlate.shadowEnd() - 0.3f; x <= kPlate.shadowEnd() + 0.3f; x += 0.002f) {
     const float f = (luma(x) - dark) / (lit - dark);
     if (std::isnan(a) && f >= 0.1f) a = x;
     if (std::isnan(b) && f >= 0.9f) b = x;

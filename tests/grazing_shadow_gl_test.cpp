@@ -25,9 +25,7 @@ namespace {
 constexpr float kElevationDeg = 6.0f;
 constexpr float kWallX = -0.7f, kWall = 0.1f;
 
-Mesh plateAndWall() { return test::plateAndWall(kWallX, kWall); }
-
-float shadowEnd() { return wallShadowEnd(kWallX, kWall, kElevationDeg); }
+const PlateAndWall kPlate{kWallX, kWall, kElevationDeg};
 
 Scene grazingScene() {
   Scene s;
@@ -36,8 +34,8 @@ Scene grazingScene() {
   s.render.width = s.render.height = 128;
   s.render.mode = RenderMode::Marble;
   s.render.environment = Environment::None;
-  s.camera.position = {shadowEnd(), 3.0f, 0.0f};
-  s.camera.target = {shadowEnd(), 0.0f, 0.0f};
+  s.camera.position = {kPlate.shadowEnd(), 3.0f, 0.0f};
+  s.camera.target = {kPlate.shadowEnd(), 0.0f, 0.0f};
   s.camera.up = {0.0f, 0.0f, -1.0f};
   s.camera.fov_y_deg = 20;
   s.light.type = LightType::Directional;
@@ -55,22 +53,22 @@ TEST(GrazingShadow, EndsWhereTheOccluderPutsIt) {
   (void)context;
   const Scene s = grazingScene();
   Renderer r;
-  r.setMesh(plateAndWall());
+  r.setMesh(kPlate.mesh());
   renderImage(r, s);
   const ImageRGBF img = r.readHdr();
   auto luma = [&](float x) { return glm::dot(linearRgbAround(img, s, {x, 0.0f, 0.0f}), glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
-  const float lit = luma(shadowEnd() + 0.3f), dark = luma(shadowEnd() - 0.3f);
+  const float lit = luma(kPlate.shadowEnd() + 0.3f), dark = luma(kPlate.shadowEnd() - 0.3f);
   ASSERT_GT(lit, 4.0f * dark) << "lit " << lit << ", shadowed " << dark;
   // Where the light crosses halfway between the two, scanned in 0.004-unit steps (half a pixel).
   float crossing = NAN;
-  for (float x = shadowEnd() - 0.25f; x <= shadowEnd() + 0.25f; x += 0.004f)
+  for (float x = kPlate.shadowEnd() - 0.25f; x <= kPlate.shadowEnd() + 0.25f; x += 0.004f)
     if (luma(x) >= 0.5f * (lit + dark)) {
       crossing = x;
       break;
     }
-  std::cout << "[          ] shadow ends at " << crossing << ", the occluder puts it at " << shadowEnd() << "\n";
+  std::cout << "[          ] shadow ends at " << crossing << ", the occluder puts it at " << kPlate.shadowEnd() << "\n";
   ASSERT_FALSE(std::isnan(crossing));
   // The filter's reach (the 4 taps' bilinear span, 2 texels of the 1024 map over 2 sqrt(3) units)
   // is 0.034 units along the plate at this slant; allowed 0.03 either way.
-  EXPECT_NEAR(crossing, shadowEnd(), 0.03f);
+  EXPECT_NEAR(crossing, kPlate.shadowEnd(), 0.03f);
 }

@@ -22,9 +22,11 @@ inline Mesh plateAndWall(float wallX, float height) {
   return m;
 }
 
-// Where the wall's shadow ends on the plate, the light coming from -x at `elevationDeg`.
-inline float wallShadowEnd(float wallX, float height, float elevationDeg) {
-  return wallX + height / std::tan(glm::radians(elevationDeg));
-}
+// One such scene lit from -x at `elevationDeg`: its mesh, and where the wall's shadow ends.
+struct PlateAndWall {
+  float wallX, height, elevationDeg;
+  Mesh mesh() const { return plateAndWall(wallX, height); }
+  float shadowEnd() const { return wallX + height / std::tan(glm::radians(elevationDeg)); }
+};
 
 }  // namespace marble::test

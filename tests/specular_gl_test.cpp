@@ -273,7 +273,7 @@ Mesh twoSpheres(const glm::vec3& centre, float radius) {
 
 // A highlight beside a depth edge inside the object keeps its power (specular_footprint_a2 with
 // footprint_axis_d2): the glint sphere's highlight (sub-pixel at 48^2) with a small sphere in
-// front whose silhouette passes within about a pixel of it, at three sub-pixel offsets. The
+// front whose silhouette passes within about a pixel of it, at five sub-pixel offsets. The
 // normal's change across the edge belongs to another surface; counted as this surface's spread
 // (the 2x2 quad's derivative, before session 16) it widened the pixels beside the edge to kappa
 // and erased the highlight where it fell there: the back-lit scans' silhouette glints, dragon-back's

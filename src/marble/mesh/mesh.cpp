@@ -171,10 +171,8 @@ double signedVolume(const Mesh& mesh) {
 
 namespace {
 
-// Drops exact duplicate triangles (mesh/duplicate_triangles.h) and says so once.
-void dropDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& points, const std::string& file,
-                            std::vector<std::string>* warnings) {
-  const size_t dropped = removeDuplicateTriangles(mesh, points);
+// Says once how many exact duplicate triangles were dropped (mesh/duplicate_triangles.h).
+void warnOfDroppedDuplicates(size_t dropped, const std::string& file, std::vector<std::string>* warnings) {
   if (dropped == 0) return;
   const std::string warning = file + ": dropped " + withThousands(dropped) +
                               " duplicate triangles (the same three corners as an earlier triangle, same winding)";
@@ -209,9 +207,13 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   // The points (equal positions) found once for both steps below. Duplicates are judged on the
   // positions that will be drawn (after normalization), as the normals' points are: two corners
   // that the scale rounds to one position are one point to both.
+  // Without file normals the normals' pass drops the duplicates as it goes (the same triangles,
+  // found point by point: vertex_normals.h).
   const std::vector<uint32_t> points = pointIds(mesh.positions);
-  dropDuplicateTriangles(mesh, points, file, options.warnings);
-  if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg, points);
+  const size_t dropped = mesh.normals.empty()
+                             ? removeDuplicatesAndComputeNormals(mesh, options.creaseAngleDeg, points)
+                             : removeDuplicateTriangles(mesh, points);
+  warnOfDroppedDuplicates(dropped, file, options.warnings);
   return mesh;
 }
 

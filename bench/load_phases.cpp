@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "marble/core/allocator_tuning.h"
+#include "marble/core/input_file.h"
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh.h"
 #include "marble/mesh/mesh_internal.h"
@@ -66,10 +67,11 @@ marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, f
     h = h1;
     ++phase;
   };
-  std::string data = md::readWholeFile(path, file);
+  marble::FileBytes bytes = marble::InputFile(path, file, "a mesh file").readLarge(UINT64_MAX, md::kMaxFileBytes);
+  const std::string_view data = bytes.view();
   lap();
   marble::Mesh mesh = ext == ".obj" ? md::loadObj(file, data) : ext == ".ply" ? md::loadPly(file, data) : md::loadStl(file, data);
-  { std::string().swap(data); }
+  bytes = {};
   lap();
   marble::applyUpAxis(mesh, up);
   marble::normalizeMesh(mesh, file);

@@ -228,7 +228,9 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   const std::string& file = in.label();
   // A binary STL's 84-byte header says how much of the file there is to read.
   const uint64_t bytes = ext == ".stl" ? stlBytesToRead(file, in.readPrefix(kStlProbeBytes), in.size()) : in.size();
-  std::string data = readMeshBytes(in, bytes);
+  // Read by threads into memory left unset (the file's emptiness was checked by loadMesh).
+  FileBytes bytesRead = in.readLarge(bytes, kMaxFileBytes);
+  const std::string_view data = bytesRead.view();
   Mesh mesh;
   if (ext == ".obj") {
     mesh = loadObj(file, data);
@@ -241,7 +243,7 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   } else {
     mesh = loadGlb(file, data, path.parent_path(), options.allowOutside);
   }
-  { std::string().swap(data); }  // free the file bytes before the heavier steps
+  bytesRead = {};  // free the file bytes before the heavier steps
   validateLoaded(mesh, file);
   applyUpAxis(mesh, options.up);
   // Normalizing first and computing normals second gives the same normals as the other order

@@ -83,9 +83,6 @@ TEST(MeshParseFloat, ShortDecimalsEqualFromChars) {
   EXPECT_GT(used, total / 3) << used << " of " << total;
 }
 
-// Negative control: multiplying by the reciprocal power of ten instead of dividing by the power
-// (both inexact for 10^-k) gives another float for some of the same decimals, and the comparison
-// sees it.
 // leadingDigits (the OBJ face indices' word-at-a-time digits) against a loop over the bytes: 2
 // million 8-byte strings of digits and the bytes beside them in ASCII ('/' and ':'), separators,
 // and bytes with the top bit set (0xB0-0xB9 are digits but for that bit), every digit count.
@@ -110,6 +107,9 @@ TEST(MeshParseDigits, LeadingDigitsEqualTheLoop) {
   }
 }
 
+// Negative control: multiplying by the reciprocal power of ten instead of dividing by the power
+// (both inexact for 10^-k) gives another float for some of the same decimals, and the comparison
+// sees it.
 TEST(MeshParseFloat, ComparisonNoticesAnInexactReading) {
   std::mt19937 rng(7);
   int differing = 0;

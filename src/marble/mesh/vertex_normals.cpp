@@ -131,8 +131,10 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
 // The fans of one point whose usable corners are list[0..k) (ascending), their normals, and its
 // vertices: the first fan each vertex meets (in corner order) keeps the vertex; every other
 // (vertex, fan) pair is a copy, made at its first corner.
+// `knownTo` and `knownFrom`, when given (k <= kSmallPoint), are each corner's next and previous
+// point, found by the caller already.
 void settleFans(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
-                 PointsOutput& out) {
+                PointsOutput& out, const uint32_t* knownTo = nullptr, const uint32_t* knownFrom = nullptr) {
   s.parent.resize(k);
   for (uint32_t i = 0; i < k; ++i) s.parent[i] = i;
   if (in.noCrease) {
@@ -152,13 +154,17 @@ void settleFans(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s,
     if (k <= kSmallPoint) {
       // The common case (a closed mesh has ~6 corners a point): each corner's forward edge
       // compared with every corner's two edges, without branches; a sort would cost more.
-      uint32_t to[kSmallPoint], from[kSmallPoint];
-      for (uint32_t i = 0; i < k; ++i) {
-        const Triangle& t = in.triangles[list[i] / 3];
-        const uint32_t slot = list[i] % 3;
-        to[i] = t.point[slot == 2 ? 0 : slot + 1];
-        from[i] = t.point[slot == 0 ? 2 : slot - 1];
+      uint32_t ownTo[kSmallPoint], ownFrom[kSmallPoint];
+      if (!knownTo) {
+        for (uint32_t i = 0; i < k; ++i) {
+          const Triangle& t = in.triangles[list[i] / 3];
+          const uint32_t slot = list[i] % 3;
+          ownTo[i] = t.point[slot == 2 ? 0 : slot + 1];
+          ownFrom[i] = t.point[slot == 0 ? 2 : slot - 1];
+        }
       }
+      const uint32_t* to = knownTo ? knownTo : ownTo;
+      const uint32_t* from = knownFrom ? knownFrom : ownFrom;
       for (uint32_t i = 0; i < k; ++i) {
         uint32_t forward = 0, incoming = 0, j = 0;
         for (uint32_t m = 0; m < k; ++m) {
@@ -285,25 +291,39 @@ void settleFans(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s,
 // first corner reports it.
 void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
                  PointsOutput& out) {
-  // Which corners take part: not a repeat (when duplicates are dropped) and with area.
-  s.takesPart.assign(k, 1);
-  if (in.dropDuplicates) {
-    auto neighbours = [&](uint32_t c) {  // (next point, previous point)
-      const Triangle& t = in.triangles[c / 3];
-      const uint32_t slot = c % 3;
-      return std::pair{t.point[slot == 2 ? 0 : slot + 1], t.point[slot == 0 ? 2 : slot - 1]};
-    };
-    if (k <= kSmallPoint) {
-      uint32_t to[kSmallPoint], from[kSmallPoint];
-      for (uint32_t i = 0; i < k; ++i) std::tie(to[i], from[i]) = neighbours(list[i]);
+  auto neighbours = [&](uint32_t c) {  // (next point, previous point)
+    const Triangle& t = in.triangles[c / 3];
+    const uint32_t slot = c % 3;
+    return std::pair{t.point[slot == 2 ? 0 : slot + 1], t.point[slot == 0 ? 2 : slot - 1]};
+  };
+  auto hasArea = [&](uint32_t c) { return in.triangles[c / 3].angle[0] != kNoArea; };
+  if (k <= kSmallPoint) {
+    // The common case: the neighbours found once, for the repeats here and the edges in settleFans;
+    // bit i of a mask for corner i.
+    uint32_t to[kSmallPoint], from[kSmallPoint];
+    for (uint32_t i = 0; i < k; ++i) std::tie(to[i], from[i]) = neighbours(list[i]);
+    uint32_t repeats = 0, arealess = 0;
+    if (in.dropDuplicates)
       for (uint32_t i = 1; i < k; ++i) {
         bool repeat = false;
         for (uint32_t m = 0; m < i; ++m) repeat |= to[m] == to[i] && from[m] == from[i];
-        s.takesPart[i] = !repeat;
+        repeats |= uint32_t{repeat} << i;
       }
-    } else {
-      // Many corners (a fan of thousands of triangles): the repeats found by sorting; the first of
-      // each key sorts first (the local index breaks ties).
+    for (uint32_t i = 0; i < k; ++i) arealess |= uint32_t{!hasArea(list[i])} << i;
+    if ((repeats | arealess) == 0) {
+      settleFans(in, list, k, s, normals, out, to, from);
+      return;
+    }
+    s.kept.clear();
+    for (uint32_t i = 0; i < k; ++i) {
+      if ((repeats >> i & 1) && list[i] % 3 == 0) out.duplicates.push_back(list[i] / 3);
+      if (((repeats | arealess) >> i & 1) == 0) s.kept.push_back(list[i]);
+    }
+  } else {
+    // Many corners (a fan of thousands of triangles): the repeats found by sorting; the first of
+    // each key sorts first (the local index breaks ties).
+    s.takesPart.assign(k, 1);
+    if (in.dropDuplicates) {
       s.triangleKeys.resize(k);
       for (uint32_t i = 0; i < k; ++i) {
         const auto [to, from] = neighbours(list[i]);
@@ -312,22 +332,22 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
       std::sort(s.triangleKeys.begin(), s.triangleKeys.end());
       for (uint32_t a = 1; a < k; ++a)
         if (s.triangleKeys[a].first == s.triangleKeys[a - 1].first) s.takesPart[s.triangleKeys[a].second] = 0;
+      for (uint32_t i = 0; i < k; ++i)
+        if (!s.takesPart[i] && list[i] % 3 == 0) out.duplicates.push_back(list[i] / 3);
     }
+    bool all = true;
+    for (uint32_t i = 0; i < k; ++i) {
+      s.takesPart[i] &= hasArea(list[i]) ? 1 : 0;
+      all &= s.takesPart[i] != 0;
+    }
+    if (all) {
+      settleFans(in, list, k, s, normals, out);
+      return;
+    }
+    s.kept.clear();
     for (uint32_t i = 0; i < k; ++i)
-      if (!s.takesPart[i] && list[i] % 3 == 0) out.duplicates.push_back(list[i] / 3);
+      if (s.takesPart[i]) s.kept.push_back(list[i]);
   }
-  bool all = true;
-  for (uint32_t i = 0; i < k; ++i) {
-    s.takesPart[i] &= in.triangles[list[i] / 3].angle[0] != kNoArea ? 1 : 0;
-    all &= s.takesPart[i] != 0;
-  }
-  if (all) {
-    settleFans(in, list, k, s, normals, out);
-    return;
-  }
-  s.kept.clear();
-  for (uint32_t i = 0; i < k; ++i)
-    if (s.takesPart[i]) s.kept.push_back(list[i]);
   if (!s.kept.empty()) settleFans(in, s.kept.data(), static_cast<uint32_t>(s.kept.size()), s, normals, out);
 }
 

@@ -3,7 +3,9 @@
 // usable corners filed under their points (a counting sort, stable: each point's list is in corner
 // order); then each point alone -- over threads, no locks -- finds its edges among its own corners'
 // neighbours, joins its corners into fans, sums each fan's normal and settles its vertices. Only
-// the copies of vertices that span several fans are numbered on one thread, afterwards.
+// the copies of vertices that span several fans are numbered on one thread, afterwards. In
+// loadMesh the same pass also finds the duplicate triangles, point by point (settlePoint), so the
+// separate hash-table check (duplicate_triangles.h) is not needed there.
 //
 // Why per point: a set of corners joined through smooth edges never crosses points (two corners
 // are joined only at a shared point), and every triangle that uses an edge {p, q} has a corner at p.

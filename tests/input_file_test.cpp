@@ -49,6 +49,25 @@ TEST_F(InputFileTest, ARegularFileIsReadWholeOrInPart) {
   }
 }
 
+TEST_F(InputFileTest, ReadLargeGivesTheBytesReadGives) {
+  // 40 MB of bytes that differ from place to place (so a range read at the wrong offset is seen):
+  // several ranges read by threads at once where there are cores; and the small file above, whole
+  // and in part; and the limit.
+  std::string big(40u << 20, '\0');
+  for (size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>((i * 2654435761u) >> 13);
+  std::ofstream(dir / "big.bin", std::ios::binary).write(big.data(), static_cast<std::streamsize>(big.size()));
+  InputFile f(dir / "big.bin", "big.bin");
+  const FileBytes whole = f.readLarge(f.size(), f.size());
+  EXPECT_TRUE(whole.view() == big);
+  EXPECT_TRUE(f.readLarge(UINT64_MAX, f.size()).view() == big);
+  EXPECT_TRUE(f.readLarge(20'000'001, f.size()).view() == std::string_view(big).substr(0, 20'000'001));
+  std::ofstream(dir / "a.obj") << "v 0 0 0\n";
+  InputFile small(dir / "a.obj", "a.obj");
+  EXPECT_EQ(small.readLarge(3, 8).view(), "v 0");
+  EXPECT_EQ(small.readLarge(100, 8).view(), "v 0 0 0\n");
+  EXPECT_THROW((void)small.readLarge(8, 7), InputError);
+}
+
 TEST_F(InputFileTest, AFifoIsRefusedAtOnceInsteadOfBlocking) {
   ASSERT_EQ(::mkfifo((dir / "pipe.obj").c_str(), 0644), 0);
   // Opening a FIFO for reading blocks until a writer comes; a hang here fails by the test's timeout.

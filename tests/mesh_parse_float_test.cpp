@@ -83,6 +83,30 @@ TEST(MeshParseFloat, ShortDecimalsEqualFromChars) {
   EXPECT_GT(used, total / 3) << used << " of " << total;
 }
 
+// leadingDigits (the OBJ face indices' word-at-a-time digits) against a loop over the bytes: 2
+// million 8-byte strings of digits and the bytes beside them in ASCII ('/' and ':'), separators,
+// and bytes with the top bit set (0xB0-0xB9 are digits but for that bit), every digit count.
+TEST(MeshParseDigits, LeadingDigitsEqualTheLoop) {
+  std::mt19937 rng(20);
+  const char others[] = {'/', ':', ' ', '\n', '\r', '\t', '-', '.', 'e', '\0', '\x7f', '\xb0', '\xb9', '\xff', '\xca'};
+  for (int trial = 0; trial < 2'000'000; ++trial) {
+    char bytes[8];
+    const int digitsFirst = static_cast<int>(rng() % 9);  // the length the loop should find
+    for (int i = 0; i < 8; ++i)
+      bytes[i] = i < digitsFirst || rng() % 3 == 0 ? static_cast<char>('0' + rng() % 10) : others[rng() % sizeof(others)];
+    int expectedCount = 0;
+    uint64_t expectedValue = 0;
+    while (expectedCount < 8 && bytes[expectedCount] >= '0' && bytes[expectedCount] <= '9')
+      expectedValue = expectedValue * 10 + static_cast<uint64_t>(bytes[expectedCount++] - '0');
+    uint64_t value = 12345;
+    const int count = mesh_detail::leadingDigits(bytes, value);
+    ASSERT_EQ(count, expectedCount) << std::string(bytes, 8);
+    if (count < 8) {
+      ASSERT_EQ(value, expectedValue) << std::string(bytes, 8);
+    }
+  }
+}
+
 // Negative control: multiplying by the reciprocal power of ten instead of dividing by the power
 // (both inexact for 10^-k) gives another float for some of the same decimals, and the comparison
 // sees it.

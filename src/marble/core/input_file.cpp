@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "marble/core/error.h"
+#include "marble/core/parallel_for.h"
 
 namespace marble {
 namespace {
@@ -49,6 +50,26 @@ std::string notRegular(mode_t mode, std::string_view kind) {
   return "is not a regular file";
 }
 
+// Reads bytes [offset, offset + count) of the file into `out`; `total` (the whole read's size)
+// for the message when the file ends first.
+void readRange(int fd, const std::string& label, char* out, uint64_t offset, size_t count, uint64_t total) {
+  size_t done = 0;
+  while (done < count) {
+    const ssize_t got = ::pread(fd, out + done, count - done, static_cast<off_t>(offset + done));
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw InputError(label, "byte " + std::to_string(offset + done), std::string("read error: ") + std::strerror(errno));
+    }
+    if (got == 0)
+      throw InputError(label, "", "the file shrank while it was read (" + withThousands(offset + done) + " of " +
+                                      withThousands(total) + " bytes)");
+    done += static_cast<size_t>(got);
+  }
+}
+
+// Below this many bytes per thread a read runs on one (a thread's start would cost more).
+constexpr size_t kBytesPerReadThread = 8u << 20;
+
 }  // namespace
 
 InputFile::InputFile(const std::filesystem::path& path, std::string label, std::string_view kind)
@@ -88,19 +109,19 @@ std::string InputFile::read(uint64_t n, uint64_t maxBytes) const {
     throw InputError(label_, "", "file is " + withThousands(size_) + " bytes; the limit is " + withThousands(maxBytes));
   if (n > size_) n = size_;
   std::string data(static_cast<size_t>(n), '\0');
-  size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t got = ::pread(fd_, data.data() + done, data.size() - done, static_cast<off_t>(done));
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      throw InputError(label_, "byte " + std::to_string(done), std::string("read error: ") + std::strerror(errno));
-    }
-    if (got == 0)
-      throw InputError(label_, "", "the file shrank while it was read (" + withThousands(done) + " of " +
-                                       withThousands(data.size()) + " bytes)");
-    done += static_cast<size_t>(got);
-  }
+  readRange(fd_, label_, data.data(), 0, data.size(), data.size());
   return data;
+}
+
+FileBytes InputFile::readLarge(uint64_t n, uint64_t maxBytes) const {
+  if (size_ > maxBytes)
+    throw InputError(label_, "", "file is " + withThousands(size_) + " bytes; the limit is " + withThousands(maxBytes));
+  if (n > size_) n = size_;
+  FileBytes bytes{std::make_unique_for_overwrite<char[]>(static_cast<size_t>(n)), static_cast<size_t>(n)};
+  parallelFor(bytes.size, kBytesPerReadThread, [&](size_t begin, size_t end) {
+    readRange(fd_, label_, bytes.data.get() + begin, begin, end - begin, bytes.size);
+  });
+  return bytes;
 }
 
 std::string readInputFile(const std::filesystem::path& path, const std::string& label, uint64_t maxBytes,

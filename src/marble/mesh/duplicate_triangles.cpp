@@ -57,8 +57,12 @@ size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point) 
 }
 
 size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point, unsigned tables) {
+  return removeTriangles(mesh, duplicateTriangles(mesh, point, tables));
+}
+
+std::vector<uint32_t> duplicateTriangles(const Mesh& mesh, const std::vector<uint32_t>& point, unsigned tables) {
   const size_t count = mesh.indices.size() / 3;
-  if (count < 2) return 0;
+  if (count < 2) return {};
   if (tables == 0) tables = workerThreadCount(count, 100000, 4);
   // A triangle's table: the hash's top bits (the slot within a table takes its low bits). All
   // triangles of one key meet in one table, and each table is filled in file order, so each key's
@@ -128,18 +132,25 @@ size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& point, 
       }
     }
   });
-  // The dropped triangles of all tables in file order; the rest moved down over them.
+  // The dropped triangles of all tables in file order.
   std::vector<uint32_t> drop;
   for (const std::vector<uint32_t>& d : dropped) drop.insert(drop.end(), d.begin(), d.end());
-  if (drop.empty()) return 0;
   std::sort(drop.begin(), drop.end());
-  drop.push_back(static_cast<uint32_t>(count));  // a sentinel
+  return drop;
+}
+
+size_t removeTriangles(Mesh& mesh, const std::vector<uint32_t>& drop) {
+  if (drop.empty()) return 0;
+  const size_t count = mesh.indices.size() / 3;
+  // The kept triangles between two dropped ones moved down over the dropped.
   size_t kept = drop[0];
-  for (size_t d = 0; d + 1 < drop.size(); ++d)
-    for (size_t t = drop[d] + 1; t < drop[d + 1]; ++t, ++kept)
+  for (size_t d = 0; d < drop.size(); ++d) {
+    const size_t next = d + 1 < drop.size() ? drop[d + 1] : count;
+    for (size_t t = drop[d] + 1; t < next; ++t, ++kept)
       for (int i = 0; i < 3; ++i) mesh.indices[3 * kept + i] = mesh.indices[3 * t + i];
+  }
   mesh.indices.resize(3 * kept);
-  return count - kept;
+  return drop.size();
 }
 
 }  // namespace marble

@@ -27,5 +27,10 @@ size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& pointId
 // The same with the number of hash tables (one thread each) set: 0 = automatic (one per 100,000
 // triangles, up to the hardware threads and 4). The result does not depend on it (tests).
 size_t removeDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& pointIds, unsigned tables);
+// The triangles removeDuplicateTriangles removes (their indices, ascending), the mesh untouched.
+std::vector<uint32_t> duplicateTriangles(const Mesh& mesh, const std::vector<uint32_t>& pointIds, unsigned tables = 0);
+// Removes the triangles listed (ascending, no repeats), keeping the order of the rest; returns
+// how many were removed.
+size_t removeTriangles(Mesh& mesh, const std::vector<uint32_t>& sortedTriangles);
 
 }  // namespace marble

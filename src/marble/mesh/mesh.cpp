@@ -13,6 +13,7 @@
 
 #include "marble/core/error.h"
 #include "marble/core/input_file.h"
+#include "marble/core/parallel_for.h"
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh_internal.h"
 #include "marble/mesh/point_ids.h"
@@ -85,6 +86,10 @@ std::string_view upAxisName(UpAxis axis) {
 
 namespace {
 
+// Below this many vertices (or indices) per thread the steps over all of them run on one: a
+// thread's start (≈ 20-50 µs) would cost more than it saves.
+constexpr size_t kPositionsPerThread = 100000;
+
 // Proper rotations (det +1) that take the named file axis to +Y.
 glm::vec3 rotateUp(glm::vec3 v, UpAxis up) {
   switch (up) {
@@ -100,18 +105,35 @@ glm::vec3 rotateUp(glm::vec3 v, UpAxis up) {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// The first i in [0, count) where `is(i)` holds, or `count`: over threads, each range's first, the least.
+template <class Predicate>
+size_t firstWhere(size_t count, Predicate is) {
+  std::vector<size_t> first(workerThreadCount(count, kPositionsPerThread), count);
+  parallelFor(first.size(), 1, [&](size_t a, size_t b) {
+    for (size_t r = a; r < b; ++r)
+      for (size_t i = count * r / first.size(), end = count * (r + 1) / first.size(); i < end; ++i)
+        if (is(i)) {
+          first[r] = i;
+          break;
+        }
+  });
+  return *std::min_element(first.begin(), first.end());
+}
+
 // Final checks on what a loader returned; fixes up optional attributes.
 void validateLoaded(Mesh& mesh, const std::string& file) {
   if (mesh.indices.empty())
     throw InputError(file, "", "no triangles: the file has " + withThousands(mesh.positions.size()) +
                                    " vertices but no faces");
   if (mesh.indices.size() % 3 != 0) throw InputError(file, "", "internal: index count is not a multiple of 3");
+  // Both checks over threads (a large mesh's 5 M indices); each names the first fault in order.
   const uint32_t n = static_cast<uint32_t>(mesh.positions.size());
-  for (uint32_t i : mesh.indices)
-    if (i >= n) throw InputError(file, "", "vertex index " + std::to_string(i) + " out of range");
-  for (size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!finite(mesh.positions[i]))
-      throw InputError(file, "vertex " + std::to_string(i), "coordinate is NaN or infinite");
+  const size_t outOfRange = firstWhere(mesh.indices.size(), [&](size_t i) { return mesh.indices[i] >= n; });
+  if (outOfRange < mesh.indices.size())
+    throw InputError(file, "", "vertex index " + std::to_string(mesh.indices[outOfRange]) + " out of range");
+  const size_t notFinite = firstWhere(mesh.positions.size(), [&](size_t i) { return !finite(mesh.positions[i]); });
+  if (notFinite < mesh.positions.size())
+    throw InputError(file, "vertex " + std::to_string(notFinite), "coordinate is NaN or infinite");
   if (!mesh.texcoords.empty() && mesh.texcoords.size() != mesh.positions.size()) mesh.texcoords.clear();
   if (mesh.normals.size() != mesh.positions.size()) {
     mesh.normals.clear();
@@ -133,18 +155,37 @@ void validateLoaded(Mesh& mesh, const std::string& file) {
 
 void applyUpAxis(Mesh& mesh, UpAxis up) {
   if (up == UpAxis::Y) return;
-  for (glm::vec3& p : mesh.positions) p = rotateUp(p, up);
-  for (glm::vec3& n : mesh.normals) n = rotateUp(n, up);
+  for (std::vector<glm::vec3>* v : {&mesh.positions, &mesh.normals})
+    parallelFor(v->size(), kPositionsPerThread, [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) (*v)[i] = rotateUp((*v)[i], up);
+    });
 }
 
 void normalizeMesh(Mesh& mesh) { normalizeMesh(mesh, "mesh"); }
 
 void normalizeMesh(Mesh& mesh, const std::string& source) {
   if (mesh.positions.empty()) throw InputError(source, "bounds", "mesh has no vertices");
-  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-  for (const glm::vec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+  // The bounds per range over threads, then the least and greatest of them (min and max are exact:
+  // the same bounds in any order).
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const unsigned ranges = workerThreadCount(mesh.positions.size(), kPositionsPerThread);
+  std::vector<glm::vec3> los(ranges, glm::vec3(kInf)), his(ranges, glm::vec3(-kInf));
+  parallelFor(ranges, 1, [&](size_t a, size_t b) {
+    for (size_t r = a; r < b; ++r) {
+      glm::vec3 lo(kInf), hi(-kInf);
+      const size_t n = mesh.positions.size();
+      for (size_t i = n * r / ranges, end = n * (r + 1) / ranges; i < end; ++i) {
+        lo = glm::min(lo, mesh.positions[i]);
+        hi = glm::max(hi, mesh.positions[i]);
+      }
+      los[r] = lo;
+      his[r] = hi;
+    }
+  });
+  glm::vec3 lo(kInf), hi(-kInf);
+  for (unsigned r = 0; r < ranges; ++r) {
+    lo = glm::min(lo, los[r]);
+    hi = glm::max(hi, his[r]);
   }
   if (!finite(lo) || !finite(hi)) throw InputError(source, "bounds", "coordinates are NaN or infinite");
   // Extents in double: hi - lo can overflow float for coordinates near FLT_MAX.
@@ -154,7 +195,9 @@ void normalizeMesh(Mesh& mesh, const std::string& source) {
   double scale = 2.0 / largest;
   if (!(largest > 0.0) || !std::isfinite(scale))
     throw InputError(source, "bounds", "all vertices are at the same point (zero extent); cannot normalize");
-  for (glm::vec3& p : mesh.positions) p = glm::vec3((glm::dvec3(p) - centre) * scale);
+  parallelFor(mesh.positions.size(), kPositionsPerThread, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) mesh.positions[i] = glm::vec3((glm::dvec3(mesh.positions[i]) - centre) * scale);
+  });
 }
 
 double signedVolume(const Mesh& mesh) {
@@ -171,10 +214,8 @@ double signedVolume(const Mesh& mesh) {
 
 namespace {
 
-// Drops exact duplicate triangles (mesh/duplicate_triangles.h) and says so once.
-void dropDuplicateTriangles(Mesh& mesh, const std::vector<uint32_t>& points, const std::string& file,
-                            std::vector<std::string>* warnings) {
-  const size_t dropped = removeDuplicateTriangles(mesh, points);
+// Says once how many exact duplicate triangles were dropped (mesh/duplicate_triangles.h).
+void warnOfDroppedDuplicates(size_t dropped, const std::string& file, std::vector<std::string>* warnings) {
   if (dropped == 0) return;
   const std::string warning = file + ": dropped " + withThousands(dropped) +
                               " duplicate triangles (the same three corners as an earlier triangle, same winding)";
@@ -187,7 +228,9 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   const std::string& file = in.label();
   // A binary STL's 84-byte header says how much of the file there is to read.
   const uint64_t bytes = ext == ".stl" ? stlBytesToRead(file, in.readPrefix(kStlProbeBytes), in.size()) : in.size();
-  std::string data = readMeshBytes(in, bytes);
+  // Read by threads into memory left unset (the file's emptiness was checked by loadMesh).
+  FileBytes bytesRead = in.readLarge(bytes, kMaxFileBytes);
+  const std::string_view data = bytesRead.view();
   Mesh mesh;
   if (ext == ".obj") {
     mesh = loadObj(file, data);
@@ -200,7 +243,7 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   } else {
     mesh = loadGlb(file, data, path.parent_path(), options.allowOutside);
   }
-  { std::string().swap(data); }  // free the file bytes before the heavier steps
+  bytesRead = {};  // free the file bytes before the heavier steps
   validateLoaded(mesh, file);
   applyUpAxis(mesh, options.up);
   // Normalizing first and computing normals second gives the same normals as the other order
@@ -209,9 +252,13 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   // The points (equal positions) found once for both steps below. Duplicates are judged on the
   // positions that will be drawn (after normalization), as the normals' points are: two corners
   // that the scale rounds to one position are one point to both.
+  // Without file normals the normals' pass drops the duplicates as it goes (the same triangles,
+  // found point by point: vertex_normals.h).
   const std::vector<uint32_t> points = pointIds(mesh.positions);
-  dropDuplicateTriangles(mesh, points, file, options.warnings);
-  if (mesh.normals.empty()) computeVertexNormals(mesh, options.creaseAngleDeg, points);
+  const size_t dropped = mesh.normals.empty()
+                             ? removeDuplicatesAndComputeNormals(mesh, options.creaseAngleDeg, points)
+                             : removeDuplicateTriangles(mesh, points);
+  warnOfDroppedDuplicates(dropped, file, options.warnings);
   return mesh;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // Shared pieces of the mesh loaders (not part of the public API; see mesh.h).
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -103,6 +104,33 @@ const char* parseShortDecimal(const char* p, const char* end, T& out) {
   const T value = static_cast<T>(m) / kPow10[fraction];
   out = negative ? -value : value;
   return q;
+}
+
+// The number of decimal digits at the start of the 8 bytes at p (0 to 8) and, when fewer than 8,
+// their value: all 8 bytes looked at in a few word operations instead of a loop per digit with a
+// branch and a multiply-add chain (the OBJ parse's face indices). A byte c is a digit exactly when
+// c ^ '0' is 0-9; the value comes from combining neighbouring digits, then pairs, then fours
+// (each lane's sum stays below its width, so no lane carries into the next). The caller makes
+// sure 8 bytes are there to read.
+inline int leadingDigits(const char* p, uint64_t& value) {
+  uint64_t chunk;
+  std::memcpy(&chunk, p, 8);
+  const uint64_t x = chunk ^ 0x3030303030303030ull;  // a digit's byte becomes 0-9 (byte 0 the first)
+  // A byte's top bit: set when x >= 0x80, or when x + 0x76 reaches 0x80 (x >= 10); x & 0x7F keeps
+  // the sum in the byte.
+  const uint64_t nonDigit = (x | ((x & 0x7F7F7F7F7F7F7F7Full) + 0x7676767676767676ull)) & 0x8080808080808080ull;
+  if (nonDigit == 0) return 8;
+  const int n = std::countr_zero(nonDigit) / 8;
+  if (n == 0) {
+    value = 0;
+    return 0;
+  }
+  uint64_t v = x << (8 * (8 - n));  // the n digits as the last of eight, zeros before them
+  v = (v * 10 + (v >> 8)) & 0x00FF00FF00FF00FFull;
+  v = (v * 100 + (v >> 16)) & 0x0000FFFF0000FFFFull;
+  v = (v * 10000 + (v >> 32)) & 0xFFFFFFFFull;
+  value = v;
+  return n;
 }
 
 // A forgiving float parser: optional leading '+', then the short decimal's exact path or

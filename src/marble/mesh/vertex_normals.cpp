@@ -3,7 +3,9 @@
 // usable corners filed under their points (a counting sort, stable: each point's list is in corner
 // order); then each point alone -- over threads, no locks -- finds its edges among its own corners'
 // neighbours, joins its corners into fans, sums each fan's normal and settles its vertices. Only
-// the copies of vertices that span several fans are numbered on one thread, afterwards.
+// the copies of vertices that span several fans are numbered on one thread, afterwards. In
+// loadMesh the same pass also finds the duplicate triangles, point by point (settlePoint), so the
+// separate hash-table check (duplicate_triangles.h) is not needed there.
 //
 // Why per point: a set of corners joined through smooth edges never crosses points (two corners
 // are joined only at a shared point), and every triangle that uses an edge {p, q} has a corner at p.
@@ -17,9 +19,12 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "marble/core/parallel_for.h"
 #include "marble/mesh/corner_angle.h"
+#include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/point_ids.h"
 
 namespace marble {
@@ -65,26 +70,39 @@ struct CopyUse {
   uint32_t madeAt;  // the Copy's corner
 };
 
-// What one thread's points leave for the serial step: the copies they make and the corners that
-// use them.
+// What one thread's points leave for the serial step: the copies they make, the corners that
+// use them, and the duplicate triangles found (each by the point of its first corner).
 struct PointsOutput {
   std::vector<Copy> copies;
   std::vector<CopyUse> uses;
+  std::vector<uint32_t> duplicates;
 };
 
 // What the passes after the first need of a usable triangle, in one record so that a corner costs
 // one cache miss, not four (its point, its neighbours' points, its vertex, normal and angle).
 struct Triangle {
-  uint32_t point[3];  // point[0] == kNone: the triangle takes no part (degenerate, out of range)
+  uint32_t point[3];  // point[0] == kNone: not filed (a repeated point, an index out of range)
   uint32_t vertex[3];
   glm::vec3 normal;
-  float angle[3];
+  float angle[3];  // angle[0] == kNoArea: filed for the duplicate check only (zero or non-finite area)
 };
+// A corner angle is atan2 of a positive length: in (0, pi]. A negative one marks a triangle that
+// adds nothing to the normals (main's "unusable": zero or non-finite area) but has three distinct
+// points, so it is still filed under them: the duplicate check by points sees every such triangle.
+constexpr float kNoArea = -1.0f;
+
+// Both cache lines a record may span (48 bytes at a 48-byte stride: half of them cross a 64-byte
+// line, and the point pass reads all of a record: points first, normal and angles after).
+void prefetchRecord(const Triangle* t) {
+  __builtin_prefetch(t);
+  __builtin_prefetch(reinterpret_cast<const char*>(t) + sizeof(Triangle) - 1);
+}
 
 struct Corners {
   const Triangle* triangles;
   float cosCrease;
   bool noCrease;
+  bool dropDuplicates;
   uint32_t point(uint32_t c) const { return triangles[c / 3].point[c % 3]; }
   uint32_t vertex(uint32_t c) const { return triangles[c / 3].vertex[c % 3]; }
   const glm::vec3& normal(uint32_t c) const { return triangles[c / 3].normal; }
@@ -99,6 +117,9 @@ struct Scratch {
   std::vector<uint32_t> fanOf;    // local index -> fan (local)
   std::vector<glm::vec3> fanSum;  // per local fan
   std::vector<uint64_t> vertexFan;  // (vertex << 32) | (local fan << 16) | local index
+  std::vector<uint8_t> takesPart;   // per local index: neither a duplicate triangle's nor arealess
+  std::vector<uint32_t> kept;       // the point's corners that take part, when some do not
+  std::vector<std::pair<uint64_t, uint32_t>> triangleKeys;  // (next point, previous point), local index
 };
 
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
@@ -112,8 +133,10 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
 // The fans of one point whose usable corners are list[0..k) (ascending), their normals, and its
 // vertices: the first fan each vertex meets (in corner order) keeps the vertex; every other
 // (vertex, fan) pair is a copy, made at its first corner.
-void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
-                 PointsOutput& out) {
+// `knownTo` and `knownFrom`, when given (k <= kSmallPoint), are each corner's next and previous
+// point, found by the caller already.
+void settleFans(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
+                PointsOutput& out, const uint32_t* knownTo = nullptr, const uint32_t* knownFrom = nullptr) {
   s.parent.resize(k);
   for (uint32_t i = 0; i < k; ++i) s.parent[i] = i;
   if (in.noCrease) {
@@ -133,13 +156,17 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
     if (k <= kSmallPoint) {
       // The common case (a closed mesh has ~6 corners a point): each corner's forward edge
       // compared with every corner's two edges, without branches; a sort would cost more.
-      uint32_t to[kSmallPoint], from[kSmallPoint];
-      for (uint32_t i = 0; i < k; ++i) {
-        const Triangle& t = in.triangles[list[i] / 3];
-        const uint32_t slot = list[i] % 3;
-        to[i] = t.point[slot == 2 ? 0 : slot + 1];
-        from[i] = t.point[slot == 0 ? 2 : slot - 1];
+      uint32_t ownTo[kSmallPoint], ownFrom[kSmallPoint];
+      if (!knownTo) {
+        for (uint32_t i = 0; i < k; ++i) {
+          const Triangle& t = in.triangles[list[i] / 3];
+          const uint32_t slot = list[i] % 3;
+          ownTo[i] = t.point[slot == 2 ? 0 : slot + 1];
+          ownFrom[i] = t.point[slot == 0 ? 2 : slot - 1];
+        }
       }
+      const uint32_t* to = knownTo ? knownTo : ownTo;
+      const uint32_t* from = knownFrom ? knownFrom : ownFrom;
       for (uint32_t i = 0; i < k; ++i) {
         uint32_t forward = 0, incoming = 0, j = 0;
         for (uint32_t m = 0; m < k; ++m) {
@@ -253,13 +280,80 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
   }
 }
 
-}  // namespace
-
-void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
-  computeVertexNormals(mesh, creaseAngleDeg, pointIds(mesh.positions));
+// One point whose filed corners are list[0..k) (ascending): drops the corners of duplicate
+// triangles (when asked) and of triangles without area, then settles the rest (settleFans).
+//
+// The duplicate check, point by point: two triangles with three distinct points are the same
+// triangle (duplicate_triangles.h: the same points in the same cyclic order) exactly when, at a
+// point p they share, both go on to the same next point and come from the same previous one. Both
+// have a corner at each of their three points, so every one of the three sees the pair in its own
+// list, and each finds the same answer alone: a corner is dropped when an earlier corner of the
+// list (an earlier triangle: each triangle has one corner here) has the same two neighbours. The
+// first of each key is kept, as removeDuplicateTriangles keeps it; the point of a triangle's
+// first corner reports it.
+void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s, std::vector<glm::vec3>& normals,
+                 PointsOutput& out) {
+  auto neighbours = [&](uint32_t c) {  // (next point, previous point)
+    const Triangle& t = in.triangles[c / 3];
+    const uint32_t slot = c % 3;
+    return std::pair{t.point[slot == 2 ? 0 : slot + 1], t.point[slot == 0 ? 2 : slot - 1]};
+  };
+  auto hasArea = [&](uint32_t c) { return in.triangles[c / 3].angle[0] != kNoArea; };
+  if (k <= kSmallPoint) {
+    // The common case: the neighbours found once, for the repeats here and the edges in settleFans;
+    // bit i of a mask for corner i.
+    uint32_t to[kSmallPoint], from[kSmallPoint];
+    for (uint32_t i = 0; i < k; ++i) std::tie(to[i], from[i]) = neighbours(list[i]);
+    uint32_t repeats = 0, arealess = 0;
+    if (in.dropDuplicates)
+      for (uint32_t i = 1; i < k; ++i) {
+        bool repeat = false;
+        for (uint32_t m = 0; m < i; ++m) repeat |= to[m] == to[i] && from[m] == from[i];
+        repeats |= uint32_t{repeat} << i;
+      }
+    for (uint32_t i = 0; i < k; ++i) arealess |= uint32_t{!hasArea(list[i])} << i;
+    if ((repeats | arealess) == 0) {
+      settleFans(in, list, k, s, normals, out, to, from);
+      return;
+    }
+    s.kept.clear();
+    for (uint32_t i = 0; i < k; ++i) {
+      if ((repeats >> i & 1) && list[i] % 3 == 0) out.duplicates.push_back(list[i] / 3);
+      if (((repeats | arealess) >> i & 1) == 0) s.kept.push_back(list[i]);
+    }
+  } else {
+    // Many corners (a fan of thousands of triangles): the repeats found by sorting; the first of
+    // each key sorts first (the local index breaks ties).
+    s.takesPart.assign(k, 1);
+    if (in.dropDuplicates) {
+      s.triangleKeys.resize(k);
+      for (uint32_t i = 0; i < k; ++i) {
+        const auto [to, from] = neighbours(list[i]);
+        s.triangleKeys[i] = {(uint64_t{to} << 32) | from, i};
+      }
+      std::sort(s.triangleKeys.begin(), s.triangleKeys.end());
+      for (uint32_t a = 1; a < k; ++a)
+        if (s.triangleKeys[a].first == s.triangleKeys[a - 1].first) s.takesPart[s.triangleKeys[a].second] = 0;
+      for (uint32_t i = 0; i < k; ++i)
+        if (!s.takesPart[i] && list[i] % 3 == 0) out.duplicates.push_back(list[i] / 3);
+    }
+    bool all = true;
+    for (uint32_t i = 0; i < k; ++i) {
+      s.takesPart[i] &= hasArea(list[i]) ? 1 : 0;
+      all &= s.takesPart[i] != 0;
+    }
+    if (all) {
+      settleFans(in, list, k, s, normals, out);
+      return;
+    }
+    s.kept.clear();
+    for (uint32_t i = 0; i < k; ++i)
+      if (s.takesPart[i]) s.kept.push_back(list[i]);
+  }
+  if (!s.kept.empty()) settleFans(in, s.kept.data(), static_cast<uint32_t>(s.kept.size()), s, normals, out);
 }
 
-void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
+size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point, bool dropDuplicates) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
   const size_t triangles = corners / 3;
@@ -274,13 +368,15 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   };
 
   // Pass 1, per triangle: its record (unit normal, each corner's angle, point and vertex; point[0] =
-  // kNone for degenerate or out-of-range triangles, which take no part); per thread, the usable
-  // corners counted by point.
+  // kNone for a triangle with a repeated point or an index out of range, which is not filed;
+  // angle[0] = kNoArea for one without area, filed for the duplicate check only); per thread, the
+  // filed corners counted by point, and the triangles not filed (the duplicate check sees them
+  // apart).
   // Fresh arrays of this size are left unset (make_unique_for_overwrite) where every element the
   // later passes read is written first: zeroing 77 MB (1.6 M triangles) on the calling thread
   // faulted in every page there, before the threads wrote them again.
   const std::unique_ptr<Triangle[]> triangle = std::make_unique_for_overwrite<Triangle[]>(triangles);
-  std::vector<std::vector<uint32_t>> count(threads);
+  std::vector<std::vector<uint32_t>> count(threads), notFiled(threads);
   constexpr size_t kAhead = 8;
   onEachThread([&](unsigned thread) {
     std::vector<uint32_t>& n = count[thread];
@@ -299,22 +395,31 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
       Triangle& out = triangle[t];
       out.point[0] = kNone;
       const uint32_t* v = &mesh.indices[3 * t];
-      if (v[0] >= nv || v[1] >= nv || v[2] >= nv) continue;
+      if (v[0] >= nv || v[1] >= nv || v[2] >= nv) {
+        if (dropDuplicates) notFiled[thread].push_back(static_cast<uint32_t>(t));
+        continue;
+      }
       const uint32_t q[3] = {point[v[0]], point[v[1]], point[v[2]]};
-      if (q[0] == q[1] || q[1] == q[2] || q[0] == q[2]) continue;
+      if (q[0] == q[1] || q[1] == q[2] || q[0] == q[2]) {
+        if (dropDuplicates) notFiled[thread].push_back(static_cast<uint32_t>(t));
+        continue;
+      }
       const glm::dvec3 p[3] = {glm::dvec3(mesh.positions[v[0]]), glm::dvec3(mesh.positions[v[1]]),
                                glm::dvec3(mesh.positions[v[2]])};
       const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
       const double len = glm::length(normal);
-      if (!(len > 0.0) || !std::isfinite(len)) continue;
-      out.normal = glm::vec3(normal / len);
+      const bool hasArea = len > 0.0 && std::isfinite(len);
+      if (!hasArea && !dropDuplicates) continue;
+      if (hasArea) out.normal = glm::vec3(normal / len);
       for (int k = 0; k < 3; ++k) {
         // |e1 x e2| is twice the area at every corner: the face's `len` (equal up to rounding).
-        out.angle[k] = static_cast<float>(atan2OfLength(len, glm::dot(p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k])));
+        if (hasArea)
+          out.angle[k] = static_cast<float>(atan2OfLength(len, glm::dot(p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k])));
         out.point[k] = q[k];
         out.vertex[k] = v[k];
         ++n[q[k]];
       }
+      if (!hasArea) out.angle[0] = kNoArea;
     }
   });
 
@@ -352,7 +457,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
   std::vector<PointsOutput> outputs(threads);
   const Corners in{triangle.get(),
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
-                   creaseAngleDeg >= kNoCreaseDeg};
+                   creaseAngleDeg >= kNoCreaseDeg, dropDuplicates};
   std::atomic<size_t> nextBlock{0};
   onEachThread([&](unsigned thread) {
     Scratch scratch;
@@ -362,7 +467,7 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
         // scattered over the 77 MB of records (one miss each, most of this pass's time).
         if (p + 2 < end)
           for (uint32_t i = pointStart[p + 2], e = pointStart[p + 3]; i < e && i < pointStart[p + 2] + kSmallPoint; ++i)
-            __builtin_prefetch(&triangle[byPoint[i] / 3]);
+            prefetchRecord(&triangle[byPoint[i] / 3]);
         const uint32_t k = pointStart[p + 1] - pointStart[p];
         if (k != 0) settlePoint(in, byPoint.get() + pointStart[p], k, scratch, normals, outputs[thread]);
       }
@@ -393,6 +498,37 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<ui
     mesh.indices[use.corner] = mesh.indices[made->corner];
   }
   mesh.normals = std::move(normals);
+  if (!dropDuplicates) return 0;
+
+  // The duplicates: those the points found, and among the triangles not filed (a repeated point
+  // or an index out of range: rare) those removeDuplicateTriangles finds. Their keys hold a
+  // repeated point or an index out of range, so they never equal a filed triangle's key.
+  std::vector<uint32_t> duplicates;
+  for (const PointsOutput& o : outputs) duplicates.insert(duplicates.end(), o.duplicates.begin(), o.duplicates.end());
+  Mesh unfiled;
+  std::vector<uint32_t> unfiledAt;  // their triangle numbers, ascending
+  for (const std::vector<uint32_t>& list : notFiled)
+    for (const uint32_t t : list) {
+      unfiledAt.push_back(t);
+      unfiled.indices.insert(unfiled.indices.end(), {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
+    }
+  for (const uint32_t u : duplicateTriangles(unfiled, point, 1)) duplicates.push_back(unfiledAt[u]);
+  std::sort(duplicates.begin(), duplicates.end());
+  return removeTriangles(mesh, duplicates);
+}
+
+}  // namespace
+
+void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
+  computeVertexNormals(mesh, creaseAngleDeg, pointIds(mesh.positions));
+}
+
+void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
+  computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/false);
+}
+
+size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
+  return computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/true);
 }
 
 }  // namespace marble

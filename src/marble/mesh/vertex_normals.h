@@ -3,6 +3,7 @@
 // the angle of its corner at the vertex (Thürmer & Wüthrich 1998; Blender's mesh_normals.cc), and
 // hard edges split where the two faces' normals are more than a crease angle apart (Blender's
 // "Auto Smooth" angle).
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,5 +27,12 @@ namespace marble {
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg);
 // The same with the vertices' points (pointIds(mesh.positions), point_ids.h) already found.
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& pointIds);
+// removeDuplicateTriangles (duplicate_triangles.h) and then computeVertexNormals, in one: the same
+// mesh bit for bit, and the count removeDuplicateTriangles returns. The normals' point pass meets
+// each point's triangles anyway; there two triangles with three distinct points are the same
+// exactly when they share the two neighbours of the point, so the separate check's hash table
+// (and its second look at every corner's point) is spared. loadMesh's path when a file has no
+// normals.
+size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& pointIds);
 
 }  // namespace marble

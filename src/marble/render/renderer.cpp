@@ -472,6 +472,8 @@ PassTimes Renderer::passTimes(bool wait) {
   return times_;
 }
 
+int Renderer::bounceRefinedTexels() const { return passes_->bounce.refinedTexelCount(); }
+
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +

@@ -97,6 +97,3 @@ vec4 bounce_bilateral(sampler2D grid, int scale, vec3 P, vec3 N, ivec2 px) {
   return bounce_bilateral_in(grid, BounceGrid(scale, textureSize(grid, 0) - 1, ivec2(0), false), P, N, px);
 }
 
-// The size of the bounce pass's grid whose texel i stands for full-resolution pixel i * scale:
-// every pixel has one (rounded up; BouncePass::resize makes its textures so).
-ivec2 bounce_grid_size(int scale) { return (textureSize(u_depth, 0) + scale - 1) / scale; }

@@ -4,10 +4,10 @@
 // is refined where the coarse first bounce cannot be trusted there: where the bilateral upsample's
 // weights (bounce_bilateral.glsl) of the coarse samples around its pixel sum to less than
 // BOUNCE_REFINE_BELOW, i.e. where they do not continue its surface (creases' folds, silhouettes,
-// thin parts). Measured (docs/quality.md, "Sixteenth session: the first bounce refined where the
-// coarse grid fails"): refining there gains 0.0050 of the 0.0059 mean SSIM that refining
-// everywhere gains over the ten reference scenes (thresholds 0.3 / 0.5 / 0.7: 0.0039 / 0.0050 /
-// 0.0056), on ~25 % of the dragon's texels.
+// thin parts). Measured against Cycles over the ten reference scenes (docs/quality.md, "Seventeenth
+// session: the first bounce refined by a list"): mean SSIM 0.8858 without the refinement, 0.8895 /
+// 0.8902 / 0.8905 refining below 0.35 / 0.4 / 0.5; 0.4 is kept for the dragon's camera frame's cost
+// (docs/performance.md: the gather over the list is most of it, and follows the texels refined).
 // One invocation per coarse texel (i, j): it tests the three refined texels 2(i, j) + (1, 0),
 // (0, 1), (1, 1) (texel 2(i, j) is the coarse sample itself, weight 1), reading the four coarse
 // samples' surfaces once for all three, appends the ones that fail to the list
@@ -25,16 +25,26 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // the coarse first bounce (a < 0: none)
 layout(binding = IMAGE_BOUNCE_REFINED, rgba16f) uniform writeonly image2D u_refined;
-uniform int u_scale;  // full-resolution pixels per coarse texel
+uniform ivec2 u_cell_origin;  // the first coarse texel of the object's rectangle (the dispatch covers the rest)
 
-const float BOUNCE_REFINE_BELOW = 0.5;
+const float BOUNCE_REFINE_BELOW = 0.4;
 
 void main() {
-  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
-  BounceGrid coarse = bounce_coarse_grid(u_scale), fine = bounce_refined_grid(u_scale);
+  ivec2 cell = u_cell_origin + ivec2(gl_GlobalInvocationID.xy);
+  BounceGrid coarse = bounce_coarse_grid(), fine = bounce_refined_grid();
   if (any(greaterThan(cell, coarse.last))) return;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
   ivec2 size = textureSize(u_depth, 0);
+  // The three texels' depths first: most cells of the rectangle around the object see no surface.
+  float depth[3];
+  bool anySurface = false;
+  for (int o = 1; o < 4; ++o) {
+    ivec2 fi = 2 * cell + ivec2(o & 1, o >> 1), px = fi * fine.scale;
+    bool inside = all(lessThanEqual(fi, fine.last)) && all(lessThan(px, size));
+    depth[o - 1] = inside ? texelFetch(u_depth, px, 0).r : 1.0;
+    anySurface = anySurface || depth[o - 1] < 1.0;
+  }
+  if (!anySurface) return;
   // The four coarse samples around, k = x + 2y, clamped to the grid as the upsample clamps them.
   bool present[4];
   vec3 Ps[4], Ns[4];
@@ -42,19 +52,17 @@ void main() {
   for (int k = 0; k < 4; ++k) {
     ivec2 ic = min(cell + ivec2(k & 1, k >> 1), coarse.last);
     present[k] = texelFetch(u_bounce, ic, 0).a >= 0.0;
-    ps[k] = ic * u_scale;
+    ps[k] = ic * coarse.scale;
     Ps[k] = bounce_point(ps[k], fullSize);
     Ns[k] = bounce_normal(ps[k]);
   }
   bool anyRefined = false;
   for (int o = 1; o < 4; ++o) {
+    if (depth[o - 1] >= 1.0) continue;  // the background, or outside the frame: nothing to gather
     ivec2 off = ivec2(o & 1, o >> 1);
     ivec2 fi = 2 * cell + off;
     ivec2 px = fi * fine.scale;
-    if (any(greaterThan(fi, fine.last)) || any(greaterThanEqual(px, size))) continue;
-    float depth = texelFetch(u_depth, px, 0).r;
-    if (depth >= 1.0) continue;  // the background: nothing to gather
-    vec3 P = surface_point((vec2(px) + 0.5) / fullSize, depth);
+    vec3 P = surface_point((vec2(px) + 0.5) / fullSize, depth[o - 1]);
     vec3 N = bounce_normal(px);
     float reach = bounce_reach(P, N, px, fullSize);
     // Bilinear weights at the texel's pixel: halfway along the offset's axes, 0 across the others.
@@ -72,5 +80,6 @@ void main() {
       anyRefined = true;
     }
   }
-  imageStore(u_refined, fine.origin + 2 * cell, vec4(0.0, 0.0, 0.0, anyRefined ? 0.0 : -1.0));
+  // The flag (bounce_refined_grid.glsl); BouncePass cleared the rest to -1.
+  if (anyRefined) imageStore(u_refined, fine.origin + 2 * cell, vec4(0.0));
 }

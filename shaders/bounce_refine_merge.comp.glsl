@@ -19,14 +19,13 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_refined_first;    // the gather's
 layout(binding = UNIT_LIGHTING_BOUNCE_FURTHER) uniform sampler2D u_further;  // the further bounces
 layout(binding = IMAGE_BOUNCE_REFINED, rgba16f) uniform writeonly image2D u_refined;
-uniform int u_scale;          // full-resolution pixels per coarse texel (the refined grid: half)
-uniform int u_further_scale;  // and per texel of the further bounces' grid
+uniform int u_further_scale;  // full-resolution pixels per texel of the further bounces' grid
 
 void main() {
   uint k = gl_GlobalInvocationID.x;
   if (k >= count) return;
   ivec2 t = bounce_refine_texel(k);
-  BounceGrid fine = bounce_refined_grid(u_scale);
+  BounceGrid fine = bounce_refined_grid();
   ivec2 px = t * fine.scale;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
   vec3 P = surface_point((vec2(px) + 0.5) / fullSize, texelFetch(u_depth, px, 0).r);

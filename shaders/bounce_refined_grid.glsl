@@ -8,9 +8,13 @@
 // one read tells the upsample which grid a lighting texel takes.
 // Needs from the includer: bounce_bilateral.glsl.
 
-BounceGrid bounce_coarse_grid(int scale) { return BounceGrid(scale, bounce_grid_size(scale) - 1, ivec2(0), false); }
+// The layout, from BouncePass (setBounceGridUniforms): the coarse grid's scale and both grids' sizes.
+uniform int u_bounce_scale;          // full-resolution pixels per texel of the coarse grid
+uniform ivec2 u_bounce_coarse_size;  // its texels
+uniform ivec2 u_bounce_fine_size;    // the refined grid's texels (at half the scale)
 
-BounceGrid bounce_refined_grid(int coarseScale) {
-  int scale = coarseScale / 2;
-  return BounceGrid(scale, bounce_grid_size(scale) - 1, ivec2(bounce_grid_size(coarseScale).x, 0), true);
+BounceGrid bounce_coarse_grid() { return BounceGrid(u_bounce_scale, u_bounce_coarse_size - 1, ivec2(0), false); }
+
+BounceGrid bounce_refined_grid() {
+  return BounceGrid(u_bounce_scale / 2, u_bounce_fine_size - 1, ivec2(u_bounce_coarse_size.x, 0), true);
 }

@@ -20,7 +20,6 @@
 #include "bounce_refined_grid.glsl"
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // both grids (bounce_refined_grid.glsl)
-uniform int u_bounce_scale;  // full-resolution pixels per texel of the bounce pass's coarse grid
 uniform float u_ior;         // the emitters' Fresnel F0 (the mirrored part's Fresnel factor)
 
 // Irradiance / PI that all bounces bring to the surface at full-resolution pixel px (point P,
@@ -31,9 +30,9 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   // refined grid where its texel at or just before px (the first of the four the upsample reads)
   // was refined or, for a coarse sample's own texel, has a refined neighbour; from the coarse grid
   // elsewhere, exactly as before the refinement. One upsample either way, its grid chosen per texel.
-  BounceGrid fine = bounce_refined_grid(u_bounce_scale);
+  BounceGrid fine = bounce_refined_grid();
   bool refined = texelFetch(u_bounce, fine.origin + min(px / fine.scale, fine.last), 0).a >= 0.0;
-  vec4 b = bounce_bilateral_in(u_bounce, refined ? fine : bounce_coarse_grid(u_bounce_scale), P, N, px);
+  vec4 b = bounce_bilateral_in(u_bounce, refined ? fine : bounce_coarse_grid(), P, N, px);
   float F0 = f0_from_ior(u_ior).x;
   // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected
   // light, but returned with the light entering the stone, which the post pass multiplies by the

@@ -20,6 +20,12 @@ constexpr float kNone[4] = {0, 0, 0, -1};
 constexpr int kEntryLevel = 1;
 }  // namespace
 
+void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& grid) {
+  program.set("u_bounce_scale", grid.scale);
+  glProgramUniform2i(program.id(), program.location("u_bounce_coarse_size"), grid.coarseSize.x, grid.coarseSize.y);
+  glProgramUniform2i(program.id(), program.location("u_bounce_fine_size"), grid.fineSize.x, grid.fineSize.y);
+}
+
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
@@ -87,10 +93,7 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   mergeProgram_.set("u_further_scale", 2 * scale_);
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
-  // The refined grid, after the coarse one's clear (which may cover the whole texture): its texels
-  // not gathered read -1 (the even ones' flags: markRefined).
-  glClearTexSubImage(bounce_.id(), 0, width_, 0, 0, fineWidth_, fineHeight_, 1, GL_RGBA, GL_FLOAT, kNone);
-  markRefined(camera, lightM, light, lightTexelWorld);
+  markRefined(camera, lightM, light, lightTexelWorld, rect);
   if (gather) gatherRefined(camera, lightM, light, lightTexelWorld);
   mergeRefined(camera, lightM, light, material, lightTexelWorld);
   timer_.end();
@@ -98,17 +101,28 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
 
 // The list's header: no texel yet, and the gather's dispatch of {0, 1, 1} workgroups.
 void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
-                             float lightTexelWorld) {
+                             float lightTexelWorld, const ScreenRect& rect) {
+  // The refined grid's texels read -1 (not gathered; the even ones' flags: none refined) where the
+  // lighting pass can read them: the object's rectangle and the upsample's one texel beyond it.
+  // This runs after the coarse grid's clear, which may cover the whole texture.
+  const ScreenRect cells = scaledDown(rect, scale_);
+  const int fx0 = std::max(2 * cells.x - 1, 0), fy0 = std::max(2 * cells.y - 1, 0);
+  const int fx1 = std::min(2 * (cells.x + cells.width) + 1, fineWidth_), fy1 = std::min(2 * (cells.y + cells.height) + 1, fineHeight_);
+  if (fx1 > fx0 && fy1 > fy0)
+    glClearTexSubImage(bounce_.id(), 0, width_ + fx0, fy0, 0, fx1 - fx0, fy1 - fy0, 1, GL_RGBA, GL_FLOAT, kNone);
   constexpr GLuint kEmptyList[4] = {0, 1, 1, 0};
   glNamedBufferSubData(refineList_.id(), 0, sizeof(kEmptyList), kEmptyList);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader::BUFFER_BOUNCE_REFINE_LIST, refineList_.id());
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
   glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   setFrameUniforms(markProgram_, camera, lightM, light, lightTexelWorld);
-  markProgram_.set("u_scale", scale_);
+  setBounceGridUniforms(markProgram_, gridLayout());
+  glProgramUniform2i(markProgram_.id(), markProgram_.location("u_cell_origin"), cells.x, cells.y);
   glUseProgram(markProgram_.id());
   const int groups = shader::BOUNCE_MARK_GROUP;
-  glDispatchCompute(static_cast<GLuint>((width_ + groups - 1) / groups), static_cast<GLuint>((height_ + groups - 1) / groups), 1);
+  if (!cells.empty())
+    glDispatchCompute(static_cast<GLuint>((cells.width + groups - 1) / groups),
+                      static_cast<GLuint>((cells.height + groups - 1) / groups), 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
@@ -130,7 +144,7 @@ void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices&
   glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   setFrameUniforms(refineMergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(refineMergeProgram_, material);
-  refineMergeProgram_.set("u_scale", scale_);
+  setBounceGridUniforms(refineMergeProgram_, gridLayout());
   refineMergeProgram_.set("u_further_scale", 2 * scale_);
   glUseProgram(refineMergeProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());

@@ -30,6 +30,14 @@
 
 namespace marble {
 
+// Where the pass's output holds its two grids (shaders/bounce_refined_grid.glsl), for the programs
+// that read it: the coarse grid's full-resolution pixels per texel and texels, the refined grid's texels.
+struct BounceGridLayout {
+  int scale = 0;
+  glm::ivec2 coarseSize{0}, fineSize{0};
+};
+void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& grid);
+
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
   int bounceMapSize;                                   // the reflective shadow map's finest width
@@ -55,6 +63,7 @@ public:
   // The light's map was redrawn: the entry draw must run again at the next run().
   void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
+  BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
   // RGBA16F: the first bounce on this grid, the further bounces' grid, all bounces on this grid
   // and the refined one beside it, the refined first bounce, the entries' grid; the refined list.
   size_t bytes() const {
@@ -74,7 +83,8 @@ private:
                      const Material& material, float lightTexelWorld, int mapSize);
   // The refinement's three steps: mark (every run: it also writes the refined grid's flags), gather
   // (with the coarse gather), merge (with the coarse merge).
-  void markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld);
+  void markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld,
+                   const ScreenRect& rect);
   void gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld);
   void mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, const Material& material,
                     float lightTexelWorld);

@@ -93,13 +93,14 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   mergeProgram_.set("u_further_scale", 2 * scale_);
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
+  // The refinement: marked again on every run (the coarse clear above may have cleared its flags),
+  // gathered with the coarse gather, merged with the coarse merge.
   markRefined(camera, lightM, light, lightTexelWorld, rect);
   if (gather) gatherRefined(camera, lightM, light, lightTexelWorld);
   mergeRefined(camera, lightM, light, material, lightTexelWorld);
   timer_.end();
 }
 
-// The list's header: no texel yet, and the gather's dispatch of {0, 1, 1} workgroups.
 void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                              float lightTexelWorld, const ScreenRect& rect) {
   // The refined grid's texels read -1 (not gathered; the even ones' flags: none refined) where the
@@ -110,6 +111,7 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   const int fx1 = std::min(2 * (cells.x + cells.width) + 1, fineWidth_), fy1 = std::min(2 * (cells.y + cells.height) + 1, fineHeight_);
   if (fx1 > fx0 && fy1 > fy0)
     glClearTexSubImage(bounce_.id(), 0, width_ + fx0, fy0, 0, fx1 - fx0, fy1 - fy0, 1, GL_RGBA, GL_FLOAT, kNone);
+  // The list's header: the gather's dispatch of {0, 1, 1} workgroups, no texel yet.
   constexpr GLuint kEmptyList[4] = {0, 1, 1, 0};
   glNamedBufferSubData(refineList_.id(), 0, sizeof(kEmptyList), kEmptyList);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader::BUFFER_BOUNCE_REFINE_LIST, refineList_.id());

@@ -26,9 +26,8 @@ float bounce_reach(vec3 P, vec3 N, ivec2 px, vec2 fullSize) {
   return pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
 }
 
-float bounce_match(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec2 fullSize) {
-  vec3 Ps = surface_point((vec2(ps) + 0.5) / fullSize, texelFetch(u_depth, ps, 0).r);
-  vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
+// The match of a coarse sample at pixel ps (point Ps, normal Ns) to the surface at px.
+float bounce_match_point(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec3 Ps, vec3 Ns) {
   float cn = max(dot(N, Ns), 0.0);
   cn *= cn;
   cn *= cn;
@@ -39,24 +38,49 @@ float bounce_match(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec2 fullSiz
   return cn * cn * plane * near;
 }
 
-// The coarse grid's value at pixel px, weighed as above (zero where all four are background).
-vec4 bounce_bilateral(sampler2D grid, int scale, vec3 P, vec3 N, ivec2 px) {
-  vec2 t = vec2(px) / float(scale);
+// The surface point and normal at pixel ps, as the matches read them.
+vec3 bounce_point(ivec2 ps, vec2 fullSize) {
+  return surface_point((vec2(ps) + 0.5) / fullSize, texelFetch(u_depth, ps, 0).r);
+}
+vec3 bounce_normal(ivec2 ps) { return decode_normal(texelFetch(u_normal, ps, 0).xy); }
+
+float bounce_match(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec2 fullSize) {
+  return bounce_match_point(P, N, reach, px, ps, bounce_point(ps, fullSize), bounce_normal(ps));
+}
+
+// A grid of bounce samples as the upsample reads it: texel i (0..last) stands for full-resolution
+// pixel i * scale and is stored at origin + i of the texture, except, where `evenFromCoarse`, the
+// texels with both indices even: they are the pixels of the grid twice as coarse at the texture's
+// origin, texel i / 2 (the bounce pass's refined grid, BouncePass: its other texels are gathered
+// only where the coarse grid fails, the rest left out, alpha -1).
+struct BounceGrid {
+  int scale;
+  ivec2 last;
+  ivec2 origin;
+  bool evenFromCoarse;
+};
+
+ivec2 bounce_grid_texel(BounceGrid g, ivec2 i) {
+  return g.evenFromCoarse && ((i.x | i.y) & 1) == 0 ? i / 2 : g.origin + i;
+}
+
+// The grid's value at pixel px, weighed as above (zero where all four are background).
+vec4 bounce_bilateral_in(sampler2D grid, BounceGrid g, vec3 P, vec3 N, ivec2 px) {
+  vec2 t = vec2(px) / float(g.scale);
   ivec2 i0 = ivec2(floor(t));
   vec2 f = t - vec2(i0);
-  ivec2 last = textureSize(grid, 0) - 1;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
   float reach = bounce_reach(P, N, px, fullSize);
   vec4 sum = vec4(0.0), best = vec4(0.0), any = vec4(0.0);
   float weight = 0.0, bestMatch = 0.0, anyCount = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
-    ivec2 ic = min(i0 + c, last);
-    vec4 b = texelFetch(grid, ic, 0);
+    ivec2 ic = min(i0 + c, g.last);
+    vec4 b = texelFetch(grid, bounce_grid_texel(g, ic), 0);
     if (b.a < 0.0) continue;  // the background
     any += b;
     anyCount += 1.0;
-    float match = bounce_match(P, N, reach, px, ic * scale, fullSize);
+    float match = bounce_match(P, N, reach, px, ic * g.scale, fullSize);
     float wb = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
     sum += wb * match * b;
     weight += wb * match;
@@ -67,3 +91,9 @@ vec4 bounce_bilateral(sampler2D grid, int scale, vec3 P, vec3 N, ivec2 px) {
   }
   return weight >= BOUNCE_MIN_WEIGHT ? sum / weight : (bestMatch > 0.0 ? best : any / max(anyCount, 1.0));
 }
+
+// A whole texture as the grid.
+vec4 bounce_bilateral(sampler2D grid, int scale, vec3 P, vec3 N, ivec2 px) {
+  return bounce_bilateral_in(grid, BounceGrid(scale, textureSize(grid, 0) - 1, ivec2(0), false), P, N, px);
+}
+

@@ -1,6 +1,7 @@
 // The lighting pass's bounce (`marble`): the bounce pass's coarse samples (the first bounce,
 // bounce_gather.frag.glsl, and the further bounces added to it, bounce_merge.frag.glsl; one per
-// 4 x 4 lighting texels) brought to a lighting texel, weighted as a bilateral upsample
+// 4 x 4 lighting texels; since session 17 also one per 2 x 2 where the coarse ones fail,
+// bounce_refined_grid.glsl) brought to a lighting texel, weighted as a bilateral upsample
 // (bounce_bilateral.glsl: bilinear in the coarse grid, times how well each sample's surface
 // continues the texel's own, both read from the G-buffer). Where no coarse sample around lies on this surface (a part thinner than the coarse grid), a
 // neighbour's is taken. Such a part, in front of another, takes a wrong bounce: the marble golden's
@@ -16,17 +17,22 @@
 // Needs from the includer: u_depth, u_normal (the G-buffer's), gbuffer.glsl, deferred_common.glsl,
 // marble_shading.glsl (f0_from_ior).
 #include "bounce_bilateral.glsl"
+#include "bounce_refined_grid.glsl"
 
-layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;
-uniform int u_bounce_scale;  // full-resolution pixels per texel of the bounce pass
+layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // both grids (bounce_refined_grid.glsl)
 uniform float u_ior;         // the emitters' Fresnel F0 (the mirrored part's Fresnel factor)
 
 // Irradiance / PI that all bounces bring to the surface at full-resolution pixel px (point P,
 // normal N), before P's own albedo and entry; with it, over P's albedo, the bounce's light that P's
 // specular layer mirrors toward the camera (bounce.glsl, since session 10).
 vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
-  // rgb: the emitters' albedo and Fresnel factors already applied (bounce_merge.frag.glsl).
-  vec4 b = bounce_bilateral(u_bounce, u_bounce_scale, P, N, px);
+  // rgb: the emitters' albedo and Fresnel factors already applied (bounce_merge.glsl). From the
+  // refined grid where its texel at or just before px (the first of the four the upsample reads)
+  // was refined or, for a coarse sample's own texel, has a refined neighbour; from the coarse grid
+  // elsewhere, exactly as before the refinement. One upsample either way, its grid chosen per texel.
+  BounceGrid fine = bounce_refined_grid();
+  bool refined = texelFetch(u_bounce, fine.origin + min(px / fine.scale, fine.last), 0).a >= 0.0;
+  vec4 b = bounce_bilateral_in(u_bounce, refined ? fine : bounce_coarse_grid(), P, N, px);
   float F0 = f0_from_ior(u_ior).x;
   // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected
   // light, but returned with the light entering the stone, which the post pass multiplies by the

@@ -20,11 +20,20 @@ constexpr float kNone[4] = {0, 0, 0, -1};
 constexpr int kEntryLevel = 1;
 }  // namespace
 
+void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& grid) {
+  program.set("u_bounce_scale", grid.scale);
+  glProgramUniform2i(program.id(), program.location("u_bounce_coarse_size"), grid.coarseSize.x, grid.coarseSize.y);
+  glProgramUniform2i(program.id(), program.location("u_bounce_fine_size"), grid.fineSize.x, grid.fineSize.y);
+}
+
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
+      markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
+      refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
+      refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
@@ -42,7 +51,15 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   further_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
   furtherFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(furtherFbo_.id(), GL_COLOR_ATTACHMENT0, further_.id(), 0);
-  bounce_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
+  // The refined grid at half the scale, beside the coarse one in the output (bounce_refined_grid.glsl).
+  const int fine = scale / 2;
+  fineWidth_ = (width + fine - 1) / fine;
+  fineHeight_ = (height + fine - 1) / fine;
+  bounce_ = gl::makeTexture2D(GL_RGBA16F, w + fineWidth_, std::max(h, fineHeight_), GL_NEAREST);
+  refinedFirst_ = gl::makeTexture2D(GL_RGBA16F, fineWidth_, fineHeight_, GL_NEAREST);
+  refineList_ = gl::Buffer::create();
+  glNamedBufferStorage(refineList_.id(), static_cast<GLsizeiptr>(16 + 4 * static_cast<size_t>(fineWidth_) * fineHeight_),
+                       nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
 }
@@ -76,7 +93,72 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   mergeProgram_.set("u_further_scale", 2 * scale_);
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
+  // The refinement: marked again on every run (the coarse clear above may have cleared its flags),
+  // gathered with the coarse gather, merged with the coarse merge.
+  markRefined(camera, lightM, light, lightTexelWorld, rect);
+  if (gather) gatherRefined(camera, lightM, light, lightTexelWorld);
+  mergeRefined(camera, lightM, light, material, lightTexelWorld);
   timer_.end();
+}
+
+void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                             float lightTexelWorld, const ScreenRect& rect) {
+  // The refined grid's texels read -1 (not gathered; the even ones' flags: none refined) where the
+  // lighting pass can read them: the object's rectangle and the upsample's one texel beyond it.
+  // This runs after the coarse grid's clear, which may cover the whole texture.
+  const ScreenRect cells = scaledDown(rect, scale_);
+  const int fx0 = std::max(2 * cells.x - 1, 0), fy0 = std::max(2 * cells.y - 1, 0);
+  const int fx1 = std::min(2 * (cells.x + cells.width) + 1, fineWidth_), fy1 = std::min(2 * (cells.y + cells.height) + 1, fineHeight_);
+  if (fx1 > fx0 && fy1 > fy0)
+    glClearTexSubImage(bounce_.id(), 0, width_ + fx0, fy0, 0, fx1 - fx0, fy1 - fy0, 1, GL_RGBA, GL_FLOAT, kNone);
+  // The list's header: the gather's dispatch of {0, 1, 1} workgroups, no texel yet.
+  constexpr GLuint kEmptyList[4] = {0, 1, 1, 0};
+  glNamedBufferSubData(refineList_.id(), 0, sizeof(kEmptyList), kEmptyList);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader::BUFFER_BOUNCE_REFINE_LIST, refineList_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  setFrameUniforms(markProgram_, camera, lightM, light, lightTexelWorld);
+  setBounceGridUniforms(markProgram_, gridLayout());
+  glProgramUniform2i(markProgram_.id(), markProgram_.location("u_cell_origin"), cells.x, cells.y);
+  glUseProgram(markProgram_.id());
+  const int groups = shader::BOUNCE_MARK_GROUP;
+  if (!cells.empty())
+    glDispatchCompute(static_cast<GLuint>((cells.width + groups - 1) / groups),
+                      static_cast<GLuint>((cells.height + groups - 1) / groups), 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                               float lightTexelWorld) {
+  glBindImageTexture(shader::IMAGE_BOUNCE_REFINED_FIRST, refinedFirst_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  setFrameUniforms(refineProgram_, camera, lightM, light, lightTexelWorld);
+  refineProgram_.set("u_scale", scale_ / 2);
+  glUseProgram(refineProgram_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
+  glDispatchComputeIndirect(0);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
+                              const Material& material, float lightTexelWorld) {
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, refinedFirst_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
+  glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  setFrameUniforms(refineMergeProgram_, camera, lightM, light, lightTexelWorld);
+  uploadMaterialUniforms(refineMergeProgram_, material);
+  setBounceGridUniforms(refineMergeProgram_, gridLayout());
+  refineMergeProgram_.set("u_further_scale", 2 * scale_);
+  glUseProgram(refineMergeProgram_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+int BouncePass::refinedTexelCount() const {
+  GLuint count = 0;
+  glGetNamedBufferSubData(refineList_.id(), 12, sizeof(count), &count);
+  return static_cast<int>(count);
 }
 
 void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,

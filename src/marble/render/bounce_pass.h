@@ -15,6 +15,13 @@
 // the transmission to carry through thin parts; it depends on the light, the mesh, the base colour
 // and the ior only, so it runs after markEntriesStale() (the renderer calls it whenever the
 // light's map is redrawn) or when the material changed, not when only the camera moves.
+// Since session 17 the first bounce is also gathered on a grid twice as fine, but only at the
+// texels where the coarse grid's samples do not continue the surface (creases, silhouettes, thin
+// parts): three compute steps (shaders/bounce_refine_{mark,gather,merge}.comp.glsl) mark them into
+// a list, gather over the list by an indirect dispatch and merge them, so their cost follows the
+// texels refined; the refined grid sits beside the coarse one in the output texture
+// (shaders/bounce_refined_grid.glsl), and where nothing is refined the lighting pass reads the
+// coarse grid exactly as before.
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -22,6 +29,14 @@
 #include "marble/scene/scene.h"
 
 namespace marble {
+
+// Where the pass's output holds its two grids (shaders/bounce_refined_grid.glsl), for the programs
+// that read it: the coarse grid's full-resolution pixels per texel and texels, the refined grid's texels.
+struct BounceGridLayout {
+  int scale = 0;
+  glm::ivec2 coarseSize{0}, fineSize{0};
+};
+void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& grid);
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
@@ -36,18 +51,26 @@ public:
   void resize(int width, int height, int lightingScale);
   void run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
            const Material& material, float lightTexelWorld, const ScreenRect& rect, bool gather);
-  // All bounces (bounce_merge.frag.glsl's output), for the lighting pass.
+  // All bounces (bounce_merge.frag.glsl's output, and the refined grid beside it:
+  // shaders/bounce_refined_grid.glsl), for the lighting pass.
   GLuint bounceTexture() const { return bounce_.id(); }
+  // The refined texels' first bounce before the merge (refined grid, alpha -1 elsewhere), for tests.
+  GLuint refinedFirstTexture() const { return refinedFirst_.id(); }
+  // Texels of the refined grid gathered at the last gather (read back from the list: for tests).
+  int refinedTexelCount() const;
   // The first bounce at the light's entries (bounce_entry.frag.glsl), for the lighting pass.
   GLuint entryTexture() const { return entry_.id(); }
   // The light's map was redrawn: the entry draw must run again at the next run().
   void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
-  // Two RGBA16F on this grid (the first bounce, all bounces), one on the further bounces'.
-  // And one RGBA16F on the entries' grid.
+  BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
+  // RGBA16F: the first bounce on this grid, the further bounces' grid, all bounces on this grid
+  // and the refined one beside it, the refined first bounce, the entries' grid; the refined list.
   size_t bytes() const {
-    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
-           static_cast<size_t>(entrySize_) * entrySize_ * 8;
+    const size_t fine = static_cast<size_t>(fineWidth_) * fineHeight_;
+    return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
+           static_cast<size_t>(width_ + fineWidth_) * fineHeight_ * 8 + fine * 8 +
+           static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4;
   }
   PassTimer& timer() { return timer_; }
 
@@ -58,11 +81,21 @@ private:
   // The fourth draw: the first bounce at the light's entries, the material applied.
   void gatherEntries(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                      const Material& material, float lightTexelWorld, int mapSize);
+  // The refinement's three steps: mark (every run: it also writes the refined grid's flags), gather
+  // (with the coarse gather), merge (with the coarse merge).
+  void markRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld,
+                   const ScreenRect& rect);
+  void gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld);
+  void mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, const Material& material,
+                    float lightTexelWorld);
   gl::Program program_, furtherProgram_, mergeProgram_, entryProgram_;
+  gl::Program markProgram_, refineProgram_, refineMergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture first_, further_, bounce_, entry_;
+  gl::Texture first_, further_, bounce_, entry_, refinedFirst_;
   gl::Framebuffer firstFbo_, furtherFbo_, fbo_, entryFbo_;
+  gl::Buffer refineList_;  // shaders/bounce_refine_list.glsl: the indirect dispatch's arguments, the count, the texels
   int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0;
+  int fineWidth_ = 0, fineHeight_ = 0;  // the refined grid's texels (at scale_ / 2)
   bool entriesStale_ = true;
   PassTimer timer_;
 };

@@ -91,7 +91,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_scale", marble ? enteringScale_ : 1);
-  p.set("u_bounce_scale", in.bounceScale);
+  setBounceGridUniforms(p, in.bounceGrid);
   setEnvironmentUniforms(p, settings, environment);
   gl::drawFullscreenTriangle(p.id(), emptyVao_.id());
   scissorOff();

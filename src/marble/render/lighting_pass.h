@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "marble/gl/program_variants.h"
+#include "marble/render/bounce_pass.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -20,7 +21,7 @@ namespace marble {
 struct LightingInputs {
   GLuint albedo, normal, depth, lightDistance, lightDepth;
   GLuint bounce;    // `marble`: the bounce pass's gather, all bounces (BouncePass)
-  int bounceScale;  // and its full-resolution pixels per texel
+  BounceGridLayout bounceGrid;  // and where it holds its grids
   GLuint bounceEntry;  // `marble`: the first bounce at the light's entries (BouncePass)
 };
 

@@ -326,7 +326,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                             passes_->lightDepth.distanceTexture(),
                             passes_->lightDepth.depthTexture(),
                             passes_->bounce.bounceTexture(),
-                            passes_->bounce.scale(),
+                            passes_->bounce.gridLayout(),
                             passes_->bounce.entryTexture()};
     // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still
     // name the G-buffer depth of an earlier frame size, deleted since (0 detaches).
@@ -471,6 +471,8 @@ PassTimes Renderer::passTimes(bool wait) {
   }
   return times_;
 }
+
+int Renderer::bounceRefinedTexels() const { return passes_->bounce.refinedTexelCount(); }
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +

@@ -124,6 +124,9 @@ public:
   PassTimes passTimes(bool wait = false);
   // Bytes of GL textures and buffers the renderer allocated.
   size_t glBytes() const;
+  // Texels of the `marble` bounce's refined grid gathered at the last bounce pass (BouncePass: where
+  // the coarse grid's samples do not continue the surface). Reads the count back (waits for the GPU).
+  int bounceRefinedTexels() const;
 
   // Whether a target that holds frame `shown` (render()'s token; the caller keeps it with its
   // target) still holds what render() would draw now: `shown` is the last frame drawn, of this

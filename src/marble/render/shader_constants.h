@@ -36,6 +36,12 @@
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_upsample.glsl: the pass's further bounces */            \
   X(UNIT_LIGHTING_BOUNCE_ENTRY, 11)   /* bounce_entry.glsl: the bounce at the light's entries */         \
+  /* bounce_refine_*.comp.glsl: the refined texels' list, its images, the workgroups' sizes */          \
+  X(BUFFER_BOUNCE_REFINE_LIST, 0)                                                                       \
+  X(IMAGE_BOUNCE_REFINED, 0)       /* the lighting pass's bounce texture (the coarse grid and the fine) */ \
+  X(IMAGE_BOUNCE_REFINED_FIRST, 1) /* the refined texels' first bounce, before the merge */             \
+  X(BOUNCE_MARK_GROUP, 8)          /* coarse texels per side of the mark's workgroup */                 \
+  X(BOUNCE_REFINE_GROUP, 64)       /* list entries per workgroup of the gather and the merge */         \
   /* post.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                  \
   X(UNIT_POST_HDR, 0)                                                                                   \
   X(UNIT_POST_BLURRED, 2)                                                                               \

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace marble {
 
@@ -70,31 +73,58 @@ AxisTerms axisTerms(const glm::vec4& column, float origin, float cellSize, const
 }
 
 // projectBox of one cell, bit for bit: the same additions in the same order, the same division,
-// scale and offset per corner; the eight corners as arrays, which the compiler does in vector lanes.
+// scale and offset per corner (IEEE operations: a vector lane rounds as the scalar does).
 bool projectCell(const AxisTerms& ax, const AxisTerms& ay, const AxisTerms& az, glm::u8vec3 cell,
                  const glm::vec2& size, glm::vec2& min, glm::vec2& max) {
+#if defined(__SSE2__)
+  // Corners 0-3 (low z) and 4-7 (high z) in four lanes each: lane i takes x's low or high value
+  // by bit 0 of i, y's by bit 1.
+  const int x = cell.x, y = cell.y, z = cell.z;
+  const __m128 xyx = _mm_add_ps(_mm_setr_ps(ax.x[x][0], ax.x[x][1], ax.x[x][0], ax.x[x][1]),
+                                _mm_setr_ps(ay.x[y][0], ay.x[y][0], ay.x[y][1], ay.x[y][1]));
+  const __m128 xyy = _mm_add_ps(_mm_setr_ps(ax.y[x][0], ax.y[x][1], ax.y[x][0], ax.y[x][1]),
+                                _mm_setr_ps(ay.y[y][0], ay.y[y][0], ay.y[y][1], ay.y[y][1]));
+  const __m128 xyw = _mm_add_ps(_mm_setr_ps(ax.w[x][0], ax.w[x][1], ax.w[x][0], ax.w[x][1]),
+                                _mm_setr_ps(ay.w[y][0], ay.w[y][0], ay.w[y][1], ay.w[y][1]));
+  __m128 px[2], py[2];
+  const __m128 half = _mm_set1_ps(0.5f), eps = _mm_set1_ps(1e-6f);
+  for (int c = 0; c < 2; ++c) {
+    const __m128 cx = _mm_add_ps(xyx, _mm_set1_ps(az.x[z][c]));
+    const __m128 cy = _mm_add_ps(xyy, _mm_set1_ps(az.y[z][c]));
+    const __m128 cw = _mm_add_ps(xyw, _mm_set1_ps(az.w[z][c]));
+    if (_mm_movemask_ps(_mm_cmpgt_ps(cw, eps)) != 0xF) return false;  // behind (or on) the eye plane
+    px[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cx, cw), half), half), _mm_set1_ps(size.x));
+    py[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cy, cw), half), half), _mm_set1_ps(size.y));
+  }
+  // The corners are finite (w > 1e-6): the extremes do not depend on the order they are taken in.
+  alignas(16) float lo[8], hi[8];
+  _mm_store_ps(lo, _mm_min_ps(px[0], px[1]));
+  _mm_store_ps(lo + 4, _mm_min_ps(py[0], py[1]));
+  _mm_store_ps(hi, _mm_max_ps(px[0], px[1]));
+  _mm_store_ps(hi + 4, _mm_max_ps(py[0], py[1]));
+  min = glm::vec2(std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3])),
+                  std::min(std::min(lo[4], lo[5]), std::min(lo[6], lo[7])));
+  max = glm::vec2(std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3])),
+                  std::max(std::max(hi[4], hi[5]), std::max(hi[6], hi[7])));
+  return true;
+#else
   float cx[8], cy[8], cw[8];
   for (int i = 0; i < 8; ++i) {
     const int a = i & 1, b = (i >> 1) & 1, c = (i >> 2) & 1;
     cx[i] = (ax.x[cell.x][a] + ay.x[cell.y][b]) + az.x[cell.z][c];
     cy[i] = (ax.y[cell.x][a] + ay.y[cell.y][b]) + az.y[cell.z][c];
     cw[i] = (ax.w[cell.x][a] + ay.w[cell.y][b]) + az.w[cell.z][c];
+    if (!(cw[i] > 1e-6f)) return false;  // behind (or on) the eye plane: no finite box
   }
-  bool inFront = true;
-  for (int i = 0; i < 8; ++i) inFront &= cw[i] > 1e-6f;
-  if (!inFront) return false;  // a corner behind (or on) the eye plane: no finite box
-  float px[8], py[8];
+  min = glm::vec2(1e30f);
+  max = glm::vec2(-1e30f);
   for (int i = 0; i < 8; ++i) {
-    px[i] = (cx[i] / cw[i] * 0.5f + 0.5f) * size.x;
-    py[i] = (cy[i] / cw[i] * 0.5f + 0.5f) * size.y;
-  }
-  // The corners are finite (w > 1e-6): the extremes do not depend on the order they are taken in.
-  min = max = glm::vec2(px[0], py[0]);
-  for (int i = 1; i < 8; ++i) {
-    min = glm::vec2(std::min(min.x, px[i]), std::min(min.y, py[i]));
-    max = glm::vec2(std::max(max.x, px[i]), std::max(max.y, py[i]));
+    const glm::vec2 p((cx[i] / cw[i] * 0.5f + 0.5f) * size.x, (cy[i] / cw[i] * 0.5f + 0.5f) * size.y);
+    min = glm::min(min, p);
+    max = glm::max(max, p);
   }
   return true;
+#endif
 }
 
 }  // namespace
@@ -120,8 +150,9 @@ std::vector<ScreenRect> coveredSpans(const OccupancyGrid& grid, const glm::mat4&
     const int ty0 = std::clamp(static_cast<int>(std::floor((min.y - m) / kScreenTile)), 0, tilesY - 1);
     const int tx1 = std::clamp(static_cast<int>(std::floor((max.x + m) / kScreenTile)), 0, tilesX - 1);
     const int ty1 = std::clamp(static_cast<int>(std::floor((max.y + m) / kScreenTile)), 0, tilesY - 1);
+    // A few tiles per row: marked in place (|=, which the compiler keeps a loop, not a memset call).
     for (int ty = ty0; ty <= ty1; ++ty)
-      std::fill(marked.begin() + ty * tilesX + tx0, marked.begin() + ty * tilesX + tx1 + 1, uint8_t{1});
+      for (int tx = tx0; tx <= tx1; ++tx) marked[static_cast<size_t>(ty) * tilesX + tx] |= 1;
   }
   // Each row's runs of marked tiles; a run that the row below had too (same first and last tile)
   // grows the rectangle that run started instead of starting one.

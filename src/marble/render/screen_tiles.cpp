@@ -72,29 +72,53 @@ AxisTerms axisTerms(const glm::vec4& column, float origin, float cellSize, const
   return t;
 }
 
+#if defined(__SSE2__)
+// The same terms laid out for a cell's corners in four lanes (corner i: x's low or high term by
+// bit 0 of i, y's by bit 1, z's by bit 2 -- lanes 0-3 the low z, 4-7 the high): one load each.
+struct CornerLanes {
+  // [cell] of clip x, y, w: x's terms as (lo, hi, lo, hi), y's as (lo, lo, hi, hi).
+  __m128 x[OccupancyGrid::kCells][3], y[OccupancyGrid::kCells][3];
+  // [cell][0: low, 1: high] of clip x, y, w, each in all four lanes.
+  __m128 z[OccupancyGrid::kCells][2][3];
+};
+
+void fillCornerLanes(const AxisTerms& ax, const AxisTerms& ay, const AxisTerms& az, CornerLanes& l) {
+  for (int i = 0; i < OccupancyGrid::kCells; ++i) {
+    const float(*xs[3])[2] = {ax.x, ax.y, ax.w}, (*ys[3])[2] = {ay.x, ay.y, ay.w}, (*zs[3])[2] = {az.x, az.y, az.w};
+    for (int k = 0; k < 3; ++k) {
+      l.x[i][k] = _mm_setr_ps(xs[k][i][0], xs[k][i][1], xs[k][i][0], xs[k][i][1]);
+      l.y[i][k] = _mm_setr_ps(ys[k][i][0], ys[k][i][0], ys[k][i][1], ys[k][i][1]);
+      l.z[i][0][k] = _mm_set1_ps(zs[k][i][0]);
+      l.z[i][1][k] = _mm_set1_ps(zs[k][i][1]);
+    }
+  }
+}
+#endif
+
 // projectBox of one cell, bit for bit: the same additions in the same order, the same division,
 // scale and offset per corner (IEEE operations: a vector lane rounds as the scalar does).
+#if defined(__SSE2__)
+bool projectCell(const CornerLanes& lanes, glm::u8vec3 cell, const glm::vec2& size, glm::vec2& min, glm::vec2& max) {
+#else
 bool projectCell(const AxisTerms& ax, const AxisTerms& ay, const AxisTerms& az, glm::u8vec3 cell,
                  const glm::vec2& size, glm::vec2& min, glm::vec2& max) {
+#endif
 #if defined(__SSE2__)
-  // Corners 0-3 (low z) and 4-7 (high z) in four lanes each: lane i takes x's low or high value
-  // by bit 0 of i, y's by bit 1.
+  // Corners 0-3 (low z) and 4-7 (high z) in four lanes each (CornerLanes).
   const int x = cell.x, y = cell.y, z = cell.z;
-  const __m128 xyx = _mm_add_ps(_mm_setr_ps(ax.x[x][0], ax.x[x][1], ax.x[x][0], ax.x[x][1]),
-                                _mm_setr_ps(ay.x[y][0], ay.x[y][0], ay.x[y][1], ay.x[y][1]));
-  const __m128 xyy = _mm_add_ps(_mm_setr_ps(ax.y[x][0], ax.y[x][1], ax.y[x][0], ax.y[x][1]),
-                                _mm_setr_ps(ay.y[y][0], ay.y[y][0], ay.y[y][1], ay.y[y][1]));
-  const __m128 xyw = _mm_add_ps(_mm_setr_ps(ax.w[x][0], ax.w[x][1], ax.w[x][0], ax.w[x][1]),
-                                _mm_setr_ps(ay.w[y][0], ay.w[y][0], ay.w[y][1], ay.w[y][1]));
+  const __m128 xyx = _mm_add_ps(lanes.x[x][0], lanes.y[y][0]);
+  const __m128 xyy = _mm_add_ps(lanes.x[x][1], lanes.y[y][1]);
+  const __m128 xyw = _mm_add_ps(lanes.x[x][2], lanes.y[y][2]);
   __m128 px[2], py[2];
   const __m128 half = _mm_set1_ps(0.5f), eps = _mm_set1_ps(1e-6f);
+  const __m128 sizeX = _mm_set1_ps(size.x), sizeY = _mm_set1_ps(size.y);
   for (int c = 0; c < 2; ++c) {
-    const __m128 cx = _mm_add_ps(xyx, _mm_set1_ps(az.x[z][c]));
-    const __m128 cy = _mm_add_ps(xyy, _mm_set1_ps(az.y[z][c]));
-    const __m128 cw = _mm_add_ps(xyw, _mm_set1_ps(az.w[z][c]));
+    const __m128 cx = _mm_add_ps(xyx, lanes.z[z][c][0]);
+    const __m128 cy = _mm_add_ps(xyy, lanes.z[z][c][1]);
+    const __m128 cw = _mm_add_ps(xyw, lanes.z[z][c][2]);
     if (_mm_movemask_ps(_mm_cmpgt_ps(cw, eps)) != 0xF) return false;  // behind (or on) the eye plane
-    px[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cx, cw), half), half), _mm_set1_ps(size.x));
-    py[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cy, cw), half), half), _mm_set1_ps(size.y));
+    px[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cx, cw), half), half), sizeX);
+    py[c] = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(cy, cw), half), half), sizeY);
   }
   // The corners are finite (w > 1e-6): the extremes do not depend on the order they are taken in.
   alignas(16) float lo[8], hi[8];
@@ -139,10 +163,18 @@ std::vector<ScreenRect> coveredSpans(const OccupancyGrid& grid, const glm::mat4&
   const AxisTerms ax = axisTerms(mvp[0], origin.x, cellSize.x, nullptr);
   const AxisTerms ay = axisTerms(mvp[1], origin.y, cellSize.y, nullptr);
   const AxisTerms az = axisTerms(mvp[2], origin.z, cellSize.z, &mvp[3]);
+#if defined(__SSE2__)
+  CornerLanes lanes;
+  fillCornerLanes(ax, ay, az, lanes);
+#endif
   const float m = static_cast<float>(marginPx);
   for (const glm::u8vec3 cell : grid.cells()) {
     glm::vec2 min, max;
+#if defined(__SSE2__)
+    if (!projectCell(lanes, cell, size, min, max)) return {{0, 0, width, height}};
+#else
     if (!projectCell(ax, ay, az, cell, size, min, max)) return {{0, 0, width, height}};
+#endif
     if (max.x + m < 0.0f || max.y + m < 0.0f || min.x - m >= static_cast<float>(width) ||
         min.y - m >= static_cast<float>(height))
       continue;  // off screen

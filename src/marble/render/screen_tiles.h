@@ -2,7 +2,8 @@
 // Which parts of the screen a mesh can cover, finer than its bounding rectangle: the mesh is
 // cut into a coarse grid of cells (object space, at load), and each frame the cells holding
 // part of a triangle (but not those enclosed by six such cells) are projected; the 16x16-pixel
-// tiles they touch, merged into spans per row, are where FXAA draws (on the dragon at 800x800,
+// tiles they touch, merged into rectangles (runs per row, a run repeated in the rows above
+// merged with it), are where FXAA draws (on the dragon at 800x800,
 // 69 % of the rectangle). Conservative: every pixel the mesh covers, and its neighbours, lie in
 // a span; on llvmpipe a pixel outside every span costs nothing, where a branch on "is this
 // background?" would cost the whole shader.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -123,4 +124,34 @@ TEST(ScreenTiles, SpansAreThoseOfEveryCellsProjectedBox) {
         for (int x = r.x; x < r.x + r.width; x += 16) fromSpans[(y / 16) * 40 + x / 16] = 1;
     EXPECT_EQ(fromSpans, marked) << "eye " << eye.x << "," << eye.y << "," << eye.z;
   }
+}
+
+TEST(ScreenTiles, CellIndicesGiveTheStoredCornersBitForBit) {
+  // coveredSpans forms the corners from the indices (per-axis tables): they must be the stored ones.
+  const OccupancyGrid grid(builtinMesh("sculpture"));
+  ASSERT_EQ(grid.cells().size(), grid.lowerCorners().size());
+  for (size_t i = 0; i < grid.cells().size(); ++i) {
+    const glm::vec3 fromIndex = grid.origin() + glm::vec3(grid.cells()[i]) * grid.cellSize();
+    ASSERT_EQ(std::memcmp(&fromIndex, &grid.lowerCorners()[i], sizeof(fromIndex)), 0) << "cell " << i;
+  }
+}
+
+TEST(ScreenTiles, SpansAreDisjointAndRowsWithTheSameRunShareOne) {
+  // The rows' runs are merged upwards: no pixel lies in two spans (FXAA would filter it twice),
+  // and a run repeated in the row above does not start a span of its own.
+  const Mesh mesh = builtinMesh("sphere");
+  Camera camera;
+  camera.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  const std::vector<ScreenRect> spans = coveredSpans(OccupancyGrid(mesh), cameraMatrices(camera, 1.0f).viewProj, 320, 320, 2);
+  std::vector<int> hits(320 * 320, 0);
+  for (const ScreenRect& r : spans)
+    for (int y = r.y; y < r.y + r.height; ++y)
+      for (int x = r.x; x < r.x + r.width; ++x) ++hits[y * 320 + x];
+  EXPECT_EQ(*std::max_element(hits.begin(), hits.end()), 1);
+  int rowsCovered = 0;
+  for (int ty = 0; ty < 20; ++ty) rowsCovered += hits[(ty * 16) * 320 + 160] > 0 ? 1 : 0;
+  ASSERT_GT(rowsCovered, 3);
+  int spansOnCentre = 0;  // the sphere's middle column of tiles: its rows' runs differ, but some repeat
+  for (const ScreenRect& r : spans) spansOnCentre += r.x <= 160 && 160 < r.x + r.width ? 1 : 0;
+  EXPECT_LT(spansOnCentre, rowsCovered) << "a run repeated in the row above starts no span";
 }

@@ -544,10 +544,12 @@ std::string code(const std::string& s) {
 class BadInputs : public ::testing::TestWithParam<Row> {
 protected:
   static void SetUpTestSuite() {
-    dir_ = marble::test::tempDir("bad-inputs");
+    scratch_ = std::make_unique<marble::test::TempDir>("bad-inputs");
+    dir_ = scratch_->path();
     writeInputs(dir_);
   }
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static void TearDownTestSuite() { scratch_.reset(); }
+  static inline std::unique_ptr<marble::test::TempDir> scratch_;
   static inline fs::path dir_;
 };
 

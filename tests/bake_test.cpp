@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "temp_dir.h"
 #include "marble/bake/background_export.h"
 #include "marble/bake/bake_mesh.h"
 #include "marble/bake/ray_bvh.h"
@@ -217,8 +218,7 @@ marble::ExportOutcome finish(marble::BackgroundExport& job) {
 }  // namespace
 
 TEST(BackgroundExport, WritesWhatTheCommandWritesAndReportsOnce) {
-  const auto dir = std::filesystem::temp_directory_path() / ("marble-bg-export-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const marble::test::TempDir dir("bg-export");
   Scene scene;
   scene.mesh = "builtin:cube";
   BackgroundExport job;
@@ -236,12 +236,10 @@ TEST(BackgroundExport, WritesWhatTheCommandWritesAndReportsOnce) {
   EXPECT_FALSE(bad.ok);
   EXPECT_NE(bad.message.find("does not exist"), std::string::npos) << bad.message;
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(BackgroundExport, CancelWritesNothing) {
-  const auto dir = std::filesystem::temp_directory_path() / ("marble-bg-cancel-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const marble::test::TempDir dir("bg-cancel");
   Scene scene;
   scene.mesh = "builtin:torus";
   BackgroundExport job;
@@ -251,5 +249,4 @@ TEST(BackgroundExport, CancelWritesNothing) {
   const ExportOutcome o = finish(job);
   EXPECT_TRUE(o.cancelled) << o.message;
   EXPECT_FALSE(std::filesystem::exists(dir / "t.glb"));
-  std::filesystem::remove_all(dir);
 }

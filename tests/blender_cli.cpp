@@ -12,7 +12,7 @@
 TEST(Blender, ImportsTheExportAndBuildsTheMaterial) {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "Blender is not installed (apt-get install blender python3-numpy)";
   namespace fs = std::filesystem;
-  const fs::path dir = marble::test::tempDir("blender");
+  const auto dir = marble::test::tempDir("blender");
   std::ofstream(dir / "scene.json") << R"({"mesh": "builtin:cube", "material": {"preset": "carrara"}})";
   const auto e = marble::test::runMarble("export " + (dir / "scene.json").string() + " --size 64 -o " + (dir / "m.glb").string());
   ASSERT_EQ(e.exitCode, 0) << e.output;
@@ -32,7 +32,7 @@ TEST(Blender, ImportsTheExportAndBuildsTheMaterial) {
 TEST(Blender, CyclesReferenceKeepsTheVeins) {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "Blender is not installed (apt-get install blender python3-numpy)";
   namespace fs = std::filesystem;
-  const fs::path dir = marble::test::tempDir("cycles-veins");
+  const auto dir = marble::test::tempDir("cycles-veins");
   std::ofstream(dir / "scene.json") << R"({"mesh": "builtin:sphere", "material": {"preset": "carrara"}, "render": {"environment": "none"}})";
   const std::string cmd = "nice -n 19 blender -b --factory-startup -P " +
                           (fs::path(MARBLE_SOURCE_DIR) / "tools" / "cycles_reference.py").string() + " -- " +

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "temp_dir.h"
+
 namespace marble::test {
 
 struct RunResult {
@@ -27,10 +29,7 @@ inline RunResult runMarble(const std::string& args, const std::string& envPrefix
   return r;
 }
 
-inline std::filesystem::path tempDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("marble-test-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+// A scratch folder for one test, removed when the test ends (tests/temp_dir.h).
+inline TempDir tempDir(const std::string& name) { return TempDir(name); }
 
 }  // namespace marble::test

@@ -48,7 +48,6 @@ TEST(CompareCli, ScaledCopyGivesItsScale) {
   EXPECT_NE(j.output.find("\"scale\": 1.000000"), std::string::npos) << j.output;
   EXPECT_NE(j.output.find("\"relative_rmse\": 0.000000"), std::string::npos) << j.output;
   EXPECT_NE(j.output.find("\"ssim\": 1.000000"), std::string::npos) << j.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CompareCli, SaysWhichSilhouetteRuleItUsed) {
@@ -66,7 +65,6 @@ TEST(CompareCli, SaysWhichSilhouetteRuleItUsed) {
   EXPECT_EQ(mixed.exitCode, 0) << mixed.output;
   EXPECT_NE(mixed.output.find("\"ref_coverage\": \"alpha\", \"test_coverage\": \"values\""), std::string::npos)
       << mixed.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CompareCli, RenderHdrCarriesCoverage) {
@@ -83,7 +81,6 @@ TEST(CompareCli, RenderHdrCarriesCoverage) {
   EXPECT_EQ(c.exitCode, 0) << c.output;
   EXPECT_NE(c.output.find("\"ref_coverage\": \"alpha\", \"test_coverage\": \"alpha\""), std::string::npos) << c.output;
   EXPECT_EQ(c.output.find("\"ref_pixels\": 0,"), std::string::npos) << "the unlit sphere must count as covered: " << c.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CompareCli, BadFilesAreOneLineAndExitTwo) {
@@ -109,7 +106,6 @@ TEST(CompareCli, BadFilesAreOneLineAndExitTwo) {
 
   const auto usage = runMarble("compare " + (dir / "ref.exr").string());
   EXPECT_EQ(usage.exitCode, 2);
-  std::filesystem::remove_all(dir);
 }
 
 // --downsample N box-filters both images first: per-pixel noise that averages to the reference
@@ -142,7 +138,6 @@ TEST(CompareCli, DownsampleAveragesPixelNoiseAway) {
   EXPECT_EQ(lineCount(bad.output), 1) << bad.output;
   EXPECT_NE(bad.output.find("ref.exr"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("--downsample"), std::string::npos) << bad.output;
-  std::filesystem::remove_all(dir);
 }
 
 // --side-by-side writes reference | test, the test at the best-fit exposure: for a scaled copy
@@ -170,5 +165,4 @@ TEST(CompareCli, SideBySideShowsTheTestAtItsExposureScale) {
   EXPECT_EQ(differing, 0);
   EXPECT_GT(lit, 0);
   EXPECT_EQ(img.pixels[0], 0) << "background black";
-  std::filesystem::remove_all(dir);
 }

@@ -71,7 +71,8 @@ void expectClean(const nlohmann::json& report) {
 }  // namespace
 
 TEST(BakeCli, WritesTheTextureSet) {
-  const fs::path dir = tempDir("bake-set") / "out";
+  const auto scratch = tempDir("bake-set");
+  const fs::path dir = scratch / "out";
   const auto r = runMarble("bake builtin:sphere -o " + dir.string() + " --size 64 --preset carrara");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("unwrapped"), std::string::npos) << r.output;
@@ -101,7 +102,7 @@ TEST(BakeCli, WritesTheTextureSet) {
 }
 
 TEST(BakeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
-  const fs::path base = tempDir("bake-bad");
+  const auto base = tempDir("bake-bad");
   spit(base / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
   // Two triangles on the same texture coordinates.
   spit(base / "overlap.obj",
@@ -132,7 +133,7 @@ TEST(BakeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
 }
 
 TEST(ExportCli, SameInputSameBytesAndTheValidatorIsSatisfied) {
-  const fs::path dir = tempDir("export-det");
+  const auto dir = tempDir("export-det");
   const fs::path scene = dir / "scene.json";
   spit(scene, R"({"mesh": "builtin:torus", "material": {"preset": "nero-marquina"}})");
   for (const char* ext : {".glb", ".gltf"}) {
@@ -150,7 +151,7 @@ TEST(ExportCli, SameInputSameBytesAndTheValidatorIsSatisfied) {
 TEST(ExportCli, TextureCoordinatesSurviveAGlbRoundTrip) {
   // An export's own texcoords are read back (TEXCOORD_0, v flipped twice) and kept by --uv-from
   // file: the second export has the first one's layout, and validates too.
-  const fs::path dir = tempDir("export-uv");
+  const auto dir = tempDir("export-uv");
   spit(dir / "scene.json", R"({"mesh": "builtin:sculpture"})");
   ASSERT_EQ(runMarble("export " + (dir / "scene.json").string() + " --size 128 -o " + (dir / "first.glb").string()).exitCode, 0);
   const auto r = runMarble("export " + (dir / "first.glb").string() + " --uv-from file --size 128 -o " + (dir / "second.glb").string());
@@ -167,7 +168,7 @@ TEST(ExportCli, TextureCoordinatesSurviveAGlbRoundTrip) {
 TEST(ExportCli, AMeshWoundInwardIsWrittenWoundOutward) {
   // glTF viewers cull back faces (and a volume must not be double-sided): a tetrahedron wound
   // inward comes out wound outward, with normals that agree.
-  const fs::path dir = tempDir("export-winding");
+  const auto dir = tempDir("export-winding");
   spit(dir / "inward.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
   ASSERT_LT(marble::signedVolume(marble::loadMesh(dir / "inward.obj")), 0.0);  // the fixture is what it says
   ASSERT_EQ(runMarble("export " + (dir / "inward.obj").string() + " --size 32 -o " + (dir / "out.glb").string()).exitCode, 0);

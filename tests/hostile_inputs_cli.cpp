@@ -39,8 +39,7 @@ std::vector<std::string> namesIn(const fs::path& dir) {
 }
 
 struct HostileCli : ::testing::Test {
-  fs::path dir = marble::test::tempDir("hostile-cli");
-  void TearDown() override { fs::remove_all(dir); }
+  marble::test::TempDir dir{"hostile-cli"};
   marble::test::RunResult run(const std::string& args, const std::string& prefix = "") {
     return marble::test::runMarble(args, "cd '" + dir.string() + "' && " + prefix);
   }

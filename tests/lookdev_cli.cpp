@@ -46,7 +46,6 @@ TEST(CliLookdev, CameraAnglesAndPositionAgree) {
   EXPECT_TRUE(samePixels(byAngles, byPosition));
   const auto side = render(dir, "s.png", "--camera side");
   EXPECT_FALSE(samePixels(byAngles, side)) << "negative control: another camera, another picture";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, LightPresetsMoveTheLight) {
@@ -58,7 +57,6 @@ TEST(CliLookdev, LightPresetsMoveTheLight) {
   EXPECT_GT(meanLuma(front), meanLuma(back));
   const auto pos = render(dir, "p.png", "--light-position 0,0,-5");
   EXPECT_FALSE(samePixels(pos, front));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, SizeMmIsMmPerUnitTimesTwo) {
@@ -70,7 +68,6 @@ TEST(CliLookdev, SizeMmIsMmPerUnitTimesTwo) {
   // The flag overrides the scene file.
   const auto overridden = render(dir, "o.png", (dir / "s.json").string() + " --size-mm 2000");
   EXPECT_FALSE(samePixels(fromScene, overridden));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, ExposureAndBackground) {
@@ -83,7 +80,6 @@ TEST(CliLookdev, ExposureAndBackground) {
   EXPECT_EQ(corner.r, 0);
   EXPECT_EQ(corner.g, 0);
   EXPECT_EQ(corner.b, 255);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, PngCarriesItsSceneAndReRendersToTheSamePixels) {
@@ -95,7 +91,6 @@ TEST(CliLookdev, PngCarriesItsSceneAndReRendersToTheSamePixels) {
   const auto r = runMarble("render " + (dir / "shot.png").string() + " -o " + (dir / "again.png").string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(samePixels(shot, readPng(dir / "again.png")));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, QualityFinalSupersamplesWithoutFxaa) {
@@ -105,7 +100,6 @@ TEST(CliLookdev, QualityFinalSupersamplesWithoutFxaa) {
   EXPECT_NE(r.output.find("supersampled 3x3, final quality"), std::string::npos) << r.output;
   const auto same = render(dir, "s.png", "--supersample 3 --antialias none --subsurface-resolution full");
   EXPECT_TRUE(samePixels(readPng(dir / "f.png"), same)) << "final is exactly these three settings";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, TurntableWritesNumberedFramesOfAFullTurn) {
@@ -121,7 +115,6 @@ TEST(CliLookdev, TurntableWritesNumberedFramesOfAFullTurn) {
   const auto lightFrames = dir / "light";
   ASSERT_EQ(runMarble("render builtin:torus --turntable 2 --turntable-of light" + kSize + " -o " + lightFrames.string()).exitCode, 0);
   EXPECT_FALSE(samePixels(readPng(lightFrames / "frame_0000.png"), readPng(lightFrames / "frame_0001.png")));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, TurntableVideoWithFfmpeg) {
@@ -138,7 +131,6 @@ TEST(CliLookdev, TurntableVideoWithFfmpeg) {
     if (std::string(ext) == ".mp4") EXPECT_EQ(head.substr(4, 4), "ftyp");
     else EXPECT_EQ(head.substr(8, 4), "WEBP");
   }
-  std::filesystem::remove_all(dir);
 }
 
 namespace {
@@ -167,7 +159,6 @@ TEST(CliLookdev, GroundReceivesTheObjectsShadow) {
   const auto flat = render(dir, "f.png", sphere);
   EXPECT_EQ(luma(flat.at(lit.x, lit.y)), 0);
   EXPECT_EQ(luma(flat.at(shadowed.x, shadowed.y)), 0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliLookdev, BackdropShowsTheEnvironmentBehindTheObject) {
@@ -181,5 +172,4 @@ TEST(CliLookdev, BackdropShowsTheEnvironmentBehindTheObject) {
   // With no environment there is nothing to show: the background colour stays.
   const auto none = render(dir, "n.png", args + " --backdrop on --environment none");
   EXPECT_EQ(none.at(2, 2), glm::u8vec4(0, 0, 255, 255));
-  std::filesystem::remove_all(dir);
 }

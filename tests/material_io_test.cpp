@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "error_text.h"
+#include "temp_dir.h"
 #include "marble/core/error.h"
 #include "marble/scene/embedded_presets.h"
 #include "marble/scene/material_io.h"
@@ -106,8 +107,7 @@ TEST(MaterialIoTest, JsonRoundTripIsExact) {
     m.name = "random \"" + std::to_string(i) + "\"";
     materials.push_back(m);
   }
-  const auto dir = std::filesystem::temp_directory_path() / ("marble_material_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const marble::test::TempDir dir("material");
   for (const Material& m : materials) {
     Material back;  // defaults differ from m in most fields
     std::vector<std::string> warnings;
@@ -118,7 +118,6 @@ TEST(MaterialIoTest, JsonRoundTripIsExact) {
     saveMaterial(dir / "m.json", m);
     expectSame(loadPreset((dir / "m.json").string()), m);
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(MaterialIoTest, PresetThenOverrides) {
@@ -173,8 +172,7 @@ TEST(MaterialIoTest, UnknownKeysAreWarnedNotFatal) {
 }
 
 TEST(MaterialIoTest, PresetFilesOnDisk) {
-  const auto dir = std::filesystem::temp_directory_path() / ("marble_preset_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const marble::test::TempDir dir("preset");
   {
     std::ofstream(dir / "mine.json") << R"({"preset": "carrara", "turb_power": 2.5, "extra": 1})";
     std::ofstream(dir / "broken.json") << R"({"turb_power": 2.5,)";
@@ -193,7 +191,6 @@ TEST(MaterialIoTest, PresetFilesOnDisk) {
       << badValue;
   EXPECT_NE(errorOf([&] { loadPreset((dir / "missing.json").string()); }).find("no such file"), std::string::npos);
   EXPECT_NE(errorOf([] { loadPreset("granite"); }).find("not a built-in preset"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(MaterialIoTest, SetKeyParsesNumbersColoursAndNames) {

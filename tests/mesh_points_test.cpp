@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "temp_dir.h"
 #include "marble/mesh/duplicate_triangles.h"
 #include "marble/mesh/mesh.h"
 #include "marble/mesh/point_ids.h"
@@ -98,15 +99,13 @@ TEST(PointIds, DuplicateComparisonDetectsAMissedRotation) {
 TEST(PointIds, LoadMeshJudgesDuplicatesAfterNormalization) {
   // Two triangles whose first corners differ by one float step at x = 1; a far vertex makes the
   // extent 3e6, so normalization (a scale of 2 / 3e6) rounds both corners to one position.
-  const auto dir = std::filesystem::temp_directory_path() / ("marble-points-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const marble::test::TempDir dir("points");
   const auto file = dir / "near.obj";
   std::ofstream(file) << "v 1 0 0\nv 1.00000012 0 0\nv 0 1 0\nv 0 0 1\nv 3000000 0 0\nf 1 3 4\nf 2 3 4\n";
   std::vector<std::string> warnings;
   MeshLoadOptions options;
   options.warnings = &warnings;
   const Mesh loaded = loadMesh(file, options);
-  std::filesystem::remove_all(dir);
   ASSERT_EQ(loaded.positions.size(), 5u);
   ASSERT_EQ(loaded.positions[0], loaded.positions[1]);  // the premise: the scale merged them
   EXPECT_EQ(loaded.triangleCount(), 1u);

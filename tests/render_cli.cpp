@@ -70,7 +70,6 @@ TEST(CliRender, DefaultSceneRendersCentredObject) {
   size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
   EXPECT_EQ(files, 1u);
-  std::filesystem::remove_all(dir);
 }
 
 // Issue 15: the stone as a Blender user gives it renders without a warning; giving both forms
@@ -86,7 +85,6 @@ TEST(CliRender, PrincipledMaterialRendersWithoutWarnings) {
   const auto badCrease = runMarble("render " + scene.string() + " -o " + (dir / "q.png").string() +
                               " --width 8 --height 8 --crease-angle 181");
   EXPECT_EQ(badCrease.exitCode, 2) << badCrease.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, SupersampleRendersLargerAndWritesTheRequestedSize) {
@@ -104,7 +102,6 @@ TEST(CliRender, SupersampleRendersLargerAndWritesTheRequestedSize) {
   EXPECT_EQ(hdr.height, 36);
   EXPECT_TRUE(isBackground(img.at(1, 1))) << "corners show the background";
   EXPECT_FALSE(isBackground(img.at(24, 18))) << "and the object is in the middle";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, SupersampleOutOfRangeOrTooLargeExitsTwo) {
@@ -119,7 +116,6 @@ TEST(CliRender, SupersampleOutOfRangeOrTooLargeExitsTwo) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("--supersample: 3 times 3000x20 is 9000x60, above the limit of 8192"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, AntialiasOption) {
@@ -131,7 +127,6 @@ TEST(CliRender, AntialiasOption) {
   const auto bad = runMarble("render -o " + none.string() + " --width 16 --height 16 --antialias msaa");
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.output.find("--antialias: expected \"fxaa\" or \"none\", got \"msaa\""), std::string::npos) << bad.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, BadMeshFilesGiveOneLineAndExitTwo) {
@@ -160,7 +155,6 @@ TEST(CliRender, BadMeshFilesGiveOneLineAndExitTwo) {
   EXPECT_NE(missing.output.find("missing.obj"), std::string::npos);
   const auto directory = runMarble("render " + dir.string() + " -o " + (dir / "out.png").string());
   EXPECT_EQ(directory.exitCode, 2) << directory.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, BadSceneNamesFileAndField) {
@@ -173,7 +167,6 @@ TEST(CliRender, BadSceneNamesFileAndField) {
   r = runMarble("render " + (dir / "u.json").string() + " -o " + (dir / "o.png").string());
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("warning: " + (dir / "u.json").string() + ": colour: unknown key"), std::string::npos) << r.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, EnvironmentMapLightsTheObjectAndABadOneExitsTwo) {
@@ -206,7 +199,6 @@ TEST(CliRender, EnvironmentMapLightsTheObjectAndABadOneExitsTwo) {
   r = runMarble("render builtin:sphere --environment-map " + (dir / "none.hdr").string() + " -o " + (dir / "bad.png").string());
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("none.hdr: file not found"), std::string::npos) << r.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, UnwritableOutputExitsTwo) {
@@ -245,7 +237,6 @@ TEST(CliView, UnderXvfbDrawsFramesAndSavesScreenshotWithMeshAndPanel) {
       if (px.b > px.r + 15) ++panel;
     }
   EXPECT_GT(panel, 500) << "the ImGui panel should be drawn at the top left";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRender, ShaderFolderOverridesTheBuiltInShaders) {
@@ -264,5 +255,4 @@ TEST(CliRender, ShaderFolderOverridesTheBuiltInShaders) {
   EXPECT_NE(img.at(0, 0), glm::u8vec4(255, 0, 255, 255));
   EXPECT_EQ(img.at(0, 0).a, 255) << "the background is opaque (FXAA's luma stays in its input)";
   EXPECT_EQ(img.at(8, 8), glm::u8vec4(255, 0, 255, 255));
-  std::filesystem::remove_all(dir);
 }

@@ -45,7 +45,6 @@ VeinStructure measureTexture(const std::string& preset, const char* file, const 
   const auto r = runMarble("texture -o " + dir.string() + " --preset " + preset + " --size " + std::to_string(kSize));
   EXPECT_EQ(r.exitCode, 0) << r.output;
   const ImageRGBA8 img = readPng(dir / file);
-  std::filesystem::remove_all(dir);
   const VeinStructure s = measureVeins(greyOf(img), img.width, img.height, threshold);
   std::cout << preset << ": skeleton " << s.skeletonPixels << " px, " << s.junctions << " junctions = "
             << s.junctionsPer1000 << " per 1000 px; width CV " << s.widthCv << " over " << s.veinsMeasured
@@ -117,7 +116,6 @@ SeamGradient textureSeam(const std::string& preset, bool tile) {
   const auto r = runMarble("texture -o " + dir.string() + " --preset " + preset + " --size 128" + (tile ? " --tile" : ""));
   EXPECT_EQ(r.exitCode, 0) << r.output;
   const SeamGradient g = seamGradient(readPng(dir / "marble.png"));
-  std::filesystem::remove_all(dir);
   std::cout << preset << (tile ? " --tile" : "") << ": seam gradient " << g.seam << ", interior lines' 90th percentile "
             << g.interior << ", median " << g.interiorMedian << "\n";
   return g;
@@ -148,7 +146,6 @@ TEST(VeinStructureCli, SliceOptionMovesThePlaneAndRejectsBadInput) {
   const auto paper = runMarble("texture -o " + (dir / "d").string() + " --preset paper --slice z=0");
   EXPECT_EQ(paper.exitCode, 2);
   EXPECT_NE(paper.output.find("the paper's texture is 2D"), std::string::npos) << paper.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(VeinStructureCli, PaperTextureIsExactlyAsBefore) {
@@ -161,7 +158,6 @@ TEST(VeinStructureCli, PaperTextureIsExactlyAsBefore) {
     for (const char* file : {"white_noise.png", "smooth_noise.png", "turbulence.png", "sine.png", "marble.png"})
       EXPECT_EQ(readPng(dir / file).pixels, readPng(golden / file).pixels) << file << extra;
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

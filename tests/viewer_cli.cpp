@@ -21,8 +21,7 @@ using test::tempDir;
 // authority file in a folder of ours): its clean-up failed now and then when tests ran in
 // parallel, turning a passing viewer run into exit code 5.
 struct XauthorityFolder {
-  std::filesystem::path dir = tempDir("xvfb");
-  ~XauthorityFolder() { std::filesystem::remove_all(dir); }
+  test::TempDir dir{"xvfb"};
 };
 std::string xvfb() {
   static XauthorityFolder folder;
@@ -54,7 +53,6 @@ TEST(ViewerCli, ABrokenShaderIsOneLineAndExitOne) {
   EXPECT_NE(r.output.find("marble view: " + (dir / "shaders" / "lighting.frag.glsl").string() + ":2: error"),
             std::string::npos)
       << r.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
@@ -106,7 +104,6 @@ TEST(ViewerCli, DrawsThePanelLeftAndTheWholeObjectCentredBesideIt) {
     EXPECT_TRUE(isBackground(img.at(img.width - 2, y))) << "y " << y;
     if (!isBackground(img.at(left + 2, y)) || !isBackground(img.at(img.width - 2, y))) break;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ViewerCli, OpensAMeshFileWithAPreset) {
@@ -117,7 +114,6 @@ TEST(ViewerCli, OpensAMeshFileWithAPreset) {
                                "--width 400 --height 300 --screenshot " + shot.string(), xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(readPng(shot).width, 400);
-  std::filesystem::remove_all(dir);
 }
 
 // --turntable starts the panel's turntable: the object turns between frames, so two runs with a
@@ -135,7 +131,6 @@ TEST(ViewerCli, TurntableTurnsTheObjectBetweenFrames) {
   int differing = 0;
   for (size_t i = 0; i < still.pixels.size(); i += 4) differing += still.pixels[i] != turned.pixels[i];
   EXPECT_GT(differing, 500) << "the object turned";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ViewerCli, InteractionDetailSettingIsCheckedAndRuns) {
@@ -168,7 +163,6 @@ TEST(ViewerCli, BadSceneFileIsOneLineAndExitTwo) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("camera.fov_y_deg"), std::string::npos) << r.output;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ViewerCli, OpensWithAnEnvironmentMapAndABadOneIsOneLineAndExitTwo) {
@@ -184,7 +178,6 @@ TEST(ViewerCli, OpensWithAnEnvironmentMapAndABadOneIsOneLineAndExitTwo) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("bad.hdr: not a Radiance .hdr file"), std::string::npos) << r.output;
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ TEST(WebViewer, ThreeJsShowsTheExportAsMarbleRendersIt) {
     if (std::getenv("MARBLE_REQUIRE_WEB_TOOLS")) FAIL() << why;
     GTEST_SKIP() << why;
   }
-  const fs::path dir = marble::test::tempDir("web-viewer");
+  const auto dir = marble::test::tempDir("web-viewer");
   std::ofstream(dir / "scene.json") << R"({"mesh": "builtin:sculpture", "material": {"preset": "calacatta"},
     "render": {"width": 256, "height": 256, "mode": "albedo", "antialias": "none", "background": [0, 0, 0]}})";
   const auto e = marble::test::runMarble("export " + (dir / "scene.json").string() + " --size 512 -o " + (dir / "m.glb").string());

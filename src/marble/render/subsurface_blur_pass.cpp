@@ -90,12 +90,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   // The taps: the diffusion profile's marginal (subsurface_profile.h) out to its reach, with as
   // many taps as that reach spans on screen (the dragon filling an 800-pixel frame: 6 per side).
   // Cut again only when the stone or the tap count changes.
-  const glm::vec3 d = burleyShapeD(scene.material);
+  const WalkShape walk = walkShape(scene.material);
   const int taps = subsurfaceTaps(camera, scene, height);
   const float reachMm = subsurfaceReachMm(scene.material);
-  if (d != kernelD_ || reachMm != kernelReachMm_ || taps != kernel_.taps || !kernelValid_) {
-    kernel_ = subsurfaceKernel(d, reachMm, taps);
-    kernelD_ = d;
+  if (!(walk == kernelWalk_) || reachMm != kernelReachMm_ || taps != kernel_.taps || !kernelValid_) {
+    kernel_ = subsurfaceKernel(walk, reachMm, taps);
+    kernelWalk_ = walk;
     kernelReachMm_ = reachMm;
     kernelValid_ = true;
   }

@@ -42,7 +42,7 @@ private:
   PassTimer timer_;
   // The taps last cut (subsurfaceKernel), and for which stone.
   SubsurfaceKernel kernel_;
-  glm::vec3 kernelD_{0.0f};
+  WalkShape kernelWalk_;
   float kernelReachMm_ = 0.0f;
   bool kernelValid_ = false;
 };

@@ -50,7 +50,7 @@ private:
 // 2 when the blur runs at half resolution, 1 at full.
 int subsurfaceScale(const RenderSettings& settings);
 
-// Taps per side (1..9): 1.5 x the square root of the reach in blur texels where the profile is
+// Taps per side (1..9): 1 x the square root of the reach in blur texels where the profile is
 // widest on screen (quadratically spaced taps, subsurface_profile.h; `height`: the
 // full-resolution frame's).
 int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height);

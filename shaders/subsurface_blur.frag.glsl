@@ -1,9 +1,9 @@
 #version 450 core
 // Screen-space subsurface scattering (after Jimenez et al. 2015, "Separable Subsurface
 // Scattering"): the light that entered the stone is spread over the surface by a diffusion
-// profile, one axis per pass. The profile is Burley's normalized diffusion (Christensen &
-// Burley 2015): R(r) = (exp(-r/d) + exp(-r/(3d))) / (8 pi d r), with d per channel in mm fitted
-// to Cycles' random walk, each pass weighted by its 1D marginal (src/marble/render/subsurface_profile.h);
+// profile, one axis per pass. The profile is the 1D marginal of the random walk Cycles runs in
+// the same stone, per channel, tabulated out to where red leaves 0.2 % of its light
+// (src/marble/render/subsurface_profile.h; Burley's normalized diffusion before session 18);
 // its width on screen follows the millimetre scale and the surface's depth, and samples
 // across a silhouette (a depth jump, or the background) are left out.
 //

@@ -2,7 +2,8 @@
 // scattering, in a half-space of stone lit at one point: where the light that entered comes out.
 // It gives the `marble` mode's screen-space blur its width (src/marble/render/subsurface_profile.*).
 //
-//     g++ -O2 -std=c++17 -o walk_profile tools/walk_profile.cpp && ./walk_profile    # ~1 minute
+//     g++ -O2 -std=c++17 -o walk_profile tools/walk_profile.cpp && ./walk_profile    # ~2 minutes
+//     ./walk_profile --axis-cdf    # section 3 alone, ~40 s
 //
 // The walk is tools/slab_walk_table.py's (cosine-weighted entry, exponential flights of mean
 // 1/sigma_t, isotropic scattering weighted by the single-scattering albedo alpha, no reflection
@@ -14,11 +15,16 @@
 //    percentiles (least squares; "cdf-rms" the residual): kRowDOverL in subsurface_profile.cpp;
 // 2. for the stone (sigma_a, sigma_s per mm of principled-white), E[x^2] of the exit
 //    points along one axis within |x| <= 6.51 mm, the blur's reach there:
-//    kWalkAxisSecondMomentMm2 in tests/subsurface_profile_test.cpp.
+//    kWalkAxisSecondMomentMm2 in tests/subsurface_profile_test.cpp;
+// 3. per albedo row, the walk's 1D marginal as a CDF: the share of the light that entered at the
+//    origin and leaves with |x| <= t mean free paths, at the t of kAxisT (400,000 walks per row,
+//    x and y both counted): kAxisCdf in subsurface_profile.cpp, the blur's weights out to the
+//    walk's far tail (docs/quality.md, "Eighteenth session: the side-lit shade").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -111,9 +117,40 @@ void stoneMoments() {
     std::printf("stone channel %d: E[x^2 | |x| <= %.2f mm] = %.3f mm^2\n", c, reachMm, m2 / w);
   }
 }
+void axisCdfRows() {
+  std::mt19937_64 rng(13);
+  const double rows[] = {0.5, 1, 1.5, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 5, 6};
+  const double ts[] = {0, 0.25, 0.5, 0.75, 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40, 48};
+  constexpr int kT = sizeof(ts) / sizeof(ts[0]);
+  std::printf("axis CDF rows (share with |x| <= t mean free paths), t = 0");
+  for (int j = 1; j < kT; ++j) std::printf(", %g", ts[j]);
+  std::printf(":\n");
+  for (double row : rows) {
+    const double alpha = 1 - std::pow(10.0, -row);
+    const int n = 400000;
+    double inside[kT] = {0}, total = 0;
+    for (int i = 0; i < n; ++i) {
+      Exit e;
+      if (!walk(alpha, rng, e)) continue;
+      for (double x : {std::fabs(e.x), std::fabs(e.y)}) {
+        total += e.weight;
+        for (int j = 0; j < kT; ++j)
+          if (x <= ts[j]) inside[j] += e.weight;
+      }
+    }
+    std::printf("    {");
+    for (int j = 0; j < kT; ++j) std::printf("%s%.5ff", j ? ", " : "", inside[j] / total);
+    std::printf("},  // u %g\n", row);
+  }
+}
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--axis-cdf") {  // section 3 alone
+    axisCdfRows();
+    return 0;
+  }
   fitRows();
   stoneMoments();
+  axisCdfRows();
 }

@@ -13,12 +13,17 @@ namespace {
 // Taps per side at most (the shader's MAX_TAPS).
 constexpr int kMaxTaps = shader::MAX_TAPS;
 // Taps per side per square root of the reach in blur texels. The taps are spaced quadratically
-// (subsurfaceKernel), so 1.5 sqrt(texels) of them put the first under half a texel from the
-// centre, where the profile is steepest, and the last two 1.3 sqrt(texels) apart. (1 sqrt(texels):
-// SSIM against Cycles the same to 0.001, but the outer taps so far apart that a back-lit sphere's
-// glow shows a step, tests/transmission_seams_gl_test.cpp at 1.02x its threshold. A tap per texel,
-// up to 9: the blur pass 2.2x as costly on the dragon at 800x800, SSIM the same to 0.001.)
-constexpr float kTapsPerRootTexel = 1.5f;
+// (subsurfaceKernel), so 1 sqrt(texels) of them put the first within a texel of the centre, where
+// the profile is steepest, and the last two 2 sqrt(texels) apart. Since session 18 the reach is the
+// walk's, 2.5x Burley's 8 d (16.2 against 6.5 mm in the stone), and 1 sqrt(texels) gives
+// as many taps as 1.5 did over the old reach (the dragon at 800x800: 6): the outer taps' weights are
+// the walk's faint tail (under 2 % of red per tap), and SSIM against Cycles is the same as with 1.5
+// to 0.0004 in all ten reference scenes (docs/quality.md, "Eighteenth session"), for 1.4x the
+// blur's cost. (Before session 18, over Burley's reach: 1 sqrt(texels) left the outer taps so far
+// apart on the profile's steeper tail that a back-lit sphere's glow showed a step,
+// tests/transmission_seams_gl_test.cpp at 1.02x its threshold; a tap per texel, up to 9: the blur
+// pass 2.2x as costly on the dragon at 800x800, SSIM the same to 0.001.)
+constexpr float kTapsPerRootTexel = 1.0f;
 }  // namespace
 
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
@@ -90,12 +95,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   // The taps: the diffusion profile's marginal (subsurface_profile.h) out to its reach, with as
   // many taps as that reach spans on screen (the dragon filling an 800-pixel frame: 6 per side).
   // Cut again only when the stone or the tap count changes.
-  const glm::vec3 d = burleyShapeD(scene.material);
+  const WalkShape walk = walkShape(scene.material);
   const int taps = subsurfaceTaps(camera, scene, height);
   const float reachMm = subsurfaceReachMm(scene.material);
-  if (d != kernelD_ || reachMm != kernelReachMm_ || taps != kernel_.taps || !kernelValid_) {
-    kernel_ = subsurfaceKernel(d, reachMm, taps);
-    kernelD_ = d;
+  if (!(walk == kernelWalk_) || reachMm != kernelReachMm_ || taps != kernel_.taps || !kernelValid_) {
+    kernel_ = subsurfaceKernel(walk, reachMm, taps);
+    kernelWalk_ = walk;
     kernelReachMm_ = reachMm;
     kernelValid_ = true;
   }

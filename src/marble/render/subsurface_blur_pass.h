@@ -42,7 +42,7 @@ private:
   PassTimer timer_;
   // The taps last cut (subsurfaceKernel), and for which stone.
   SubsurfaceKernel kernel_;
-  glm::vec3 kernelD_{0.0f};
+  WalkShape kernelWalk_;
   float kernelReachMm_ = 0.0f;
   bool kernelValid_ = false;
 };
@@ -50,7 +50,7 @@ private:
 // 2 when the blur runs at half resolution, 1 at full.
 int subsurfaceScale(const RenderSettings& settings);
 
-// Taps per side (1..9): 1.5 x the square root of the reach in blur texels where the profile is
+// Taps per side (1..9): 1 x the square root of the reach in blur texels where the profile is
 // widest on screen (quadratically spaced taps, subsurface_profile.h; `height`: the
 // full-resolution frame's).
 int subsurfaceTaps(const CameraMatrices& camera, const Scene& scene, int height);

@@ -8,54 +8,82 @@
 namespace marble {
 
 namespace {
-// The walk's fit (tools/walk_profile.cpp, 200,000 walks per row): d / l at u = -log10(1 - alpha).
-// Below u = 2 (alpha < 0.99) Christensen & Burley's own searchlight fit s = 1.85 - A + 7|A - 0.8|^3
-// (A: the walk's total reflectance) is within 12 % of these; at marble's u = 2.1-2.6, within 5 %.
+// The walk's 1D marginal (tools/walk_profile.cpp --axis-cdf, 400,000 walks per row, x and y
+// counted): kAxisCdf[row][j] is the share of the exits with |x| <= kAxisT[j] mean free paths,
+// row at u = kRowU[row] = -log10(1 - alpha).
 constexpr float kRowU[] = {0.5f, 1.0f, 1.5f, 2.0f, 2.25f, 2.5f, 2.75f, 3.0f, 3.5f, 4.0f, 5.0f, 6.0f};
-constexpr float kRowDOverL[] = {0.375f, 0.546f, 0.724f, 0.888f, 0.952f, 1.007f,
-                                1.038f, 1.056f, 1.078f, 1.091f, 1.089f, 1.084f};
 constexpr int kRows = static_cast<int>(sizeof(kRowU) / sizeof(kRowU[0]));
+constexpr float kAxisT[] = {0, 0.25f, 0.5f, 0.75f, 1, 1.5f, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40, 48};
+constexpr int kTs = static_cast<int>(sizeof(kAxisT) / sizeof(kAxisT[0]));
+constexpr float kAxisCdf[kRows][kTs] = {
+    {0.00000f, 0.44715f, 0.63376f, 0.74486f, 0.81751f, 0.90171f, 0.94511f, 0.98167f, 0.99353f, 0.99764f, 0.99912f, 0.99987f, 0.99998f, 1.00000f, 1.00000f, 1.00000f, 1.00000f, 1.00000f, 1.00000f, 1.00000f},  // u 0.5
+    {0.00000f, 0.35707f, 0.52793f, 0.63976f, 0.71993f, 0.82397f, 0.88596f, 0.94944f, 0.97638f, 0.98881f, 0.99454f, 0.99858f, 0.99961f, 0.99989f, 0.99999f, 1.00000f, 1.00000f, 1.00000f, 1.00000f, 1.00000f},  // u 1
+    {0.00000f, 0.30119f, 0.45526f, 0.56204f, 0.64096f, 0.75098f, 0.82232f, 0.90327f, 0.94492f, 0.96727f, 0.97998f, 0.99213f, 0.99675f, 0.99861f, 0.99971f, 0.99994f, 0.99998f, 1.00000f, 1.00000f, 1.00000f},  // u 1.5
+    {0.00000f, 0.26637f, 0.40830f, 0.50826f, 0.58460f, 0.69344f, 0.76667f, 0.85726f, 0.90755f, 0.93790f, 0.95721f, 0.97820f, 0.98836f, 0.99354f, 0.99784f, 0.99926f, 0.99975f, 0.99997f, 1.00000f, 1.00000f},  // u 2
+    {0.00000f, 0.25891f, 0.39676f, 0.49456f, 0.56813f, 0.67546f, 0.74870f, 0.84035f, 0.89308f, 0.92534f, 0.94641f, 0.97097f, 0.98325f, 0.99010f, 0.99644f, 0.99867f, 0.99950f, 0.99994f, 0.99999f, 1.00000f},  // u 2.25
+    {0.00000f, 0.25033f, 0.38377f, 0.47976f, 0.55305f, 0.66032f, 0.73377f, 0.82617f, 0.88035f, 0.91453f, 0.93725f, 0.96464f, 0.97900f, 0.98717f, 0.99509f, 0.99812f, 0.99928f, 0.99991f, 0.99999f, 1.00000f},  // u 2.5
+    {0.00000f, 0.24549f, 0.37818f, 0.47279f, 0.54539f, 0.65139f, 0.72468f, 0.81758f, 0.87294f, 0.90821f, 0.93195f, 0.96056f, 0.97609f, 0.98521f, 0.99413f, 0.99762f, 0.99904f, 0.99986f, 0.99999f, 1.00000f},  // u 2.75
+    {0.00000f, 0.24296f, 0.37427f, 0.46833f, 0.54065f, 0.64641f, 0.71925f, 0.81241f, 0.86794f, 0.90376f, 0.92802f, 0.95775f, 0.97424f, 0.98377f, 0.99338f, 0.99733f, 0.99891f, 0.99985f, 0.99999f, 1.00000f},  // u 3
+    {0.00000f, 0.24070f, 0.37117f, 0.46462f, 0.53683f, 0.64176f, 0.71456f, 0.80788f, 0.86404f, 0.90002f, 0.92476f, 0.95523f, 0.97216f, 0.98232f, 0.99274f, 0.99707f, 0.99881f, 0.99983f, 0.99998f, 1.00000f},  // u 3.5
+    {0.00000f, 0.24022f, 0.37042f, 0.46342f, 0.53507f, 0.63992f, 0.71298f, 0.80697f, 0.86309f, 0.89954f, 0.92410f, 0.95478f, 0.97176f, 0.98209f, 0.99265f, 0.99703f, 0.99887f, 0.99983f, 0.99998f, 1.00000f},  // u 4
+    {0.00000f, 0.24044f, 0.37002f, 0.46320f, 0.53502f, 0.63996f, 0.71213f, 0.80535f, 0.86127f, 0.89775f, 0.92280f, 0.95380f, 0.97122f, 0.98164f, 0.99242f, 0.99685f, 0.99873f, 0.99984f, 0.99998f, 1.00000f},  // u 5
+    {0.00000f, 0.23975f, 0.36884f, 0.46158f, 0.53376f, 0.63826f, 0.71141f, 0.80500f, 0.86086f, 0.89754f, 0.92231f, 0.95347f, 0.97085f, 0.98150f, 0.99223f, 0.99685f, 0.99875f, 0.99981f, 0.99998f, 1.00000f},  // u 6
+};
 
-// The 1D marginal of Burley's profile with d = 1 (up to a constant factor, which the blur's
-// normalization takes out): K0(x) + K0(x / 3).
-double marginal(double x) { return std::cyl_bessel_k(0.0, x) + std::cyl_bessel_k(0.0, x / 3.0); }
+// The row pair and weight for albedo alpha.
+void rowOf(float alpha, int& row, float& frac) {
+  const float u = -std::log10(std::max(1.0f - alpha, 1e-7f));
+  if (u <= kRowU[0]) {
+    row = 0, frac = 0.0f;
+    return;
+  }
+  for (int i = 1; i < kRows; ++i) {
+    if (u <= kRowU[i]) {
+      row = i - 1, frac = (u - kRowU[i - 1]) / (kRowU[i] - kRowU[i - 1]);
+      return;
+    }
+  }
+  row = kRows - 2, frac = 1.0f;
+}
 
-// Integral of the marginal over [a, b] (in units of d), midpoint rule: finite at x = 0, where
-// K0 has its (integrable) logarithmic peak.
-double marginalIntegral(double a, double b) {
-  constexpr int kSteps = 48;
-  const double h = (b - a) / kSteps;
-  double sum = 0.0;
-  for (int k = 0; k < kSteps; ++k) sum += marginal(a + (k + 0.5) * h);
-  return sum * h;
+float rowShare(int row, float t) {
+  if (t >= kAxisT[kTs - 1]) return 1.0f;
+  int j = 1;
+  while (kAxisT[j] < t) ++j;
+  const float f = (t - kAxisT[j - 1]) / (kAxisT[j] - kAxisT[j - 1]);
+  return kAxisCdf[row][j - 1] + f * (kAxisCdf[row][j] - kAxisCdf[row][j - 1]);
 }
 }  // namespace
 
-float burleyDOverMeanFreePath(float alpha) {
-  const float u = -std::log10(std::max(1.0f - alpha, 1e-7f));
-  if (u <= kRowU[0]) return kRowDOverL[0];
-  for (int i = 1; i < kRows; ++i) {
-    if (u <= kRowU[i]) {
-      const float t = (u - kRowU[i - 1]) / (kRowU[i] - kRowU[i - 1]);
-      return kRowDOverL[i - 1] + t * (kRowDOverL[i] - kRowDOverL[i - 1]);
-    }
-  }
-  return kRowDOverL[kRows - 1];
+float walkAxisShare(float alpha, float t) {
+  if (t <= 0.0f) return 0.0f;
+  int row;
+  float frac;
+  rowOf(alpha, row, frac);
+  return (1.0f - frac) * rowShare(row, t) + frac * rowShare(row + 1, t);
 }
 
-glm::vec3 burleyShapeD(const Material& m) {
+WalkShape walkShape(const Material& m) {
   const glm::vec3 sigmaT = glm::max(m.sigma_a_mm + m.sigma_s_mm, glm::vec3(1e-4f));
-  glm::vec3 d;
-  for (int c = 0; c < 3; ++c) d[c] = burleyDOverMeanFreePath(m.sigma_s_mm[c] / sigmaT[c]) / sigmaT[c];
-  return d;
+  return {1.0f / sigmaT, m.sigma_s_mm / sigmaT};
 }
 
 float subsurfaceReachMm(const Material& m) {
-  const glm::vec3 d = burleyShapeD(m);
-  return kReachInD * std::max(d.r, std::max(d.g, d.b));
+  const WalkShape w = walkShape(m);
+  float reach = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    // The t where 1 - share falls to kTailShare: the share rises with t, so bisect.
+    float lo = 0.0f, hi = kAxisT[kTs - 1];
+    for (int k = 0; k < 40; ++k) {
+      const float mid = 0.5f * (lo + hi);
+      (1.0f - walkAxisShare(w.albedo[c], mid) > kTailShare ? lo : hi) = mid;
+    }
+    reach = std::max(reach, hi * w.meanFreePathMm[c]);
+  }
+  return reach;
 }
 
-SubsurfaceKernel subsurfaceKernel(const glm::vec3& d, float reachMm, int taps) {
+SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps) {
   SubsurfaceKernel k;
   k.taps = std::clamp(taps, 1, static_cast<int>(shader::MAX_TAPS));
   for (int i = 0; i <= k.taps; ++i) {
@@ -64,12 +92,14 @@ SubsurfaceKernel subsurfaceKernel(const glm::vec3& d, float reachMm, int taps) {
   }
   for (int i = 0; i <= k.taps; ++i) {
     // Tap i stands for the part of the axis nearer to it than to its neighbours (tap 0: both
-    // sides of the centre, counted once; the last: out to the reach).
-    const double a = i == 0 ? 0.0 : 0.5 * (k.offsetsMm[i - 1] + k.offsetsMm[i]);
-    const double b = i == k.taps ? k.offsetsMm[i] : 0.5 * (k.offsetsMm[i] + k.offsetsMm[i + 1]);
+    // sides of the centre, counted once; the last: out to the reach). walkAxisShare counts both
+    // sides, so a tap off the centre takes half of its band's share.
+    const float a = i == 0 ? 0.0f : 0.5f * (k.offsetsMm[i - 1] + k.offsetsMm[i]);
+    const float b = i == k.taps ? k.offsetsMm[i] : 0.5f * (k.offsetsMm[i] + k.offsetsMm[i + 1]);
     for (int c = 0; c < 3; ++c) {
-      const double dc = std::max(static_cast<double>(d[c]), 1e-6);
-      k.weights[i][c] = static_cast<float>((i == 0 ? 2.0 : 1.0) * dc * marginalIntegral(a / dc, b / dc));
+      const float l = std::max(walk.meanFreePathMm[c], 1e-6f);
+      const float band = walkAxisShare(walk.albedo[c], b / l) - walkAxisShare(walk.albedo[c], a / l);
+      k.weights[i][c] = (i == 0 ? 1.0f : 0.5f) * band;
     }
   }
   return k;

@@ -43,6 +43,7 @@ void setSurfaceOnlyScreenPassState() {
 void drawFullscreenTriangle(GLuint program, GLuint emptyVao) {
   glUseProgram(program);
   glBindVertexArray(emptyVao);
+  checkBeforeDraw();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -235,6 +235,21 @@ TEST_F(DrawStateCheck, ARendererLeavesNoProgramCurrent) {
   EXPECT_EQ(currentProgram(), 0);
 }
 
+// A new render target's contents are undefined; on a GPU they are often a freed texture's. With the
+// checks on, each new one holds a value of its own (not llvmpipe's zeros), so a frame that read a
+// texel it never wrote would differ from a fresh one in the exact-equality tests here too.
+TEST_F(DrawStateCheck, ANewTextureHoldsAValueOfItsOwnNotZero) {
+  auto firstTexel = [](GLuint texture) {
+    float rgba[4] = {};
+    glGetTextureSubImage(texture, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof rgba, rgba);
+    return glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]);
+  };
+  const gl::Texture a = gl::makeTexture2D(GL_RGBA16F, 2, 2, GL_NEAREST);
+  const gl::Texture b = gl::makeTexture2D(GL_RGBA16F, 2, 2, GL_NEAREST);
+  EXPECT_NE(firstTexel(a.id()), glm::vec4(0.0f));
+  EXPECT_NE(firstTexel(a.id()), firstTexel(b.id()));
+}
+
 TEST_F(DrawStateCheck, ItIsOnExactlyWhileTheDebugOutputIs) {
   ASSERT_TRUE(gl::drawStateChecksOn) << "the GL tests run with it";
   gl::disableDebugOutput();

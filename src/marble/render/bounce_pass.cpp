@@ -124,6 +124,12 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   setBounceGridUniforms(markProgram_, gridLayout());
   glProgramUniform2i(markProgram_.id(), markProgram_.location("u_cell_origin"), cells.x, cells.y);
   glUseProgram(markProgram_.id());
+  // The mark, the gather and the merge store into textures the last frame's passes fetched from
+  // (bounce_: the lighting pass; refinedFirst_: the merge): an image store after a texture fetch of
+  // an earlier command is ordered only by this bit (OpenGL 4.5, 7.13.2, SHADER_IMAGE_ACCESS: "image
+  // stores ... issued after the barrier will not execute until all memory accesses ... initiated
+  // prior to the barrier complete").
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   const int groups = shader::BOUNCE_MARK_GROUP;
   gl::checkBeforeDraw();
   if (!cells.empty())
@@ -158,7 +164,10 @@ void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices&
   gl::checkBeforeDraw();
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  // The mark's and the merge's stores into bounce_: fetched by the lighting pass, then (the next
+  // frame) overwritten by the coarse merge's clear and draw (framebuffer) and the mark's
+  // glClearTexSubImage, which wait for earlier image stores only with the last two bits (7.13.2).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 int BouncePass::refinedTexelCount() const {

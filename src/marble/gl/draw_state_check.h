@@ -1,7 +1,9 @@
 #pragma once
-// The texture state NVIDIA's driver checks at every draw and dispatch, checked here on any driver
-// (llvmpipe says nothing about it). NVIDIA looks at every *active* sampler uniform of the current
-// program, whether the shader's path reads it or not, and reports through KHR_debug:
+// The texture state NVIDIA's driver checks, checked here on any driver (llvmpipe says nothing about
+// it). NVIDIA looks at every *active* sampler uniform of the current program, whether the shader's
+// path reads it or not, at draws and dispatches and, as its reports in the GL tests show, at
+// clears too (a program left current after its owner's textures went was reported at the next
+// renderer's first clear: docs/performance.md, "Eighteenth session"). It reports through KHR_debug:
 //  - a shadow sampler whose unit holds no depth texture, or one with depth comparisons off
 //    (undefined behaviour: OpenGL 4.5, 11.1.3.5 "Texture Access"; id 131222 on NVIDIA);
 //  - a unit with nothing (texture 0) or an incomplete texture on the sampler's target ("does not
@@ -25,9 +27,9 @@ inline bool drawStateChecksOn = false;
 // Checks the current program's active samplers against what their units hold now.
 void checkDrawState();
 
-// Called right before every glDraw* and glDispatch* of the renderer (one place each:
-// drawFullscreenTriangle, GpuMesh::draw, the subsurface blur's two draws, the bounce pass's
-// dispatches).
+// Called right before every glDraw*, glDispatch*, clear and blit of the renderer
+// (drawFullscreenTriangle, GpuMesh::draw, the subsurface blur's two draws, the bounce pass's
+// dispatches, the passes' clears, the renderer's and the floor's blits).
 inline void checkBeforeDraw() {
   if (drawStateChecksOn) checkDrawState();
 }

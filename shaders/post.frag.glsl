@@ -97,12 +97,12 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #if SURFACE_REUSE == 2
   vec3 light = texelFetch(u_surface_light, px, 0).rgb;
 #else
-  vec3 light = upsample_blurred(u_blurred, px, depth);
+  precise vec3 light = upsample_blurred(u_blurred, px, depth);
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
 #endif
 #endif
-  vec3 d = as_stored_half(light * albedo);
+  precise vec3 d = as_stored_half(light * albedo);
   o_diffuse = vec4(d, 1.0);
   return d;
 #endif
@@ -120,14 +120,20 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);
 #endif
 #endif
   // Stored or computed, the same two values and the same sum (a multiply-add fused across this
   // sum in one program and not the other would break that: PassFixture.PatternOnlyFrames* checks).
-  return marble_diffuse(px, depth, N) + reflected;
+  // `precise` (GLSL 4.50, 4.7.1) on the light, the diffuse part, the reflected light and the sum:
+  // these are computed by several variants of this program (DIFFUSE_SOURCE, SURFACE_REUSE), and
+  // a cached frame must equal a fresh one bit for bit; without it a compiler may fuse a multiply
+  // with an add in one variant and not in another (NVIDIA's does, per program; llvmpipe's does
+  // not), which GLSL allows. docs/performance.md, "Eighteenth session".
+  precise vec3 composed = marble_diffuse(px, depth, N) + reflected;
+  return composed;
 }
 
 // The squared change of the normal from pixel p to its neighbour q, or -1 where q is off the

@@ -71,12 +71,21 @@ struct FxaaFixture : ::testing::Test {
   HeadlessContext& context = glContext();  // before any GL object
   FxaaPass pass{ShaderLibrary()};
 
+  // The pass as the renderer runs it, leaving no program current (Renderer::render holds a
+  // gl::NoProgramCurrentOnExit): the textures handed to it go next, and a program left current
+  // with an empty unit is what NVIDIA's driver reports at the next clear.
+  void runPass(GLuint image, GLuint fbo, int width, int height, const std::vector<ScreenRect>& spans,
+               const glm::vec3& background) {
+    const gl::NoProgramCurrentOnExit noProgramAfter;
+    pass.run(image, fbo, width, height, spans, background);
+  }
+
   // Runs FXAA over `rgba` (GL row order) and returns the result in the same order.
   std::vector<uint8_t> run(const std::vector<uint8_t>& rgba) {
     const gl::Texture input = gl::makeTexture2D(GL_RGBA8, kWidth, kHeight, GL_LINEAR);
     glTextureSubImage2D(input.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     OffscreenTarget target(kWidth, kHeight);
-    pass.run(input.id(), target.fbo(), kWidth, kHeight, {ScreenRect{0, 0, kWidth, kHeight}}, glm::vec3(0.0f));
+    runPass(input.id(), target.fbo(), kWidth, kHeight, {ScreenRect{0, 0, kWidth, kHeight}}, glm::vec3(0.0f));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     ImageRGBA8 out = target.read();
     flipRows(out);  // back to GL's order
@@ -165,7 +174,7 @@ TEST_F(FxaaFixture, SpansAreFilteredAsInTheWholeFrameAndTheRestIsBackground) {
   // Two spans, as the renderer's rows of tiles: [20, 60) x [10, 25) and [28, 44) x [25, 40).
   const std::vector<ScreenRect> spans{{20, 10, 40, 15}, {28, 25, 16, 15}};
   const glm::vec3 background(0.2f, 0.4f, 0.6f);
-  pass.run(display.texture(), target.fbo(), kWidth, kHeight, spans, background);
+  runPass(display.texture(), target.fbo(), kWidth, kHeight, spans, background);
   ImageRGBA8 out = target.read();
   flipRows(out);
   int filteredInside = 0;
@@ -198,7 +207,7 @@ TEST_F(FxaaFixture, TheRenderersSpansGiveTheWholeFramePicture) {
     s.camera.position = glm::vec3(1.0f, 1.4f, 2.2f);  // close and from above: the object fills much of the frame
     const ImageRGBA8 spans = renderImage(renderer, s);
     OffscreenTarget whole(160, 120);
-    pass.run(renderer.displayImageTexture(), whole.fbo(), 160, 120, {ScreenRect{0, 0, 160, 120}},
+    runPass(renderer.displayImageTexture(), whole.fbo(), 160, 120, {ScreenRect{0, 0, 160, 120}},
              glm::clamp(s.render.background, 0.0f, 1.0f));
     EXPECT_EQ(spans.pixels, whole.read().pixels) << mesh;
   }

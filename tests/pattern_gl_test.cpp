@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl_support.h"
+#include "marble/gl/draw_state_check.h"
 #include "marble/gl/headless_context.h"
 #include "marble/gl/shader_library.h"
 #include "marble/noise/marble_pattern.h"
@@ -146,15 +147,23 @@ protected:
     return program;
   }
 
+  // Deletes a program built above; the draw state check's list of its samplers goes with it
+  // (GL reuses the name).
+  static void deleteProgram(GLuint program) {
+    gl::forgetProgramSamplers(program);
+    glDeleteProgram(program);
+  }
+
   void TearDown() override {
     glDeleteBuffers(3, buffers_);
-    glDeleteProgram(program_);
+    deleteProgram(program_);
   }
 
   std::vector<glm::vec4> run(const Material& m, GLuint program) {
     uploadMaterialUniforms(program, gl::lookUpUniforms(program, materialUniformNames()), m);
     glUseProgram(program);
     for (GLuint i = 0; i < 3; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, buffers_[i]);
+    gl::checkBeforeDraw();
     glDispatchCompute(kPoints / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> out(2 * kPoints);
@@ -264,7 +273,7 @@ TEST_F(PatternGlTest, TurbulenceGridMatchesTheReference) {
       ASSERT_NE(program, 0u);
       glBindTextureUnit(kTurbulenceGridUnit, texture);
       const std::vector<glm::vec4> gpu = run(m, program);
-      glDeleteProgram(program);
+      deleteProgram(program);
       float worst = 0.0f;
       for (int i = 0; i < kPoints; ++i) {
         const glm::vec3 p(positions_[static_cast<size_t>(i)]);
@@ -305,7 +314,7 @@ TEST_F(PatternGlTest, VeinModelGpuMatchesCpu) {
         glBindTextureUnit(kTurbulenceGridUnit, texture.update(m));
       }
       const std::vector<glm::vec4> gpu = run(m, program);
-      if (grid) glDeleteProgram(program);
+      if (grid) deleteProgram(program);
       int off = 0;
       double sum = 0.0;
       for (int i = 0; i < kPoints; ++i) {
@@ -352,7 +361,7 @@ TEST_F(PatternGlTest, SeenThroughVeinsGpuMatchCpu) {
                                         kSeenComputeMain);
     ASSERT_NE(program, 0u);
     const std::vector<glm::vec4> gpu = run(m, program);
-    glDeleteProgram(program);
+    deleteProgram(program);
     int off = 0, seenDiffers = 0;
     double sum = 0.0;
     for (int i = 0; i < kPoints; ++i) {

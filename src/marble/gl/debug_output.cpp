@@ -1,5 +1,7 @@
 #include "marble/gl/debug_output.h"
 
+#include "marble/gl/draw_state_check.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -79,8 +81,13 @@ void printDebugMessage(const DebugMessage& m) {
   if (isWorthReporting(m)) std::fprintf(stderr, "%s\n", describe(m).c_str());
 }
 
+void deliverDebugMessage(const DebugMessage& m) {
+  if (const DebugHandler& handler = currentHandler()) handler(m);
+}
+
 void enableDebugOutput(DebugHandler handler) {
   currentHandler() = std::move(handler);
+  drawStateChecksOn = true;
   glEnable(GL_DEBUG_OUTPUT);
   // Synchronous: the message arrives on this thread, inside the call that caused it (a
   // debugger's backtrace then shows the culprit, and a test's handler runs in the test).
@@ -93,6 +100,7 @@ void disableDebugOutput() {
   glDebugMessageCallback(nullptr, nullptr);
   glDisable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
   glDisable(GL_DEBUG_OUTPUT);
+  drawStateChecksOn = false;
   currentHandler() = nullptr;
 }
 

@@ -35,11 +35,16 @@ using DebugHandler = std::function<void(const DebugMessage&)>;
 // Prints describe(m) to stderr for messages worth reporting.
 void printDebugMessage(const DebugMessage& m);
 
+// Sends `m` to the handler enableDebugOutput set (none: dropped), as the driver's messages go:
+// marble's own checks (draw_state_check.h) report through it.
+void deliverDebugMessage(const DebugMessage& m);
+
 // Enables synchronous debug output on the current context and sends every message to
 // `handler` (which filters); replaces a handler set before. The handler is process-wide
 // (marble has one context per process).
 void enableDebugOutput(DebugHandler handler = printDebugMessage);
-// Turns it off again on the current context.
+// Also turns on the checks of draw_state_check.h before each draw and dispatch.
+// Turns it off again on the current context (and those checks).
 void disableDebugOutput();
 // Whether this build wants it by default: a debug build (NDEBUG undefined), or MARBLE_GL_DEBUG
 // set to a non-empty value other than 0.

@@ -7,6 +7,8 @@
 
 #include <utility>
 
+#include "marble/gl/draw_state_check.h"
+
 namespace marble::gl {
 
 // Count of live GL objects created through these handles (soak tests).
@@ -69,7 +71,15 @@ struct QueryTraits {
 };
 struct ProgramTraits {
   static GLuint create() { return glCreateProgram(); }
-  static void destroy(GLuint id) { glDeleteProgram(id); }
+  static void destroy(GLuint id) {
+    forgetProgramSamplers(id);  // GL reuses the name
+    // A current program outlives its deletion (OpenGL 4.5, 7.3) and its samplers stay checked
+    // at every later clear and draw (NVIDIA's driver does), while the textures on their units go.
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (static_cast<GLuint>(current) == id) glUseProgram(0);
+    glDeleteProgram(id);
+  }
 };
 
 using Buffer = Handle<BufferTraits>;
@@ -129,6 +139,19 @@ void setSurfaceOnlyScreenPassState();
 inline void attachSurfaceDepth(GLuint fbo, GLuint depthTexture) {
   glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depthTexture, 0);
 }
+
+// Leaves no program current when it goes out of scope: what the renderer's entry points that
+// draw hold. NVIDIA's driver checks the current program's samplers at clears as well as draws
+// (docs/performance.md, "Eighteenth session: the GL state NVIDIA checks"), so a program left
+// current after a frame is checked again at whatever the caller, or the next renderer, clears
+// next, when the textures on its units may have gone.
+class NoProgramCurrentOnExit {
+public:
+  NoProgramCurrentOnExit() = default;
+  ~NoProgramCurrentOnExit() { glUseProgram(0); }
+  NoProgramCurrentOnExit(const NoProgramCurrentOnExit&) = delete;
+  NoProgramCurrentOnExit& operator=(const NoProgramCurrentOnExit&) = delete;
+};
 
 // One triangle covering the viewport, drawn with `program` (fullscreen.vert.glsl builds it from
 // gl_VertexID; the core profile still wants a vertex array bound: `emptyVao`).

@@ -14,6 +14,7 @@
 
 #include "marble/core/error.h"
 #include "marble/gl/debug_output.h"
+#include "marble/gl/draw_state_check.h"
 
 #ifndef EGL_PLATFORM_SURFACELESS_MESA
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
@@ -163,13 +164,17 @@ HeadlessContext::HeadlessContext() {
       throw EnvironmentError("headless OpenGL: got version " + std::to_string(v / 10) + "." + std::to_string(v % 10) +
                              ", marble needs 4.5 core");  // `attempt` releases the context
     std::tie(display_, context_) = attempt.release();
+    gl::forgetAllProgramSamplers();  // program names now name this context's objects
     if (gl::debugOutputWanted()) gl::enableDebugOutput();
     return;
   }
   throw EnvironmentError("headless OpenGL: " + lastProblem);
 }
 
-HeadlessContext::~HeadlessContext() { releaseEgl(display_, context_, previous_); }
+HeadlessContext::~HeadlessContext() {
+  releaseEgl(display_, context_, previous_);
+  gl::forgetAllProgramSamplers();  // and now the previous context's again
+}
 
 std::string HeadlessContext::renderer() const {
   const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

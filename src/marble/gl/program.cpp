@@ -46,6 +46,19 @@ std::string oneLine(const std::vector<std::string>& lines, const std::string& fa
   return s;
 }
 
+// The program's KHR_debug label, which debuggers and draw_state_check.h's reports show: its files
+// and the variant's defines ("fullscreen.vert.glsl + post.frag.glsl [MODE 1, ...]").
+void labelProgram(GLuint program, const std::vector<ShaderStageSource>& stages, const std::vector<std::string>& defines) {
+  std::string label;
+  for (const auto& st : stages) label += (label.empty() ? "" : " + ") + st.file;
+  for (size_t i = 0; i < defines.size(); ++i) label += (i == 0 ? " [" : ", ") + defines[i];
+  if (!defines.empty()) label += "]";
+  GLint maxLength = 256;
+  glGetIntegerv(GL_MAX_LABEL_LENGTH, &maxLength);
+  if (label.size() >= static_cast<size_t>(maxLength)) label.resize(static_cast<size_t>(maxLength) - 1);
+  glObjectLabel(GL_PROGRAM, program, static_cast<GLsizei>(label.size()), label.c_str());
+}
+
 }  // namespace
 
 Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSource>& stages,
@@ -94,6 +107,7 @@ Program::Program(const ShaderLibrary& library, const std::vector<ShaderStageSour
     for (const auto& st : stages) names += (names.empty() ? "" : " + ") + st.file;
     throw ShaderError(names + ": shader link failed: " + oneLine(mapLog(log.c_str(), {}), "(no log)"));
   }
+  labelProgram(program_.id(), stages, defines);
 }
 
 GLint Program::location(const char* name) const {

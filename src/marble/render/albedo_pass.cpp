@@ -71,6 +71,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   glViewport(0, 0, width_, height_);
   gl::setSurfaceOnlyScreenPassState();
   const float zero[4] = {0, 0, 0, 0};
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};

@@ -36,6 +36,7 @@ void BlurDepthPass::run(const ScreenRect& rect) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);  // every texel takes its pixel's depth (setScreenPassState left writes on)
   const float one = 1.0f;
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, gBufferDepth_.id());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "marble/gl/draw_state_check.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -83,6 +84,7 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
@@ -109,6 +111,7 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   const ScreenRect cells = scaledDown(rect, scale_);
   const int fx0 = std::max(2 * cells.x - 1, 0), fy0 = std::max(2 * cells.y - 1, 0);
   const int fx1 = std::min(2 * (cells.x + cells.width) + 1, fineWidth_), fy1 = std::min(2 * (cells.y + cells.height) + 1, fineHeight_);
+  gl::checkBeforeDraw();
   if (fx1 > fx0 && fy1 > fy0)
     glClearTexSubImage(bounce_.id(), 0, width_ + fx0, fy0, 0, fx1 - fx0, fy1 - fy0, 1, GL_RGBA, GL_FLOAT, kNone);
   // The list's header: the gather's dispatch of {0, 1, 1} workgroups, no texel yet.
@@ -121,7 +124,14 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   setBounceGridUniforms(markProgram_, gridLayout());
   glProgramUniform2i(markProgram_.id(), markProgram_.location("u_cell_origin"), cells.x, cells.y);
   glUseProgram(markProgram_.id());
+  // The mark, the gather and the merge store into textures the last frame's passes fetched from
+  // (bounce_: the lighting pass; refinedFirst_: the merge): an image store after a texture fetch of
+  // an earlier command is ordered only by this bit (OpenGL 4.5, 7.13.2, SHADER_IMAGE_ACCESS: "image
+  // stores ... issued after the barrier will not execute until all memory accesses ... initiated
+  // prior to the barrier complete").
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   const int groups = shader::BOUNCE_MARK_GROUP;
+  gl::checkBeforeDraw();
   if (!cells.empty())
     glDispatchCompute(static_cast<GLuint>((cells.width + groups - 1) / groups),
                       static_cast<GLuint>((cells.height + groups - 1) / groups), 1);
@@ -135,6 +145,7 @@ void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices
   refineProgram_.set("u_scale", scale_ / 2);
   glUseProgram(refineProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
+  gl::checkBeforeDraw();
   glDispatchComputeIndirect(0);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
@@ -150,9 +161,13 @@ void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices&
   refineMergeProgram_.set("u_further_scale", 2 * scale_);
   glUseProgram(refineMergeProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
+  gl::checkBeforeDraw();
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  // The mark's and the merge's stores into bounce_: fetched by the lighting pass, then (the next
+  // frame) overwritten by the coarse merge's clear and draw (framebuffer) and the mark's
+  // glClearTexSubImage, which wait for earlier image stores only with the last two bits (7.13.2).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 int BouncePass::refinedTexelCount() const {
@@ -185,6 +200,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   // The first bounce, from the light's map.
   glBindFramebuffer(GL_FRAMEBUFFER, firstFbo_.id());
   glViewport(0, 0, width_, height_);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(firstFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
@@ -193,6 +209,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   // The further bounces, from the first, on the grid twice as coarse.
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(furtherFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, 2 * scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());

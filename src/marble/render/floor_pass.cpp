@@ -27,7 +27,9 @@ void FloorPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMat
   gl::setMeshPassState();
   const glm::vec4 clear(background, 1.0f);
   const float one = 1.0f;
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &clear.x);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);
@@ -36,6 +38,7 @@ void FloorPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMat
   program_.set("u_color", color);
   glUseProgram(program_.id());
   mesh.draw();
+  gl::checkBeforeDraw();
   glBlitNamedFramebuffer(fbo_.id(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                          GL_NEAREST);
   timer_.end();

@@ -25,7 +25,9 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   gl::setMeshPassState();
   const float zero[4] = {0, 0, 0, 0};
   const float one = 1.0f;
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);

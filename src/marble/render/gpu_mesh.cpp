@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "marble/gl/draw_state_check.h"
+
 namespace marble {
 
 GpuMesh::GpuMesh(const Mesh& mesh)
@@ -37,6 +39,7 @@ GpuMesh::GpuMesh(const Mesh& mesh)
 
 void GpuMesh::draw() const {
   glBindVertexArray(vao_.id());
+  gl::checkBeforeDraw();
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
 }
 

@@ -65,8 +65,10 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   gl::setMeshPassState();  // both faces: meshes with holes must still block the light
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, farValue);
   const float one = 1.0f;
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", light.viewProj);
@@ -80,8 +82,11 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glBindFramebuffer(GL_FRAMEBUFFER, bounceFbo_.id());
   glViewport(0, 0, bounceSize_, bounceSize_);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 1, zero);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 2, zero);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(bounceFbo_.id(), GL_DEPTH, 0, &one);
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());

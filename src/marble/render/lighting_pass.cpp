@@ -63,6 +63,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     gl::setSurfaceOnlyScreenPassState();
   // Outside the rectangle, and on the background, there is no surface: zero light.
   const float zero[4] = {0, 0, 0, 0};
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
   if (marble)
     scissorTo(scaledDown(rect, enteringScale_));

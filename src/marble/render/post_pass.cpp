@@ -117,6 +117,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     // Alpha as the shader writes it: coverage 0, luma, or 1.
     const float alpha = output == Output::DisplayWithLuma ? fxaaLuma(background) : 1.0f;
     const glm::vec4 clear = linearOutput ? glm::vec4(0.0f) : glm::vec4(background, alpha);
+    gl::checkBeforeDraw();
     glClearBufferfv(GL_COLOR, 0, &clear.x);
     scissorTo(rect);
   }

@@ -203,6 +203,7 @@ void Renderer::setResolutionScale(float scale) {
 
 Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
                                       int height) {
+  const gl::NoProgramCurrentOnExit noProgramAfter;
   adoptLightProxy(false);
   if (!mesh_ || width <= 0 || height <= 0) return {};
   const int reducedWidth = std::max(1, static_cast<int>(std::lround(static_cast<float>(width) * resolutionScale_)));
@@ -229,6 +230,7 @@ void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int wid
   const int gx = std::gcd(width, rw), gy = std::gcd(height, rh);
   const int srcX = rw / gx, srcY = rh / gy, dstX = width / gx, dstY = height / gy;
   if (!contentRect_) {
+    gl::checkBeforeDraw();
     glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, rw, rh, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_LINEAR);
     return;
@@ -241,8 +243,10 @@ void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int wid
   const int x0 = std::max(0, c.x - 2) / srcX, x1 = std::min(gx, (c.x + c.width + 2 + srcX - 1) / srcX);
   const int y0 = std::max(0, c.y - 2) / srcY, y1 = std::min(gy, (c.y + c.height + 2 + srcY - 1) / srcY);
   const glm::vec4 background(glm::clamp(scene.render.background, 0.0f, 1.0f), 1.0f);
+  gl::checkBeforeDraw();
   glClearNamedFramebufferfv(targetFbo, GL_COLOR, 0, &background.x);
   if (x1 <= x0 || y1 <= y0) return;
+  gl::checkBeforeDraw();
   glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, x0 * srcX, y0 * srcY, x1 * srcX, y1 * srcY, x0 * dstX,
                          y0 * dstY, x1 * dstX, y1 * dstY, GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
@@ -400,6 +404,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   contentRect_.reset();
   if (!wholeFrame) contentRect_ = rect;
   if (!fxaa) {
+    gl::checkBeforeDraw();
     glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
   } else {
@@ -483,6 +488,7 @@ size_t Renderer::glBytes() const {
 }
 
 ImageRGBF Renderer::readHdr() {
+  const gl::NoProgramCurrentOnExit noProgramAfter;
   const int w = lastFrame_ ? lastFrame_->width : 0, h = lastFrame_ ? lastFrame_->height : 0;
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   // Nothing to read when the G-buffer no longer holds the last frame's view (a new mesh, shaders).

@@ -2,14 +2,17 @@
 // Everything else (o, g, s, usemtl, mtllib, l, p, vp, comments) is ignored.
 //
 // Speed: the whole file is in memory; a hand-written scanner, std::from_chars for numbers. A large
-// file is cut at line boundaries into one chunk per core, the chunks are scanned in parallel and
-// joined in file order (loadObjInChunks). Anything unusual in a chunk -- an error, a relative
-// (negative) index, whose meaning depends on the counts before the chunk -- sends the whole file
-// through the one-pass scanner instead, so every error message (file, line, problem) is the
-// sequential scanner's own. When no face uses texture coordinates or normals, OBJ vertex i is render vertex i
+// file is cut at line boundaries into several chunks per core, which the threads take in turn as
+// they finish one (a face line costs more per byte than a vertex line, so equal halves left one
+// thread waiting), scan -- each checking its own bytes for NULs first -- and join in file order
+// (loadObjInChunks). Anything unusual in a chunk -- a NUL, an error, a relative (negative) index,
+// whose meaning depends on the counts before the chunk -- sends the whole file through the
+// one-pass scanner instead, so every error message (file, line, problem) is the sequential
+// scanner's own. When no face uses texture coordinates or normals, OBJ vertex i is render vertex i
 // (no hashing). Otherwise each distinct (v, vt, vn) triple becomes one render vertex through an
 // open-addressing hash table.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -130,15 +133,21 @@ public:
     Mesh mesh;
     mesh.positions.resize(positions);
     mesh.indices.resize(corners);
-    parallelFor(chunks.size(), 1, [&](size_t first, size_t last) {
-      for (size_t i = first; i < last; ++i) {
-        const ObjParser& c = *chunks[i];
-        std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
-        uint32_t* out = mesh.indices.data() + cornerAt[i];
-        for (const Corner& corner : c.corners_) *out++ = corner.v;
-      }
+    // Each chunk's arrays are freed by the thread that copied them (not all on the calling thread
+    // when `chunks` goes).
+    parallelForEachInTurn(chunks.size(), [&](size_t i) {
+      ObjParser& c = *chunks[i];
+      std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
+      uint32_t* out = mesh.indices.data() + cornerAt[i];
+      for (const Corner& corner : c.corners_) *out++ = corner.v;
+      c.releaseStatements();
     });
     return mesh;
+  }
+
+  void releaseStatements() {
+    std::vector<glm::vec3>().swap(positions_);
+    std::vector<Corner>().swap(corners_);
   }
 
   // Whether the joined chunks are within every limit and every index in range; when not, the
@@ -158,14 +167,16 @@ private:
 
   // Room for the positions and triangles of a large file before it is scanned, which saves growing
   // the arrays by doubling (their copies and fresh pages cost ≈ 1/4 of the scan). The counts are
-  // estimated from 32 windows of 32 KB spread over the data: lines starting "v " and "f " (three
+  // estimated from up to 32 windows of 32 KB spread over the data: lines starting "v " and "f " (three
   // corners each: a polygon's extra corners grow the array as before), scaled to the whole and
   // given 1/8 more; capped so a garbage file cannot ask for much. (Counting every line start cost
   // ≈ 1/10 of the scan; an estimate that falls short only means one doubling.)
   void reserveForStatements() {
-    constexpr size_t kWorthIt = 1u << 20, kWindows = 32, kWindow = 32u << 10;
+    constexpr size_t kWorthIt = 1u << 20, kWindow = 32u << 10;
     const size_t size = static_cast<size_t>(end_ - p_);
     if (size < kWorthIt) return;
+    // One window per MB, 4 to 32 of them: a file's few-MB chunks sample ~1/32 of their bytes.
+    const size_t kWindows = std::clamp<size_t>(size >> 20, 4, 32);
     size_t vLines = 0, fLines = 0, sampled = 0;
     for (size_t w = 0; w < kWindows; ++w) {
       const char* q = p_ + (size - kWindow) / (kWindows - 1) * w;
@@ -433,34 +444,52 @@ Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned ch
   }
   if (parts.size() > 1) {
     std::vector<std::optional<ObjParser>> parsers(parts.size());
+    // Set by the first chunk that needs the sequential scan: the others then stop early.
+    std::atomic<bool> sequential{false};
+    parallelForEachInTurn(parts.size(), [&](size_t i) {
+      if (sequential.load(std::memory_order_relaxed)) return;
+      // A NUL byte anywhere: the sequential path names the first (rejectBinary).
+      if (std::memchr(parts[i].data(), '\0', parts[i].size())) {
+        sequential = true;
+        return;
+      }
+      try {
+        parsers[i].emplace(file, parts[i], /*chunk=*/i > 0);
+        parsers[i]->scan();
+      } catch (const NeedsSequentialScan&) {
+        sequential = true;
+      } catch (const InputError&) {
+        sequential = true;
+      }
+    });
     try {
-      parallelFor(parts.size(), 1, [&](size_t first, size_t last) {
-        for (size_t i = first; i < last; ++i) {
-          parsers[i].emplace(file, parts[i], /*chunk=*/i > 0);
-          parsers[i]->scan();
+      if (!sequential) {
+        if (std::optional<Mesh> mesh = ObjParser::buildPositionsOnly(parsers)) {
+          if (joined) *joined = true;
+          return std::move(*mesh);
         }
-      });
-      if (std::optional<Mesh> mesh = ObjParser::buildPositionsOnly(parsers)) {
-        if (joined) *joined = true;
-        return std::move(*mesh);
+        for (size_t i = 1; i < parsers.size(); ++i) parsers[0]->join(std::move(*parsers[i]));
+        if (parsers[0]->joinedIsClean()) {
+          Mesh mesh = parsers[0]->build();
+          if (joined) *joined = true;
+          return mesh;
+        }
       }
-      for (size_t i = 1; i < parsers.size(); ++i) parsers[0]->join(std::move(*parsers[i]));
-      if (parsers[0]->joinedIsClean()) {
-        Mesh mesh = parsers[0]->build();
-        if (joined) *joined = true;
-        return mesh;
-      }
-    } catch (const NeedsSequentialScan&) {
-    } catch (const InputError&) {
+    } catch (const InputError&) {  // a limit the joined file exceeds: the sequential scan words it
     }
   }
+  rejectBinary(file, data, "OBJ");
   return ObjParser(file, data).parse();
 }
 
 Mesh loadObj(const std::string& file, std::string_view data) {
-  rejectBinary(file, data, "OBJ");
-  const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
-  return chunks > 1 ? loadObjInChunks(file, data, chunks) : ObjParser(file, data).parse();
+  const unsigned threads = workerThreadCount(data.size(), kTextBytesPerChunk);
+  if (threads <= 1) {
+    rejectBinary(file, data, "OBJ");
+    return ObjParser(file, data).parse();
+  }
+  const size_t chunks = std::min<size_t>(size_t{threads} * kObjChunksPerThread, data.size() / kObjMinChunkBytes);
+  return loadObjInChunks(file, data, static_cast<unsigned>(std::max<size_t>(chunks, threads)));
 }
 
 }  // namespace marble::mesh_detail

@@ -21,6 +21,7 @@
 
 #include "marble/core/parallel_for.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble::mesh_detail {
 namespace {
@@ -131,6 +132,7 @@ public:
         maxV > positions)
       return std::nullopt;
     Mesh mesh;
+    mesh.positions.reserve(capacityForCreaseCopies(positions));
     mesh.positions.resize(positions);
     mesh.indices.resize(corners);
     // Each chunk's arrays are freed by the thread that copied them (not all on the calling thread

@@ -453,7 +453,11 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   // Pass 3, per point: fans, normals, vertices. The threads take blocks of points in turn as they
   // finish (the cost per corner varies along the ids: a subdivided mesh's first points, the coarse
   // mesh's, have their corners spread over the file); each writes only its points' vertices' normals.
-  std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
+  // Room for the copies made below (capacityForCreaseCopies), so that appending them does not move
+  // the array.
+  std::vector<glm::vec3> normals;
+  normals.reserve(capacityForCreaseCopies(nv));
+  normals.resize(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
   const Corners in{triangle.get(),
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
@@ -492,11 +496,8 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
     if (hasTexcoords) mesh.texcoords.push_back(mesh.texcoords[copy.vertex]);
     normals.push_back(copy.normal);
   }
-  for (const CopyUse& use : uses) {
-    const auto made = std::lower_bound(copies.begin(), copies.end(), use.madeAt,
-                                       [](const Copy& a, uint32_t corner) { return a.corner < corner; });
-    mesh.indices[use.corner] = mesh.indices[made->corner];
-  }
+  // A use's copy was made at corner `madeAt`, whose index now names the copy.
+  for (const CopyUse& use : uses) mesh.indices[use.corner] = mesh.indices[use.madeAt];
   mesh.normals = std::move(normals);
   if (!dropDuplicates) return 0;
 

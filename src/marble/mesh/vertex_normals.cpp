@@ -391,6 +391,10 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
             __builtin_prefetch(&point[ahead[k]]);
             __builtin_prefetch(&mesh.positions[ahead[k]]);
           }
+        // The counts of a triangle half as far ahead, whose points were prefetched above then.
+        const uint32_t* half = &mesh.indices[3 * (t + kAhead / 2)];
+        for (int k = 0; k < 3; ++k)
+          if (half[k] < nv) __builtin_prefetch(&n[point[half[k]]], 1);
       }
       Triangle& out = triangle[t];
       out.point[0] = kNone;
@@ -443,6 +447,8 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   onEachThread([&](unsigned thread) {
     uint32_t* const slot = count[thread].data();
     for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      if (t + kAhead < end && triangle[t + kAhead].point[0] != kNone)
+        for (uint32_t k = 0; k < 3; ++k) __builtin_prefetch(&slot[triangle[t + kAhead].point[k]], 1);
       const Triangle& tri = triangle[t];
       if (tri.point[0] == kNone) continue;
       for (uint32_t k = 0; k < 3; ++k) byPoint[slot[tri.point[k]]++] = static_cast<uint32_t>(3 * t + k);

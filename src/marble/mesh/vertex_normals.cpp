@@ -353,7 +353,8 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
   if (!s.kept.empty()) settleFans(in, s.kept.data(), static_cast<uint32_t>(s.kept.size()), s, normals, out);
 }
 
-size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point, bool dropDuplicates) {
+size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point, bool dropDuplicates,
+                      PageBuffer* recycled) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
   const size_t triangles = corners / 3;
@@ -374,8 +375,13 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   // apart).
   // Fresh arrays of this size are left unset (make_unique_for_overwrite) where every element the
   // later passes read is written first: zeroing 77 MB (1.6 M triangles) on the calling thread
-  // faulted in every page there, before the threads wrote them again.
-  const std::unique_ptr<Triangle[]> triangle = std::make_unique_for_overwrite<Triangle[]>(triangles);
+  // faulted in every page there, before the threads wrote them again. The records go into
+  // `recycled` when given (pages faulted in already: page_buffer.h).
+  PageBuffer ownRecords;
+  PageBuffer& records = recycled ? *recycled : ownRecords;
+  records.resize(triangles * sizeof(Triangle));
+  Triangle* const triangle = reinterpret_cast<Triangle*>(records.data());
+  std::uninitialized_default_construct_n(triangle, triangles);  // trivial: no code, only their lifetimes
   std::vector<std::vector<uint32_t>> count(threads), notFiled(threads);
   constexpr size_t kAhead = 8;
   onEachThread([&](unsigned thread) {
@@ -465,7 +471,7 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   normals.reserve(capacityForCreaseCopies(nv));
   normals.resize(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
-  const Corners in{triangle.get(),
+  const Corners in{triangle,
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
                    creaseAngleDeg >= kNoCreaseDeg, dropDuplicates};
   std::atomic<size_t> nextBlock{0};
@@ -531,11 +537,12 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
 }
 
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
-  computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/false);
+  computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/false, nullptr);
 }
 
-size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
-  return computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/true);
+size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point,
+                                         PageBuffer* recycled) {
+  return computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/true, recycled);
 }
 
 }  // namespace marble

@@ -32,6 +32,40 @@ struct Corner {
   uint32_t v, vt, vn;
 };
 
+// The faces' corners, one column per attribute. A file of positions only (the common large case)
+// then writes and copies 4 bytes a corner, not 12. An attribute's column holds the first corners'
+// values up to its size; a corner beyond it has none (kNone), so the column stays empty until a
+// corner names one.
+struct CornerColumns {
+  std::vector<uint32_t> v, vt, vn;
+
+  size_t size() const { return v.size(); }
+  Corner operator[](size_t i) const { return {v[i], i < vt.size() ? vt[i] : kNone, i < vn.size() ? vn[i] : kNone}; }
+  void push(const Corner& c) {
+    v.push_back(c.v);
+    pushAttribute(vt, c.vt);
+    pushAttribute(vn, c.vn);
+  }
+  // A later chunk's corners after these.
+  void append(CornerColumns&& next) {
+    const size_t before = v.size();
+    if (v.empty()) v = std::move(next.v);
+    else v.insert(v.end(), next.v.begin(), next.v.end());
+    for (auto [mine, theirs] : {std::pair{&vt, &next.vt}, {&vn, &next.vn}})
+      if (!theirs->empty()) {
+        mine->resize(before, kNone);
+        mine->insert(mine->end(), theirs->begin(), theirs->end());
+      }
+  }
+
+private:
+  void pushAttribute(std::vector<uint32_t>& column, uint32_t value) {
+    if (value == kNone && column.empty()) return;
+    column.resize(v.size() - 1, kNone);  // the corners before this one without it
+    column.push_back(value);
+  }
+};
+
 inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
@@ -94,8 +128,7 @@ public:
     positions_.insert(positions_.end(), next.positions_.begin(), next.positions_.end());
     texcoords_.insert(texcoords_.end(), next.texcoords_.begin(), next.texcoords_.end());
     normals_.insert(normals_.end(), next.normals_.begin(), next.normals_.end());
-    if (corners_.empty()) corners_ = std::move(next.corners_);
-    else corners_.insert(corners_.end(), next.corners_.begin(), next.corners_.end());
+    corners_.append(std::move(next.corners_));
     for (auto [mine, theirs] : {std::pair{&maxV_, &next.maxV_}, {&maxVt_, &next.maxVt_}, {&maxVn_, &next.maxVn_}})
       mine->index = std::max(mine->index, theirs->index);
     anyVt_ = anyVt_ || next.anyVt_;
@@ -141,7 +174,7 @@ public:
       ObjParser& c = *chunks[i];
       std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
       uint32_t* out = mesh.indices.data() + cornerAt[i];
-      for (const Corner& corner : c.corners_) *out++ = corner.v;
+      std::copy(c.corners_.v.begin(), c.corners_.v.end(), out);
       c.releaseStatements();
     });
     return mesh;
@@ -149,7 +182,7 @@ public:
 
   void releaseStatements() {
     std::vector<glm::vec3>().swap(positions_);
-    std::vector<Corner>().swap(corners_);
+    corners_ = CornerColumns();
   }
 
   // Whether the joined chunks are within every limit and every index in range; when not, the
@@ -202,7 +235,7 @@ private:
     }
     const double scale = static_cast<double>(size) / static_cast<double>(sampled) * 1.125;
     positions_.reserve(std::min<size_t>(static_cast<size_t>(static_cast<double>(vLines) * scale), kMaxVertices));
-    corners_.reserve(3 * std::min<size_t>(static_cast<size_t>(static_cast<double>(fLines) * scale), kMaxTriangles));
+    corners_.v.reserve(3 * std::min<size_t>(static_cast<size_t>(static_cast<double>(fLines) * scale), kMaxTriangles));
   }
 
   void skipLine() {
@@ -347,9 +380,9 @@ private:
       anyVn_ = anyVn_ || c.vn != kNone;
     }
     for (size_t i = 1; i + 1 < polygon_.size(); ++i) {
-      corners_.push_back(polygon_[0]);
-      corners_.push_back(polygon_[i]);
-      corners_.push_back(polygon_[i + 1]);
+      corners_.push(polygon_[0]);
+      corners_.push(polygon_[i]);
+      corners_.push(polygon_[i + 1]);
     }
   }
 
@@ -372,7 +405,7 @@ public:
     if (!useVt && !useVn) {
       // Fast path: OBJ vertex i is render vertex i.
       mesh.indices.resize(corners_.size());
-      for (size_t i = 0; i < corners_.size(); ++i) mesh.indices[i] = corners_[i].v;
+      std::copy(corners_.v.begin(), corners_.v.end(), mesh.indices.begin());
       mesh.positions = std::move(positions_);
       return mesh;
     }
@@ -384,7 +417,8 @@ public:
     std::vector<uint32_t> values(capacity);
     const size_t mask = capacity - 1;
     mesh.indices.reserve(corners_.size());
-    for (const Corner& raw : corners_) {
+    for (size_t i = 0; i < corners_.size(); ++i) {
+      const Corner raw = corners_[i];
       const Corner c{raw.v, useVt ? raw.vt : kNone, useVn ? raw.vn : kNone};
       uint64_t h = (static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull) ^
                    (static_cast<uint64_t>(c.vt) * 0xC2B2AE3D27D4EB4Full) ^ (static_cast<uint64_t>(c.vn) * 0x165667B19E3779F9ull);
@@ -422,7 +456,7 @@ private:
   std::vector<glm::vec3> positions_;
   std::vector<glm::vec2> texcoords_;
   std::vector<glm::vec3> normals_;
-  std::vector<Corner> corners_;  // three per triangle
+  CornerColumns corners_;  // three per triangle
   std::vector<Corner> polygon_;
   PendingMax maxV_, maxVt_, maxVn_;
   bool anyVt_ = false, anyVn_ = false, allVt_ = true, allVn_ = true;

@@ -1,12 +1,14 @@
 // PageBuffer (core/page_buffer.h): resizing keeps the bytes it had (within the mapping and across
 // an mremap that may move it), moves hand the pages over, and a released mapping is taken again
-// by the next buffer (what lets a later load's file and records reuse pages faulted in already).
+// by the next buffer (what lets a later load's file and records reuse pages faulted in already),
+// unless it is larger than the heap keeps free.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 #include <utility>
 
+#include "marble/core/allocator_tuning.h"
 #include "marble/core/page_buffer.h"
 
 namespace marble {
@@ -67,6 +69,18 @@ TEST(PageBuffer, AReleasedMappingIsTakenByTheNextBuffer) {
   EXPECT_EQ(b.data(), at);
   PageBuffer c(1u << 20);  // none kept now: a mapping of its own
   EXPECT_NE(c.data(), at);
+  releaseKeptPages();
+}
+
+TEST(PageBuffer, AMappingOverTheHeapsKeptSizeIsGivenBack) {
+  releaseKeptPages();
+  const char* at = nullptr;
+  {
+    PageBuffer a(static_cast<size_t>(kTrimThresholdBytes) + 4096);  // mapped, never touched: no memory used
+    at = a.data();
+  }
+  PageBuffer b(1u << 20);
+  EXPECT_NE(b.data(), at);
   releaseKeptPages();
 }
 

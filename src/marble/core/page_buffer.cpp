@@ -7,6 +7,8 @@
 #include <new>
 #include <utility>
 
+#include "marble/core/allocator_tuning.h"
+
 namespace marble {
 namespace {
 
@@ -47,10 +49,11 @@ void PageBuffer::release() noexcept {
   char* unmap = data_;
   size_t unmapBytes = mapped_;
   {
-    // Keep the larger of this mapping and the kept one; unmap the other.
+    // Keep the larger of this mapping and the kept one, up to what the heap keeps free
+    // (allocator_tuning.h); unmap the other.
     Kept& k = kept();
     std::lock_guard lock(k.mutex);
-    if (mapped_ > k.mapped) {
+    if (mapped_ > k.mapped && mapped_ <= static_cast<size_t>(kTrimThresholdBytes)) {
       std::swap(unmap, k.data);
       std::swap(unmapBytes, k.mapped);
     }

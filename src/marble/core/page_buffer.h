@@ -6,9 +6,10 @@
 // page's first write costs a fault (≈ 1.4 µs on the project's 2-core VM: 27 ms of CPU for 77 MB);
 // the reused ones were faulted once, by the read.
 //
-// A released mapping is kept for the next buffer (one, the largest: what a later load's file and
-// records take again, faulted in already), as glibc keeps freed heap memory for reuse
-// (allocator_tuning.h); releaseKeptPages() gives it back to the system.
+// A released mapping is kept for the next buffer (one, the largest up to kTrimThresholdBytes: what
+// a later load's file and records take again, faulted in already), as glibc keeps up to that much
+// freed heap memory for reuse (allocator_tuning.h); releaseKeptPages() gives it back to the
+// system. (The cost: a loaded 1.6 M-triangle mesh leaves 77 MB kept; the memory's peak does not grow.)
 #include <cstddef>
 
 namespace marble {

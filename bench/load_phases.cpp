@@ -71,7 +71,9 @@ marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, f
   const std::string_view data = bytes.view();
   lap();
   marble::Mesh mesh = ext == ".obj" ? md::loadObj(file, data) : ext == ".ply" ? md::loadPly(file, data) : md::loadStl(file, data);
-  bytes = {};
+  // As loadMesh: the file's pages kept for the normals' records when the file has no normals.
+  marble::PageBuffer recycled = std::move(bytes.pages);
+  if (!mesh.normals.empty()) recycled = {};
   lap();
   marble::applyUpAxis(mesh, up);
   marble::normalizeMesh(mesh, file);
@@ -82,7 +84,7 @@ marble::Mesh loadInSteps(const std::filesystem::path& path, marble::UpAxis up, f
   // duplicates' column is empty and the normals' holds both.
   if (!mesh.normals.empty()) marble::removeDuplicateTriangles(mesh, points);
   lap();
-  if (mesh.normals.empty()) marble::removeDuplicatesAndComputeNormals(mesh, crease, points);
+  if (mesh.normals.empty()) marble::removeDuplicatesAndComputeNormals(mesh, crease, points, &recycled);
   lap();
   wall[phase].push_back(wallMs() - w0);
   cpu[phase].push_back(cpuMs() - c0);

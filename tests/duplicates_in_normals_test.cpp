@@ -111,6 +111,24 @@ TEST(DuplicatesInNormals, ThreadedSoupEqualsTheTwoSteps) {
   expectSameAsTwoSteps(m, "150k-triangle soup", 1000);
 }
 
+// The records written into memory handed over (loadMesh hands over the file's bytes) instead of
+// fresh pages: the same mesh, whatever the memory held and whatever its size; the memory used.
+TEST(DuplicatesInNormals, RecycledMemoryGivesTheSameMesh) {
+  for (const Mesh& input : {foldedGridWithRepeats(3), latticeSoup(4, 60, 3000)})
+    for (size_t bytes : {size_t{0}, size_t{100}, size_t{1} << 20})
+      for (int pattern : {0x00, 0x5A, 0xFF}) {
+        Mesh fresh = input, recycledInto = input;
+        PageBuffer memory(bytes);
+        if (bytes) std::memset(memory.data(), pattern, bytes);
+        const size_t expected = removeDuplicatesAndComputeNormals(fresh, kDefaultCreaseAngleDeg, pointIds(fresh.positions));
+        const size_t dropped =
+            removeDuplicatesAndComputeNormals(recycledInto, kDefaultCreaseAngleDeg, pointIds(recycledInto.positions), &memory);
+        EXPECT_EQ(dropped, expected);
+        EXPECT_TRUE(sameBits(recycledInto, fresh)) << bytes << " bytes of " << pattern;
+        EXPECT_GE(memory.size(), input.indices.size() / 3 * 48) << "the records went into the memory handed over";
+      }
+}
+
 // An index out of range (possible only through the API: loadMesh checks them first) is its own
 // point to both steps; the triangle and its rotation are one.
 TEST(DuplicatesInNormals, IndexOutOfRangeEqualsTheTwoSteps) {

@@ -82,6 +82,17 @@ TEST(MeshObjChunks, BadFilesGiveTheSequentialError) {
     expectSameForEveryChunking(withLineAt(base, at, "\x01\x02\n"), "binary" + where);
     expectSameForEveryChunking(withLineAt(base, at, "\xEF\xBB\xBFv 0 0 0\n"), "byte order mark inside" + where);
   }
+  // A NUL byte where the scanner would not look (a comment): each chunk checks its own bytes, and
+  // the sequential path names the file's first NUL, wherever the chunks fall.
+  constexpr char kNulComment[] = "# a NUL \0 in a comment\n";
+  const std::string nulComment(kNulComment, sizeof kNulComment - 1);
+  for (double at : {0.05, 0.5, 0.95}) {
+    const std::string where = " at " + std::to_string(at);
+    const std::string text = withLineAt(base, at, nulComment);
+    expectSameForEveryChunking(text, "NUL in a comment" + where);
+    EXPECT_NE(std::get<std::string>(load(text, 7)).find("binary data (NUL byte)"), std::string::npos) << where;
+    expectSameForEveryChunking(withLineAt(withLineAt(base, 0.9, nulComment), at, nulComment), "two NULs" + where);
+  }
   // The first of two errors is the one named, whichever chunks they fall in.
   expectSameForEveryChunking(withLineAt(withLineAt(base, 0.8, "f 1 0 2\n"), 0.2, "v 1 x 0\n"), "two errors");
 }

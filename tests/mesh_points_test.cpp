@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
@@ -28,6 +29,32 @@ TEST(PointIds, EqualPositionsShareTheLowestIndex) {
   // -0 is +0; a position one float step away is its own point (negative control).
   EXPECT_EQ(pointIds(positions), (std::vector<uint32_t>{0, 1, 0, 1, 4, 5}));
   EXPECT_TRUE(pointIds({}).empty());
+}
+
+// Points by their definition: per vertex the lowest index at its position's bits (-0 as +0).
+std::vector<uint32_t> pointIdsByMap(const std::vector<glm::vec3>& positions) {
+  auto word = [](float f) { return f == 0.0f ? 0u : std::bit_cast<uint32_t>(f); };
+  std::map<std::array<uint32_t, 3>, uint32_t> first;
+  std::vector<uint32_t> id;
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const glm::vec3 p = positions[i];
+    id.push_back(first.try_emplace({word(p.x), word(p.y), word(p.z)}, static_cast<uint32_t>(i)).first->second);
+  }
+  return id;
+}
+
+TEST(PointIds, TheIdsDoNotDependOnTheNumberOfTables) {
+  // 300,000 vertices (several ranges of the hashing passes) at 40,000 lattice positions, half the
+  // zeros -0: each position repeated under indices spread over the whole array. Split over tables
+  // (one thread each, by hash), the lowest index at each position must still win.
+  std::mt19937 rng(7);
+  std::vector<glm::vec3> positions;
+  for (int i = 0; i < 300000; ++i) {
+    const float x = static_cast<float>(rng() % 200) - 100.0f, y = static_cast<float>(rng() % 200);
+    positions.emplace_back(x == 0.0f && i % 2 ? -0.0f : x, y, y == 0.0f && i % 3 ? -0.0f : 0.5f);
+  }
+  const std::vector<uint32_t> expected = pointIdsByMap(positions);
+  for (unsigned tables : {0u, 1u, 2u, 3u, 4u, 7u}) EXPECT_EQ(pointIds(positions, tables), expected) << tables << " tables";
 }
 
 // The duplicate check by its definition (duplicate_triangles.h): corners compared by their

@@ -117,9 +117,9 @@ FileBytes InputFile::readLarge(uint64_t n, uint64_t maxBytes) const {
   if (size_ > maxBytes)
     throw InputError(label_, "", "file is " + withThousands(size_) + " bytes; the limit is " + withThousands(maxBytes));
   if (n > size_) n = size_;
-  FileBytes bytes{std::make_unique_for_overwrite<char[]>(static_cast<size_t>(n)), static_cast<size_t>(n)};
-  parallelFor(bytes.size, kBytesPerReadThread, [&](size_t begin, size_t end) {
-    readRange(fd_, label_, bytes.data.get() + begin, begin, end - begin, bytes.size);
+  FileBytes bytes{PageBuffer(static_cast<size_t>(n))};
+  parallelFor(bytes.pages.size(), kBytesPerReadThread, [&](size_t begin, size_t end) {
+    readRange(fd_, label_, bytes.pages.data() + begin, begin, end - begin, bytes.pages.size());
   });
   return bytes;
 }

@@ -12,14 +12,16 @@
 #include <string>
 #include <string_view>
 
+#include "marble/core/page_buffer.h"
+
 namespace marble {
 
 // A file's bytes in memory that no one zeroed first (a std::string is zero-filled: for a 60 MB
-// mesh, a memset and every page's fault on one thread before the read).
+// mesh, a memset and every page's fault on one thread before the read), in pages of their own
+// that a later array can take over (page_buffer.h).
 struct FileBytes {
-  std::unique_ptr<char[]> data;
-  size_t size = 0;
-  std::string_view view() const { return {data.get(), size}; }
+  PageBuffer pages;
+  std::string_view view() const { return {pages.data(), pages.size()}; }
 };
 
 class InputFile {

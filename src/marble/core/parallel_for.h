@@ -5,6 +5,7 @@
 // Below `minPerThread` items per thread it runs on the calling thread alone (a thread's start
 // costs ≈ 20-50 µs).
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <thread>
@@ -41,6 +42,17 @@ void parallelFor(size_t count, size_t minPerThread, Work&& work) {
   for (std::thread& t : helpers) t.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// Runs `work(i)` for every i in [0, count) on up to one thread per item (the calling thread one of
+// them), each thread taking the next untaken item as it finishes one: for items of uneven cost
+// (a file's pieces), where equal ranges would leave one thread waiting for the other.
+template <class Work>
+void parallelForEachInTurn(size_t count, Work&& work) {
+  std::atomic<size_t> next{0};
+  parallelFor(workerThreadCount(count, 1), 1, [&](size_t, size_t) {
+    for (size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < count;) work(i);
+  });
 }
 
 }  // namespace marble

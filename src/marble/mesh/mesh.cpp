@@ -243,8 +243,11 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   } else {
     mesh = loadGlb(file, data, path.parent_path(), options.allowOutside);
   }
-  bytesRead = {};  // free the file bytes before the heavier steps
+  // The file's pages, faulted in by the read, become the normals' records (page_buffer.h) when
+  // the normals are computed; otherwise they are freed before the heavier steps.
+  PageBuffer recycled = std::move(bytesRead.pages);
   validateLoaded(mesh, file);
+  if (!mesh.normals.empty()) recycled = {};
   applyUpAxis(mesh, options.up);
   // Normalizing first and computing normals second gives the same normals as the other order
   // (normalization is a uniform scale and a shift) but keeps cross products in float range.
@@ -256,7 +259,7 @@ Mesh loadOpenedMesh(const std::filesystem::path& path, const std::string& ext, c
   // found point by point: vertex_normals.h).
   const std::vector<uint32_t> points = pointIds(mesh.positions);
   const size_t dropped = mesh.normals.empty()
-                             ? removeDuplicatesAndComputeNormals(mesh, options.creaseAngleDeg, points)
+                             ? removeDuplicatesAndComputeNormals(mesh, options.creaseAngleDeg, points, &recycled)
                              : removeDuplicateTriangles(mesh, points);
   warnOfDroppedDuplicates(dropped, file, options.warnings);
   return mesh;

@@ -42,14 +42,20 @@ uint64_t stlBytesToRead(const std::string& file, std::string_view head, uint64_t
 // only when the file supplies one per position (otherwise empty). Every index is in range and
 // every position finite; errors are InputError naming `file` and the place.
 Mesh loadObj(const std::string& file, std::string_view data);
-// loadObj's parallel path with a given number of chunks (loadObj picks one per core for large
-// files); the same mesh and, on bad input, the same error as the sequential scan (tested).
+// loadObj's parallel path with a given number of chunks (loadObj picks kObjChunksPerThread per
+// core for large files; one thread per chunk at most); the same mesh and, on bad input, the same
+// error as the sequential scan (tested).
 // `joined` (optional) is set to whether the chunks' scans were used (false: the sequential scan ran).
 Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned chunks, bool* joined = nullptr);
 // Text formats are cut into one chunk per core from this size on (OBJ, ASCII PLY and STL): below a
 // few MB a thread's start and the join cost more than they save. Binary PLY decodes over threads
 // from the same size.
 inline constexpr size_t kTextBytesPerChunk = 4u << 20;
+// A large OBJ is cut into this many chunks per thread (but none under kObjMinChunkBytes), which the
+// threads take in turn: their costs differ (vertex and face lines), and a thread left with one
+// chunk while the other has finished waits at most that chunk's scan (~1/16 of the file's on 2 cores).
+inline constexpr size_t kObjChunksPerThread = 8;
+inline constexpr size_t kObjMinChunkBytes = 1u << 20;
 Mesh loadPly(const std::string& file, std::string_view data);
 // loadPly with the body's large elements read in `parts` parts (1: front to back, as the messages
 // are defined); the same mesh and, on bad input, the same error for any count (tested).

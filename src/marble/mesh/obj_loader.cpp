@@ -2,14 +2,17 @@
 // Everything else (o, g, s, usemtl, mtllib, l, p, vp, comments) is ignored.
 //
 // Speed: the whole file is in memory; a hand-written scanner, std::from_chars for numbers. A large
-// file is cut at line boundaries into one chunk per core, the chunks are scanned in parallel and
-// joined in file order (loadObjInChunks). Anything unusual in a chunk -- an error, a relative
-// (negative) index, whose meaning depends on the counts before the chunk -- sends the whole file
-// through the one-pass scanner instead, so every error message (file, line, problem) is the
-// sequential scanner's own. When no face uses texture coordinates or normals, OBJ vertex i is render vertex i
+// file is cut at line boundaries into several chunks per core, which the threads take in turn as
+// they finish one (a face line costs more per byte than a vertex line, so equal halves left one
+// thread waiting), scan -- each checking its own bytes for NULs first -- and join in file order
+// (loadObjInChunks). Anything unusual in a chunk -- a NUL, an error, a relative (negative) index,
+// whose meaning depends on the counts before the chunk -- sends the whole file through the
+// one-pass scanner instead, so every error message (file, line, problem) is the sequential
+// scanner's own. When no face uses texture coordinates or normals, OBJ vertex i is render vertex i
 // (no hashing). Otherwise each distinct (v, vt, vn) triple becomes one render vertex through an
 // open-addressing hash table.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -18,6 +21,7 @@
 
 #include "marble/core/parallel_for.h"
 #include "marble/mesh/mesh_internal.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble::mesh_detail {
 namespace {
@@ -26,6 +30,40 @@ constexpr uint32_t kNone = 0xFFFFFFFFu;
 
 struct Corner {
   uint32_t v, vt, vn;
+};
+
+// The faces' corners, one column per attribute. A file of positions only (the common large case)
+// then writes and copies 4 bytes a corner, not 12. An attribute's column holds the first corners'
+// values up to its size; a corner beyond it has none (kNone), so the column stays empty until a
+// corner names one.
+struct CornerColumns {
+  std::vector<uint32_t> v, vt, vn;
+
+  size_t size() const { return v.size(); }
+  Corner operator[](size_t i) const { return {v[i], i < vt.size() ? vt[i] : kNone, i < vn.size() ? vn[i] : kNone}; }
+  void push(const Corner& c) {
+    v.push_back(c.v);
+    pushAttribute(vt, c.vt);
+    pushAttribute(vn, c.vn);
+  }
+  // A later chunk's corners after these.
+  void append(CornerColumns&& next) {
+    const size_t before = v.size();
+    if (v.empty()) v = std::move(next.v);
+    else v.insert(v.end(), next.v.begin(), next.v.end());
+    for (auto [mine, theirs] : {std::pair{&vt, &next.vt}, {&vn, &next.vn}})
+      if (!theirs->empty()) {
+        mine->resize(before, kNone);
+        mine->insert(mine->end(), theirs->begin(), theirs->end());
+      }
+  }
+
+private:
+  void pushAttribute(std::vector<uint32_t>& column, uint32_t value) {
+    if (value == kNone && column.empty()) return;
+    column.resize(v.size() - 1, kNone);  // the corners before this one without it
+    column.push_back(value);
+  }
 };
 
 inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -90,8 +128,7 @@ public:
     positions_.insert(positions_.end(), next.positions_.begin(), next.positions_.end());
     texcoords_.insert(texcoords_.end(), next.texcoords_.begin(), next.texcoords_.end());
     normals_.insert(normals_.end(), next.normals_.begin(), next.normals_.end());
-    if (corners_.empty()) corners_ = std::move(next.corners_);
-    else corners_.insert(corners_.end(), next.corners_.begin(), next.corners_.end());
+    corners_.append(std::move(next.corners_));
     for (auto [mine, theirs] : {std::pair{&maxV_, &next.maxV_}, {&maxVt_, &next.maxVt_}, {&maxVn_, &next.maxVn_}})
       mine->index = std::max(mine->index, theirs->index);
     anyVt_ = anyVt_ || next.anyVt_;
@@ -128,17 +165,24 @@ public:
         maxV > positions)
       return std::nullopt;
     Mesh mesh;
+    mesh.positions.reserve(capacityForCreaseCopies(positions));
     mesh.positions.resize(positions);
     mesh.indices.resize(corners);
-    parallelFor(chunks.size(), 1, [&](size_t first, size_t last) {
-      for (size_t i = first; i < last; ++i) {
-        const ObjParser& c = *chunks[i];
-        std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
-        uint32_t* out = mesh.indices.data() + cornerAt[i];
-        for (const Corner& corner : c.corners_) *out++ = corner.v;
-      }
+    // Each chunk's arrays are freed by the thread that copied them (not all on the calling thread
+    // when `chunks` goes).
+    parallelForEachInTurn(chunks.size(), [&](size_t i) {
+      ObjParser& c = *chunks[i];
+      std::copy(c.positions_.begin(), c.positions_.end(), mesh.positions.begin() + static_cast<std::ptrdiff_t>(positionAt[i]));
+      uint32_t* out = mesh.indices.data() + cornerAt[i];
+      std::copy(c.corners_.v.begin(), c.corners_.v.end(), out);
+      c.releaseStatements();
     });
     return mesh;
+  }
+
+  void releaseStatements() {
+    std::vector<glm::vec3>().swap(positions_);
+    corners_ = CornerColumns();
   }
 
   // Whether the joined chunks are within every limit and every index in range; when not, the
@@ -158,14 +202,16 @@ private:
 
   // Room for the positions and triangles of a large file before it is scanned, which saves growing
   // the arrays by doubling (their copies and fresh pages cost ≈ 1/4 of the scan). The counts are
-  // estimated from 32 windows of 32 KB spread over the data: lines starting "v " and "f " (three
+  // estimated from up to 32 windows of 32 KB spread over the data: lines starting "v " and "f " (three
   // corners each: a polygon's extra corners grow the array as before), scaled to the whole and
   // given 1/8 more; capped so a garbage file cannot ask for much. (Counting every line start cost
   // ≈ 1/10 of the scan; an estimate that falls short only means one doubling.)
   void reserveForStatements() {
-    constexpr size_t kWorthIt = 1u << 20, kWindows = 32, kWindow = 32u << 10;
+    constexpr size_t kWorthIt = 1u << 20, kWindow = 32u << 10;
     const size_t size = static_cast<size_t>(end_ - p_);
     if (size < kWorthIt) return;
+    // One window per MB, 4 to 32 of them: a file's few-MB chunks sample ~1/32 of their bytes.
+    const size_t kWindows = std::clamp<size_t>(size >> 20, 4, 32);
     size_t vLines = 0, fLines = 0, sampled = 0;
     for (size_t w = 0; w < kWindows; ++w) {
       const char* q = p_ + (size - kWindow) / (kWindows - 1) * w;
@@ -189,7 +235,7 @@ private:
     }
     const double scale = static_cast<double>(size) / static_cast<double>(sampled) * 1.125;
     positions_.reserve(std::min<size_t>(static_cast<size_t>(static_cast<double>(vLines) * scale), kMaxVertices));
-    corners_.reserve(3 * std::min<size_t>(static_cast<size_t>(static_cast<double>(fLines) * scale), kMaxTriangles));
+    corners_.v.reserve(3 * std::min<size_t>(static_cast<size_t>(static_cast<double>(fLines) * scale), kMaxTriangles));
   }
 
   void skipLine() {
@@ -334,9 +380,9 @@ private:
       anyVn_ = anyVn_ || c.vn != kNone;
     }
     for (size_t i = 1; i + 1 < polygon_.size(); ++i) {
-      corners_.push_back(polygon_[0]);
-      corners_.push_back(polygon_[i]);
-      corners_.push_back(polygon_[i + 1]);
+      corners_.push(polygon_[0]);
+      corners_.push(polygon_[i]);
+      corners_.push(polygon_[i + 1]);
     }
   }
 
@@ -359,7 +405,7 @@ public:
     if (!useVt && !useVn) {
       // Fast path: OBJ vertex i is render vertex i.
       mesh.indices.resize(corners_.size());
-      for (size_t i = 0; i < corners_.size(); ++i) mesh.indices[i] = corners_[i].v;
+      std::copy(corners_.v.begin(), corners_.v.end(), mesh.indices.begin());
       mesh.positions = std::move(positions_);
       return mesh;
     }
@@ -371,7 +417,8 @@ public:
     std::vector<uint32_t> values(capacity);
     const size_t mask = capacity - 1;
     mesh.indices.reserve(corners_.size());
-    for (const Corner& raw : corners_) {
+    for (size_t i = 0; i < corners_.size(); ++i) {
+      const Corner raw = corners_[i];
       const Corner c{raw.v, useVt ? raw.vt : kNone, useVn ? raw.vn : kNone};
       uint64_t h = (static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull) ^
                    (static_cast<uint64_t>(c.vt) * 0xC2B2AE3D27D4EB4Full) ^ (static_cast<uint64_t>(c.vn) * 0x165667B19E3779F9ull);
@@ -409,7 +456,7 @@ private:
   std::vector<glm::vec3> positions_;
   std::vector<glm::vec2> texcoords_;
   std::vector<glm::vec3> normals_;
-  std::vector<Corner> corners_;  // three per triangle
+  CornerColumns corners_;  // three per triangle
   std::vector<Corner> polygon_;
   PendingMax maxV_, maxVt_, maxVn_;
   bool anyVt_ = false, anyVn_ = false, allVt_ = true, allVn_ = true;
@@ -433,34 +480,52 @@ Mesh loadObjInChunks(const std::string& file, std::string_view data, unsigned ch
   }
   if (parts.size() > 1) {
     std::vector<std::optional<ObjParser>> parsers(parts.size());
+    // Set by the first chunk that needs the sequential scan: the others then stop early.
+    std::atomic<bool> sequential{false};
+    parallelForEachInTurn(parts.size(), [&](size_t i) {
+      if (sequential.load(std::memory_order_relaxed)) return;
+      // A NUL byte anywhere: the sequential path names the first (rejectBinary).
+      if (std::memchr(parts[i].data(), '\0', parts[i].size())) {
+        sequential = true;
+        return;
+      }
+      try {
+        parsers[i].emplace(file, parts[i], /*chunk=*/i > 0);
+        parsers[i]->scan();
+      } catch (const NeedsSequentialScan&) {
+        sequential = true;
+      } catch (const InputError&) {
+        sequential = true;
+      }
+    });
     try {
-      parallelFor(parts.size(), 1, [&](size_t first, size_t last) {
-        for (size_t i = first; i < last; ++i) {
-          parsers[i].emplace(file, parts[i], /*chunk=*/i > 0);
-          parsers[i]->scan();
+      if (!sequential) {
+        if (std::optional<Mesh> mesh = ObjParser::buildPositionsOnly(parsers)) {
+          if (joined) *joined = true;
+          return std::move(*mesh);
         }
-      });
-      if (std::optional<Mesh> mesh = ObjParser::buildPositionsOnly(parsers)) {
-        if (joined) *joined = true;
-        return std::move(*mesh);
+        for (size_t i = 1; i < parsers.size(); ++i) parsers[0]->join(std::move(*parsers[i]));
+        if (parsers[0]->joinedIsClean()) {
+          Mesh mesh = parsers[0]->build();
+          if (joined) *joined = true;
+          return mesh;
+        }
       }
-      for (size_t i = 1; i < parsers.size(); ++i) parsers[0]->join(std::move(*parsers[i]));
-      if (parsers[0]->joinedIsClean()) {
-        Mesh mesh = parsers[0]->build();
-        if (joined) *joined = true;
-        return mesh;
-      }
-    } catch (const NeedsSequentialScan&) {
-    } catch (const InputError&) {
+    } catch (const InputError&) {  // a limit the joined file exceeds: the sequential scan words it
     }
   }
+  rejectBinary(file, data, "OBJ");
   return ObjParser(file, data).parse();
 }
 
 Mesh loadObj(const std::string& file, std::string_view data) {
-  rejectBinary(file, data, "OBJ");
-  const unsigned chunks = workerThreadCount(data.size(), kTextBytesPerChunk);
-  return chunks > 1 ? loadObjInChunks(file, data, chunks) : ObjParser(file, data).parse();
+  const unsigned threads = workerThreadCount(data.size(), kTextBytesPerChunk);
+  if (threads <= 1) {
+    rejectBinary(file, data, "OBJ");
+    return ObjParser(file, data).parse();
+  }
+  const size_t chunks = std::min<size_t>(size_t{threads} * kObjChunksPerThread, data.size() / kObjMinChunkBytes);
+  return loadObjInChunks(file, data, static_cast<unsigned>(std::max<size_t>(chunks, threads)));
 }
 
 }  // namespace marble::mesh_detail

@@ -353,7 +353,8 @@ void settlePoint(const Corners& in, const uint32_t* list, uint32_t k, Scratch& s
   if (!s.kept.empty()) settleFans(in, s.kept.data(), static_cast<uint32_t>(s.kept.size()), s, normals, out);
 }
 
-size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point, bool dropDuplicates) {
+size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point, bool dropDuplicates,
+                      PageBuffer* recycled) {
   const size_t nv = mesh.positions.size();
   const size_t corners = mesh.indices.size() / 3 * 3;
   const size_t triangles = corners / 3;
@@ -374,8 +375,13 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   // apart).
   // Fresh arrays of this size are left unset (make_unique_for_overwrite) where every element the
   // later passes read is written first: zeroing 77 MB (1.6 M triangles) on the calling thread
-  // faulted in every page there, before the threads wrote them again.
-  const std::unique_ptr<Triangle[]> triangle = std::make_unique_for_overwrite<Triangle[]>(triangles);
+  // faulted in every page there, before the threads wrote them again. The records go into
+  // `recycled` when given (pages faulted in already: page_buffer.h).
+  PageBuffer ownRecords;
+  PageBuffer& records = recycled ? *recycled : ownRecords;
+  records.resize(triangles * sizeof(Triangle));
+  Triangle* const triangle = reinterpret_cast<Triangle*>(records.data());
+  std::uninitialized_default_construct_n(triangle, triangles);  // trivial: no code, only their lifetimes
   std::vector<std::vector<uint32_t>> count(threads), notFiled(threads);
   constexpr size_t kAhead = 8;
   onEachThread([&](unsigned thread) {
@@ -391,6 +397,10 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
             __builtin_prefetch(&point[ahead[k]]);
             __builtin_prefetch(&mesh.positions[ahead[k]]);
           }
+        // The counts of a triangle half as far ahead, whose points were prefetched above then.
+        const uint32_t* half = &mesh.indices[3 * (t + kAhead / 2)];
+        for (int k = 0; k < 3; ++k)
+          if (half[k] < nv) __builtin_prefetch(&n[point[half[k]]], 1);
       }
       Triangle& out = triangle[t];
       out.point[0] = kNone;
@@ -443,6 +453,8 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   onEachThread([&](unsigned thread) {
     uint32_t* const slot = count[thread].data();
     for (size_t t = triangles * thread / threads, end = triangles * (thread + 1) / threads; t < end; ++t) {
+      if (t + kAhead < end && triangle[t + kAhead].point[0] != kNone)
+        for (uint32_t k = 0; k < 3; ++k) __builtin_prefetch(&slot[triangle[t + kAhead].point[k]], 1);
       const Triangle& tri = triangle[t];
       if (tri.point[0] == kNone) continue;
       for (uint32_t k = 0; k < 3; ++k) byPoint[slot[tri.point[k]]++] = static_cast<uint32_t>(3 * t + k);
@@ -453,9 +465,13 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
   // Pass 3, per point: fans, normals, vertices. The threads take blocks of points in turn as they
   // finish (the cost per corner varies along the ids: a subdivided mesh's first points, the coarse
   // mesh's, have their corners spread over the file); each writes only its points' vertices' normals.
-  std::vector<glm::vec3> normals(nv, glm::vec3(0.0f, 1.0f, 0.0f));
+  // Room for the copies made below (capacityForCreaseCopies), so that appending them does not move
+  // the array.
+  std::vector<glm::vec3> normals;
+  normals.reserve(capacityForCreaseCopies(nv));
+  normals.resize(nv, glm::vec3(0.0f, 1.0f, 0.0f));
   std::vector<PointsOutput> outputs(threads);
-  const Corners in{triangle.get(),
+  const Corners in{triangle,
                    static_cast<float>(std::cos(creaseAngleDeg * std::numbers::pi / 180.0)),
                    creaseAngleDeg >= kNoCreaseDeg, dropDuplicates};
   std::atomic<size_t> nextBlock{0};
@@ -492,11 +508,8 @@ size_t computeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32
     if (hasTexcoords) mesh.texcoords.push_back(mesh.texcoords[copy.vertex]);
     normals.push_back(copy.normal);
   }
-  for (const CopyUse& use : uses) {
-    const auto made = std::lower_bound(copies.begin(), copies.end(), use.madeAt,
-                                       [](const Copy& a, uint32_t corner) { return a.corner < corner; });
-    mesh.indices[use.corner] = mesh.indices[made->corner];
-  }
+  // A use's copy was made at corner `madeAt`, whose index now names the copy.
+  for (const CopyUse& use : uses) mesh.indices[use.corner] = mesh.indices[use.madeAt];
   mesh.normals = std::move(normals);
   if (!dropDuplicates) return 0;
 
@@ -524,11 +537,12 @@ void computeVertexNormals(Mesh& mesh, float creaseAngleDeg) {
 }
 
 void computeVertexNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
-  computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/false);
+  computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/false, nullptr);
 }
 
-size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point) {
-  return computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/true);
+size_t removeDuplicatesAndComputeNormals(Mesh& mesh, float creaseAngleDeg, const std::vector<uint32_t>& point,
+                                         PageBuffer* recycled) {
+  return computeNormals(mesh, creaseAngleDeg, point, /*dropDuplicates=*/true, recycled);
 }
 
 }  // namespace marble

@@ -68,6 +68,7 @@ uniform float u_env_intensity;
 #include "marble_shading.glsl"
 #include "environment.glsl"
 #include "marble_light.glsl"
+#include "self_reflection.glsl"
 
 #include "display.glsl"
 
@@ -79,7 +80,8 @@ vec3 as_stored_half(vec3 v) {
   return vec3(unpackHalf2x16(packHalf2x16(v.rg)), unpackHalf2x16(packHalf2x16(vec2(v.b, 0.0))).x);
 }
 
-// The diffuse part at a surface pixel: the subsurface-blurred light x the albedo (see the top).
+// The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
+// mirrored in the surface, x the albedo (see the top).
 vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #if DIFFUSE_SOURCE == 2
   return texelFetch(u_diffuse, px, 0).rgb;
@@ -93,7 +95,11 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #if SURFACE_REUSE == 2
   vec3 light = texelFetch(u_surface_light, px, 0).rgb;
 #else
-  vec3 light = upsample_blurred(u_blurred, px, depth);
+  // With the stone's own light mirrored in its surface (self_reflection.glsl): reflected light,
+  // but the hit's albedo is taken as P's, so it joins the light the albedo multiplies.
+  vec3 P = surface_point(v_uv, depth);
+  vec3 light = upsample_blurred(u_blurred, px, depth) +
+               self_reflected_light(px, depth, P, N, normalize(u_camera_pos - P), u_ior);
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
 #endif

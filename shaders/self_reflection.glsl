@@ -1,0 +1,65 @@
+// The stone's own light mirrored in its surface (`marble` mode, post pass): what the camera sees
+// in the near-mirror specular layer where it reflects another part of the object that the camera
+// also sees -- the glowing handle of a back-lit teapot in the body beside it, a lit coil in the
+// crease next to it. Cycles' glossy indirect light (its specular layer's view of the object's
+// diffuse and transmitted light): 1 % of teapot-back's light and 0.4 % of bunny-back's, but thin
+// bright lines along dark edges, where SSIM weighs them (docs/quality.md, "Eighteenth session").
+// The bounce's mirrored part (bounce.glsl) carries light from the light's map only (surfaces the
+// light hits, mirrored through a wide Phong lobe); this carries whatever the camera sees lit --
+// transmission, the bounces, the lit side -- through the stone's sharp lobe.
+//
+// Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
+// JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at
+// SELF_REFLECTION_STEPS points spaced geometrically (each step SELF_REFLECTION_GROWTH times the
+// last, from SELF_REFLECTION_FIRST: the mesh is normalised to 2 units across, mesh.cpp, so the
+// march reaches 0.69 units, a third of the object, finely near P where creases are); the first
+// point behind the depth buffer's surface ends it: a hit where that surface lies within the last
+// step (plus two pixels' footprint) of the ray, else the ray passed behind a part (no light).
+// Approximations, each stated:
+// - a mirror: the GGX lobe at alpha = roughness^2 (0.0225 for the reference stone, 1.3 degrees)
+//   is narrower than the march resolves; the lobe's albedo is taken as Fresnel's exact factor at
+//   the view's cosine (Smith's masking takes under 2 % off up to 85 degrees at that alpha,
+//   bounce.glsl). Rougher stones blur their reflection; this keeps it sharp;
+// - only what the camera sees (screen space): parts hidden behind others or facing away are not
+//   mirrored (for those the bounce's mirrored part, from the light's map, remains);
+// - the radiance leaving the hit is its diffuse part, the blurred entering light there
+//   (upsample_blurred), times P's albedo (applied with P's own light by the post pass), not the
+//   hit's: exact for a flat stone, off by the veins' contrast on a veined one (the bounce's
+//   mirrored part makes the same choice); the hit's own highlight is not mirrored;
+// - where the hit is also a surface the light's map holds, the bounce's mirrored part counts some
+//   of the same light a second time. Measured by switching that part off (docs/quality.md,
+//   "Eighteenth session"): front- and side-lit SSIM moves by 0.0001-0.0012, and the back-lit
+//   scenes lose 0.0002-0.008 without it, so it stays.
+// Needs from the includer: u_depth, u_blurred, u_camera_pos, u_view_proj, surface_point,
+// upsample_blurred, fresnel_dielectric.
+
+const int SELF_REFLECTION_STEPS = 16;
+const float SELF_REFLECTION_FIRST = 0.004;  // world units: about a pixel of the 800^2 frame
+const float SELF_REFLECTION_GROWTH = 1.38;
+
+// The blurred entering light that P's specular layer mirrors toward the camera, before the albedo:
+// F(N.V) x the light at the surface the mirror ray reaches, or 0 where it reaches none on screen.
+// px: P's pixel; depth: its depth-buffer value.
+vec3 self_reflected_light(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float ior) {
+  ivec2 size = textureSize(u_depth, 0);
+  // One pixel's footprint at P, for the hit's tolerance.
+  float pixel = distance(surface_point((vec2(px) + vec2(1.5, 0.5)) / vec2(size), depth), P);
+  vec3 R = reflect(-V, N);
+  float t = SELF_REFLECTION_FIRST, previous = 0.0;
+  for (int i = 0; i < SELF_REFLECTION_STEPS; ++i) {
+    vec3 Q = P + R * t;
+    vec4 clip = u_view_proj * vec4(Q, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec3(0.0);  // off screen
+    ivec2 q = ivec2((ndc.xy * 0.5 + 0.5) * vec2(size));
+    float d = texelFetch(u_depth, q, 0).r;
+    if (q != px && d < 1.0 && ndc.z * 0.5 + 0.5 > d) {
+      vec3 S = surface_point((vec2(q) + 0.5) / vec2(size), d);
+      if (distance(S, Q) > (t - previous) + 2.0 * pixel) return vec3(0.0);  // passed behind a part
+      return fresnel_dielectric(max(dot(N, V), 0.0), ior) * upsample_blurred(u_blurred, q, d);
+    }
+    previous = t;
+    t *= SELF_REFLECTION_GROWTH;
+  }
+  return vec3(0.0);
+}

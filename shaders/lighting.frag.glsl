@@ -71,6 +71,7 @@ float thickness_at(vec3 p) {
 #include "marble_light.glsl"
 #include "bounce_upsample.glsl"
 #include "bounce_entry.glsl"
+#include "self_reflection.glsl"
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -423,7 +424,10 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
   // Light bounced off the object's other lit parts (bounce.glsl, gathered by the bounce pass).
-  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N, px);
+  // Its mirrored part only where the post pass finds no surface on screen to mirror instead.
+  bool mirrorsVisible = self_reflection_hit(px, texelFetch(u_depth, px, 0).r, P, N, V).x >= 0;
+  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) +
+                  marble_bounce(P, N, px, mirrorsVisible ? 0.0 : 1.0);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave

@@ -97,9 +97,11 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #else
   // With the stone's own light mirrored in its surface (self_reflection.glsl): reflected light,
   // but the hit's albedo is taken as P's, so it joins the light the albedo multiplies.
-  vec3 P = surface_point(v_uv, depth);
-  vec3 light = upsample_blurred(u_blurred, px, depth) +
-               self_reflected_light(px, depth, P, N, normalize(u_camera_pos - P), u_ior);
+  vec3 light = upsample_blurred(u_blurred, px, depth);
+  vec3 P = surface_point(v_uv, depth), V = normalize(u_camera_pos - P);
+  ivec2 hit = self_reflection_hit(px, depth, P, N, V);
+  if (hit.x >= 0)
+    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * upsample_blurred(u_blurred, hit, texelFetch(u_depth, hit, 0).r);
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
 #endif

@@ -37,10 +37,10 @@ const int SELF_REFLECTION_STEPS = 16;
 const float SELF_REFLECTION_FIRST = 0.004;  // world units: about a pixel of the 800^2 frame
 const float SELF_REFLECTION_GROWTH = 1.38;
 
-// The blurred entering light that P's specular layer mirrors toward the camera, before the albedo:
-// F(N.V) x the light at the surface the mirror ray reaches, or 0 where it reaches none on screen.
-// px: P's pixel; depth: its depth-buffer value.
-vec3 self_reflected_light(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float ior) {
+// The pixel whose surface P's mirror ray meets, or ivec2(-1) where it meets none the camera sees
+// (it leaves the screen, passes behind a part, or runs out of steps). px: P's pixel; depth: its
+// depth-buffer value; V: toward the camera.
+ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
   ivec2 size = textureSize(u_depth, 0);
   // One pixel's footprint at P, for the hit's tolerance.
   float pixel = distance(surface_point((vec2(px) + vec2(1.5, 0.5)) / vec2(size), depth), P);
@@ -50,16 +50,15 @@ vec3 self_reflected_light(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float i
     vec3 Q = P + R * t;
     vec4 clip = u_view_proj * vec4(Q, 1.0);
     vec3 ndc = clip.xyz / clip.w;
-    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec3(0.0);  // off screen
+    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return ivec2(-1);  // off screen
     ivec2 q = ivec2((ndc.xy * 0.5 + 0.5) * vec2(size));
     float d = texelFetch(u_depth, q, 0).r;
     if (q != px && d < 1.0 && ndc.z * 0.5 + 0.5 > d) {
       vec3 S = surface_point((vec2(q) + 0.5) / vec2(size), d);
-      if (distance(S, Q) > (t - previous) + 2.0 * pixel) return vec3(0.0);  // passed behind a part
-      return fresnel_dielectric(max(dot(N, V), 0.0), ior) * upsample_blurred(u_blurred, q, d);
+      return distance(S, Q) > (t - previous) + 2.0 * pixel ? ivec2(-1) : q;  // else: passed behind a part
     }
     previous = t;
     t *= SELF_REFLECTION_GROWTH;
   }
-  return vec3(0.0);
+  return ivec2(-1);
 }

@@ -81,8 +81,9 @@ vec3 as_stored_half(vec3 v) {
 }
 
 // The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
-// mirrored in the surface, x the albedo (see the top).
-vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
+// mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
+// surface's mirror ray meets the object on screen (self_reflection_hit), or -1.
+vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 #if DIFFUSE_SOURCE == 2
   return texelFetch(u_diffuse, px, 0).rgb;
 #else
@@ -95,11 +96,9 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #if SURFACE_REUSE == 2
   vec3 light = texelFetch(u_surface_light, px, 0).rgb;
 #else
-  // With the stone's own light mirrored in its surface (self_reflection.glsl): reflected light,
-  // but the hit's albedo is taken as P's, so it joins the light the albedo multiplies.
   vec3 light = upsample_blurred(u_blurred, px, depth);
-  vec3 P = surface_point(v_uv, depth), V = normalize(u_camera_pos - P);
-  ivec2 hit = self_reflection_hit(px, depth, P, N, V);
+  // The stone's own light mirrored in its surface (self_reflection.glsl): reflected light, but the
+  // hit's albedo is taken as P's, so it joins the light the albedo multiplies.
   if (hit.x >= 0)
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * upsample_blurred(u_blurred, hit, texelFetch(u_depth, hit, 0).r);
 #if SURFACE_REUSE == 1
@@ -113,25 +112,33 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 }
 
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
-// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2).
+// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2). Where
+// the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse),
+// not the environment behind it: the environment's reflection is left out there.
 vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
+  vec3 V = vec3(0.0);
+  ivec2 hit = ivec2(-1);
 #if SURFACE_REUSE == 2
   vec3 reflected = texelFetch(u_surface_reflected, px, 0).rgb;
 #else
   vec3 P = surface_point(v_uv, depth);
-  vec3 V = normalize(u_camera_pos - P);
+  V = normalize(u_camera_pos - P);
+  // A frame that reuses the stored diffuse part (DIFFUSE_SOURCE 2) needs the hit only for the
+  // environment.
+  if (DIFFUSE_SOURCE != 2 || u_env_intensity > 0.0) hit = self_reflection_hit(px, depth, P, N, V);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+  vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2,
+                                    hit.x >= 0 ? 0.0 : u_env_intensity);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);
 #endif
 #endif
   // Stored or computed, the same two values and the same sum (a multiply-add fused across this
   // sum in one program and not the other would break that: PassFixture.PatternOnlyFrames* checks).
-  return marble_diffuse(px, depth, N) + reflected;
+  return marble_diffuse(px, depth, N, V, hit) + reflected;
 }
 
 // The squared change of the normal from pixel p to its neighbour q, or -1 where q is off the

@@ -21,6 +21,7 @@
 #include <iostream>
 
 #include "box_mesh.h"
+#include "fresnel_dielectric.h"
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
@@ -62,13 +63,6 @@ Scene plateScene(float d, float cosView) {
   return s;
 }
 
-// Fresnel's exact factor for a dielectric (as marble_shading.glsl's fresnel_dielectric).
-float fresnel(float c, float eta) {
-  const float g = std::sqrt(eta * eta - 1.0f + c * c);
-  const float a = (g - c) / (g + c), b = (c * (g + c) - 1.0f) / (c * (g - c) + 1.0f);
-  return 0.5f * a * a * (1.0f + b * b);
-}
-
 struct Seen {
   float gain;      // at p, with the wall less without it (green)
   float mirrored;  // F(N.V) x the wall's radiance where p's mirror ray meets it (green)
@@ -82,7 +76,7 @@ Seen seenFrom(float d, float cosView) {
   const float sinView = std::sqrt(1.0f - cosView * cosView);
   const glm::vec3 w{kWall, kPlateTop + d * cosView / sinView, 0.0f};
   const float gain = linearRgbAround(img.first, s, p).g - linearRgbAround(img.second, s, p).g;
-  return {gain, fresnel(cosView, s.material.ior) * linearRgbAround(img.first, s, w).g};
+  return {gain, static_cast<float>(fresnelDielectric(cosView, s.material.ior)) * linearRgbAround(img.first, s, w).g};
 }
 
 }  // namespace

@@ -10,11 +10,11 @@
 // mirror rays meet it, read off the same pictures). The gains are with the wall less without it.
 // The bounce's own mirrored part (a wide Phong lobe from the light's map, bounce.glsl) is left out
 // wherever the mirror ray meets the wall on screen, so the wall is mirrored once.
-// Measured: 0.99 and 1.25 of the predicted difference at d = 0.3 and 0.45 (allowed 0.75-1.35; the
-// second's excess is not traced: the lighting pass decides for its texel, at half the resolution,
-// and the wall's radiance is read at one point of the mirror image). Control (main's: no
-// self-reflection, the bounce's mirrored part everywhere; rebuilt): 0.35 and 0.44, failing. With
-// both at once (the mirrored part not left out): 1.31 and 1.72, failing -- the wall counted twice.
+// Measured: 0.99 and 1.02 of the predicted difference at d = 0.3 and 0.45 (allowed 0.8-1.25).
+// Controls, rebuilt by hand: main's (no self-reflection, the bounce's mirrored part everywhere)
+// 0.35 and 0.44, failing; both at once (the mirrored part not left out; with the 16-step march of
+// the first version) 1.31 and 1.72, failing -- the wall counted twice; a march reaching 0.43
+// instead of 0.62 (10 steps x 1.68) 1.00 and 0.40, failing at 0.45, whose mirror ray is 0.48 long.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -91,7 +91,7 @@ TEST(SelfReflection, AGrazingViewMirrorsTheLitPartBeside) {
               << low.mirrored << ", high " << high.mirrored << ": measured / predicted " << measured / predicted
               << "\n";
     ASSERT_GT(predicted, 0.0f) << "the low view mirrors more of the wall";
-    EXPECT_GT(measured / predicted, 0.75f) << "d " << d;
-    EXPECT_LT(measured / predicted, 1.35f) << "d " << d;
+    EXPECT_GT(measured / predicted, 0.8f) << "d " << d;
+    EXPECT_LT(measured / predicted, 1.25f) << "d " << d;
   }
 }

@@ -46,6 +46,7 @@ layout(location = 3) out vec4 o_surface_light;      // SURFACE_REUSE 1: the upsa
 layout(location = 4) out vec4 o_surface_reflected;  // SURFACE_REUSE 1: the reflected light
 layout(binding = UNIT_POST_SURFACE_LIGHT) uniform sampler2D u_surface_light;          // SURFACE_REUSE 2
 layout(binding = UNIT_POST_SURFACE_REFLECTED) uniform sampler2D u_surface_reflected;  // SURFACE_REUSE 2
+layout(binding = UNIT_POST_MIRROR_HIT) uniform sampler2D u_mirror_hit;  // marble: the lighting pass's mirror hits
 layout(binding = UNIT_POST_HDR) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
 layout(binding = UNIT_POST_BLURRED) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
 layout(binding = UNIT_POST_DIFFUSE) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
@@ -111,6 +112,15 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 #endif
 }
 
+// Where pixel px's mirror ray meets the object on screen, or -1: the lighting pass marched it for
+// the entering texel nearest px (texel h sits at pixel h * scale, blur_texel.glsl), from that
+// texel's surface point; within a texel the pixels share it (the mirror image at the entering
+// light's resolution, half by default).
+ivec2 mirror_hit_at(ivec2 px) {
+  ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
+  return ivec2(texelFetch(u_mirror_hit, t, 0).xy);
+}
+
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
 // highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2). Where
 // the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse),
@@ -124,9 +134,7 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
 #else
   vec3 P = surface_point(v_uv, depth);
   V = normalize(u_camera_pos - P);
-  // A frame that reuses the stored diffuse part (DIFFUSE_SOURCE 2) needs the hit only for the
-  // environment.
-  if (DIFFUSE_SOURCE != 2 || u_env_intensity > 0.0) hit = self_reflection_hit(px, depth, P, N, V);
+  hit = mirror_hit_at(px);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);

@@ -11,8 +11,8 @@
 // (o_mirror_hit); the post pass adds F x the blurred light there (post.frag.glsl, mirror_hit_at),
 // and the lighting pass keeps the bounce's mirrored part only where the ray meets nothing on
 // screen (bounce_upsample.glsl), so no light is mirrored twice. Marched per pixel in the post
-// pass instead, the ten reference scenes' mean SSIM was 0.0001 higher for 1.16x the camera frame
-// (docs/performance.md, "Eighteenth session").
+// pass instead, the ten reference scenes' mean SSIM was 0.0002 higher for 1.16x the camera frame
+// against 1.049x (docs/performance.md, "Eighteenth session").
 //
 // Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
 // JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at

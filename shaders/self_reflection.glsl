@@ -32,7 +32,7 @@
 // - only what the camera sees (screen space): parts hidden behind others or facing away are not
 //   mirrored here (the bounce's mirrored part, from the light's map, stands in for them);
 // - the radiance leaving the hit is its diffuse part, the blurred entering light there
-//   (upsample_blurred), times P's albedo (applied with P's own light by the post pass), not the
+//   (its nearest blur texel), times P's albedo (applied with P's own light by the post pass), not the
 //   hit's: exact for a flat stone, off by the veins' contrast on a veined one (the bounce's
 //   mirrored part makes the same choice); the hit's own highlight is not mirrored.
 // Measured (tests/self_reflection_gl_test.cpp): a plate mirroring a lit wall at N.V 0.2 and 0.45,

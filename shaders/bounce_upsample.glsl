@@ -24,8 +24,10 @@ uniform float u_ior;         // the emitters' Fresnel F0 (the mirrored part's Fr
 
 // Irradiance / PI that all bounces bring to the surface at full-resolution pixel px (point P,
 // normal N), before P's own albedo and entry; with it, over P's albedo, the bounce's light that P's
-// specular layer mirrors toward the camera (bounce.glsl, since session 10).
-vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
+// specular layer mirrors toward the camera (bounce.glsl, since session 10), times `mirrored`: 0
+// where P's mirror ray meets a surface the camera sees, whose light the post pass mirrors instead
+// (self_reflection.glsl; the same light counted once), else 1.
+vec3 marble_bounce(vec3 P, vec3 N, ivec2 px, float mirrored) {
   // rgb: the emitters' albedo and Fresnel factors already applied (bounce_merge.glsl). From the
   // refined grid where its texel at or just before px (the first of the four the upsample reads)
   // was refined or, for a coarse sample's own texel, has a refined neighbour; from the coarse grid
@@ -41,5 +43,5 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px) {
   // vein's contrast to the base colour), and it is spread by the subsurface blur's millimetres.
   float m = 1.0 - clamp(dot(N, normalize(u_camera_pos - P)), 0.0, 1.0), m2 = m * m;
   float Fv = F0 + (1.0 - F0) * m2 * m2 * m;
-  return u_light_radiance * (b.rgb + Fv * b.a);
+  return u_light_radiance * (b.rgb + mirrored * Fv * b.a);
 }

@@ -11,6 +11,7 @@ layout(location = 0) out vec4 o_color;
 // the screen-space subsurface blur; o_color is then not drawn (the post pass adds what the
 // surface reflects). The pass binds only the output its mode uses.
 layout(location = 1) out vec4 o_diffuse;
+layout(location = 2) out vec4 o_mirror_hit;  // `marble`: the pixel the mirror ray meets (xy), -1 none
 
 layout(binding = UNIT_LIGHTING_ALBEDO) uniform sampler2D u_albedo;
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
@@ -71,6 +72,7 @@ float thickness_at(vec3 p) {
 #include "marble_light.glsl"
 #include "bounce_upsample.glsl"
 #include "bounce_entry.glsl"
+#include "self_reflection.glsl"
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -418,12 +420,16 @@ float entry_hidden_by(vec3 entry) {
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
 // P_in and s_cos: the transmission's exit and transmission_thickness(P_in), computed once in main()
 // for this and glow_rings_shared.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s_cos, vec3 glow_rings) {
+vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s_cos, vec3 glow_rings,
+                     bool mirrorsVisible) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
   // Light bounced off the object's other lit parts (bounce.glsl, gathered by the bounce pass).
-  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + marble_bounce(P, N, px);
+  // Its mirrored part only where the mirror ray meets no surface on screen, which the post pass
+  // mirrors instead (mirrorsVisible: self_reflection_hit, written to o_mirror_hit for it).
+  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) +
+                  marble_bounce(P, N, px, mirrorsVisible ? 0.0 : 1.0);
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
@@ -514,7 +520,10 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings), linear_depth(depth, u_camera_near_far));
+    ivec2 hit = self_reflection_hit(px, depth, P, N, V);
+    o_mirror_hit = vec4(vec2(hit), 0.0, 0.0);
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0),
+                     linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {
     vec3 sss = paper_subsurface(u_sigma_t * thickness_at(P), u_k_sss) * u_light_radiance;

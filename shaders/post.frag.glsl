@@ -46,6 +46,7 @@ layout(location = 3) out vec4 o_surface_light;      // SURFACE_REUSE 1: the upsa
 layout(location = 4) out vec4 o_surface_reflected;  // SURFACE_REUSE 1: the reflected light
 layout(binding = UNIT_POST_SURFACE_LIGHT) uniform sampler2D u_surface_light;          // SURFACE_REUSE 2
 layout(binding = UNIT_POST_SURFACE_REFLECTED) uniform sampler2D u_surface_reflected;  // SURFACE_REUSE 2
+layout(binding = UNIT_POST_MIRROR_HIT) uniform sampler2D u_mirror_hit;  // marble: the lighting pass's mirror hits
 layout(binding = UNIT_POST_HDR) uniform sampler2D u_hdr;       // other modes: the lighting pass's image
 layout(binding = UNIT_POST_BLURRED) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
 layout(binding = UNIT_POST_DIFFUSE) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
@@ -68,6 +69,7 @@ uniform float u_env_intensity;
 #include "marble_shading.glsl"
 #include "environment.glsl"
 #include "marble_light.glsl"
+#include "self_reflection.glsl"
 
 #include "display.glsl"
 
@@ -83,8 +85,10 @@ vec3 as_stored_half(vec3 v) {
   return vec3(unpackHalf2x16(packHalf2x16(v.rg)), unpackHalf2x16(packHalf2x16(vec2(v.b, 0.0))).x);
 }
 
-// The diffuse part at a surface pixel: the subsurface-blurred light x the albedo (see the top).
-vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
+// The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
+// mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
+// surface's mirror ray meets the object on screen (self_reflection_hit), or -1.
+vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 #if DIFFUSE_SOURCE == 2
   return texelFetch(u_diffuse, px, 0).rgb;
 #else
@@ -98,6 +102,15 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
   vec3 light = texelFetch(u_surface_light, px, 0).rgb;
 #else
   precise vec3 light = upsample_blurred(u_blurred, px, depth);
+  // The stone's own light mirrored in its surface (self_reflection.glsl): reflected light, but the
+  // hit's albedo is taken as P's, so it joins the light the albedo multiplies. The blurred light
+  // of the blur texel nearest the hit, not the depth-aware upsample: the hit lies on a surface the
+  // march found, and the upsample's four taps cost 10.6 M instructions of the dragon's 800^2
+  // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
+  if (hit.x >= 0) {
+    ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
+    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * texelFetch(u_blurred, texel, 0).rgb;
+  }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
 #endif
@@ -108,19 +121,34 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N) {
 #endif
 }
 
+// Where pixel px's mirror ray meets the object on screen, or -1: the lighting pass marched it for
+// the entering texel nearest px (texel h sits at pixel h * scale, blur_texel.glsl), from that
+// texel's surface point; within a texel the pixels share it (the mirror image at the entering
+// light's resolution, half by default).
+ivec2 mirror_hit_at(ivec2 px) {
+  ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
+  return ivec2(texelFetch(u_mirror_hit, t, 0).xy);
+}
+
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
-// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2).
+// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2). Where
+// the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse),
+// not the environment behind it: the environment's reflection is left out there.
 vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
+  vec3 V = vec3(0.0);
+  ivec2 hit = ivec2(-1);
 #if SURFACE_REUSE == 2
   vec3 reflected = texelFetch(u_surface_reflected, px, 0).rgb;
 #else
   vec3 P = surface_point(v_uv, depth);
-  vec3 V = normalize(u_camera_pos - P);
+  V = normalize(u_camera_pos - P);
+  hit = mirror_hit_at(px);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2, u_env_intensity);
+  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2,
+                                             hit.x >= 0 ? 0.0 : u_env_intensity);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);
 #endif
@@ -132,7 +160,7 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   // a cached frame must equal a fresh one bit for bit; without it a compiler may fuse a multiply
   // with an add in one variant and not in another (NVIDIA's does, per program; llvmpipe's does
   // not), which GLSL allows. docs/performance.md, "Eighteenth session".
-  precise vec3 composed = marble_diffuse(px, depth, N) + reflected;
+  precise vec3 composed = marble_diffuse(px, depth, N, V, hit) + reflected;
   return composed;
 }
 

@@ -34,13 +34,15 @@ void LightingPass::resize(int width, int height, int enteringScale, GLuint depth
     enteringHeight_ = (height + enteringScale - 1) / enteringScale;
     hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
     entering_ = gl::makeTexture2D(GL_RGBA16F, enteringWidth_, enteringHeight_, GL_LINEAR);
+    mirrorHit_ = gl::makeTexture2D(GL_RG32F, enteringWidth_, enteringHeight_, GL_NEAREST);  // whole pixels
     // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
     fbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
     enteringFbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT1, entering_.id(), 0);
-    const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(enteringFbo_.id(), 2, bufs);
+    glNamedFramebufferTexture(enteringFbo_.id(), GL_COLOR_ATTACHMENT2, mirrorHit_.id(), 0);
+    const GLenum bufs[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(enteringFbo_.id(), 3, bufs);
   }
   // Borrowed: attached every time, never compared by name (gl::Borrowed).
   gl::attachSurfaceDepth(fbo_.id(), depthTexture);
@@ -65,6 +67,8 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   const float zero[4] = {0, 0, 0, 0};
   gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
+  const float none[4] = {-1, -1, 0, 0};  // no mirror hit
+  if (marble) glClearNamedFramebufferfv(fbo, GL_COLOR, 2, none);
   if (marble)
     scissorTo(scaledDown(rect, enteringScale_));
   else if (!wholeFrame)

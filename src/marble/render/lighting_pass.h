@@ -39,8 +39,10 @@ public:
            const EnvironmentMap* environment);  // used when the scene asks for a map; null: none loaded
   GLuint hdrTexture() const { return hdr_.id(); }  // every mode but `marble`: the picture
   GLuint enteringTexture() const { return entering_.id(); }  // `marble`: light entering the stone
+  // `marble`: per entering texel, the pixel its mirror ray meets (self_reflection.glsl), -1 none.
+  GLuint mirrorHitTexture() const { return mirrorHit_.id(); }
   size_t bytes() const {
-    return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>(enteringWidth_) * enteringHeight_ * 8;
+    return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>(enteringWidth_) * enteringHeight_ * 16;
   }
   PassTimer& timer() { return timer_; }
   // Compiles the program of every mode now (after a shader reload).
@@ -49,7 +51,7 @@ public:
 private:
   static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment);
   gl::ProgramVariants programs_;
-  gl::Texture hdr_, entering_;
+  gl::Texture hdr_, entering_, mirrorHit_;
   gl::Framebuffer fbo_, enteringFbo_;
   int width_ = 0, height_ = 0, enteringWidth_ = 0, enteringHeight_ = 0, enteringScale_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws

@@ -133,6 +133,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
   glNamedFramebufferDrawBuffers(targetFbo, outputs, all);
   const GLuint textures[] = {in.hdr, in.depth, in.blurred, diffuse_.id(), in.albedo, in.normal, in.lightShadow};
   glBindTextures(shader::UNIT_POST_HDR, 7, textures);
+  if (marble) glBindTextureUnit(shader::UNIT_POST_MIRROR_HIT, in.mirrorHit);
   if (reuse == SurfaceReuse::Read) {
     glBindTextureUnit(shader::UNIT_POST_SURFACE_LIGHT, surfaceLightTexture());
     glBindTextureUnit(shader::UNIT_POST_SURFACE_REFLECTED, surfaceReflectedTexture());

@@ -19,6 +19,7 @@ struct PostInputs {
   GLuint depth = 0;  // the G-buffer's depth (where the background is)
   // `marble` only:
   GLuint blurred = 0, albedo = 0, normal = 0, lightShadow = 0;
+  GLuint mirrorHit = 0;  // the lighting pass's mirror hits (self_reflection.glsl)
 };
 
 // The frame's camera and light (the `marble` composition needs them), and the model matrix

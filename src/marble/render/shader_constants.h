@@ -51,6 +51,7 @@
   X(UNIT_POST_LIGHT_SHADOW, 6)                                                                          \
   X(UNIT_POST_SURFACE_LIGHT, 9)      /* SURFACE_REUSE 2: the stored upsampled light */                  \
   X(UNIT_POST_SURFACE_REFLECTED, 10) /* SURFACE_REUSE 2: the stored reflected light */                  \
+  X(UNIT_POST_MIRROR_HIT, 11)        /* marble: where the lighting pass's mirror rays meet the object */ \
   /* stage.frag.glsl (its depth: UNIT_SURFACE_DEPTH) */                                                 \
   X(UNIT_STAGE_LIGHT_SHADOW, 6)                                                                         \
   X(UNIT_STAGE_BOTTOM_DISTANCE, 8)

@@ -13,16 +13,7 @@ namespace marble {
 namespace {
 
 using test::glContext;
-
-// Swaps in a handler that records, for the span of one test, and puts the suite's back.
-class RecordedMessages {
-public:
-  RecordedMessages() {
-    gl::enableDebugOutput([this](const gl::DebugMessage& m) { messages.push_back(m); });
-  }
-  ~RecordedMessages() { gl::enableDebugOutput(test::failOnSevereGlMessages); }
-  std::vector<gl::DebugMessage> messages;
-};
+using test::RecordedMessages;
 
 TEST(GlDebugOutput, AnInvalidCallIsReportedAsASevereErrorInsideTheCall) {
   glContext();

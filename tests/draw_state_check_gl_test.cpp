@@ -19,15 +19,7 @@ namespace marble {
 namespace {
 
 using test::glContext;
-
-class RecordedMessages {
-public:
-  RecordedMessages() {
-    gl::enableDebugOutput([this](const gl::DebugMessage& m) { messages.push_back(m); });
-  }
-  ~RecordedMessages() { gl::enableDebugOutput(test::failOnSevereGlMessages); }
-  std::vector<gl::DebugMessage> messages;
-};
+using test::RecordedMessages;
 
 constexpr int kShadowUnit = 4, kColorUnit = 5;
 

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "marble/gl/debug_output.h"
 #include "marble/gl/headless_context.h"
@@ -23,6 +24,19 @@ inline void failOnSevereGlMessages(const gl::DebugMessage& m) {
   else
     gl::printDebugMessage(m);
 }
+
+// Swaps in a handler that records the messages, for the span of one test, and puts the suite's
+// handler back.
+class RecordedMessages {
+public:
+  RecordedMessages() {
+    gl::enableDebugOutput([this](const gl::DebugMessage& m) { messages.push_back(m); });
+  }
+  ~RecordedMessages() { gl::enableDebugOutput(failOnSevereGlMessages); }
+  RecordedMessages(const RecordedMessages&) = delete;
+  RecordedMessages& operator=(const RecordedMessages&) = delete;
+  std::vector<gl::DebugMessage> messages;
+};
 
 inline HeadlessContext& glContext() {
   static std::unique_ptr<HeadlessContext> ctx = [] {

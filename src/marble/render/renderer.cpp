@@ -287,7 +287,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   }
   passes_->geometry.resize(width, height);
   if (stale(Pass::Geometry)) {
-    passes_->geometry.run(cameraMesh(), model, camera, marble);
+    passes_->geometry.run(cameraMesh(), model, camera);
     ran(Pass::Geometry);
   }
   const ScreenRect rect =

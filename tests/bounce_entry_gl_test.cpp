@@ -28,15 +28,7 @@ using namespace marble::test;
 
 namespace {
 
-constexpr float kWall = 0.1f, kPlateTop = -0.6f, kPlate = 0.05f;  // 5 mm at 100 mm per unit
-
-Mesh plateWithWall(bool withWall) {
-  Mesh m;
-  if (withWall) addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  addBox(m, {kWall, kPlateTop - kPlate, -1.0f}, {1.0f, kPlateTop, 1.0f});
-  computeVertexNormals(m, 60.0f);  // flat faces
-  return m;
-}
+using namespace marble::test::thin_plate;
 
 Scene plateScene(bool fromBelow) {
   Scene s;

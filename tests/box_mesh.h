@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "marble/mesh/mesh.h"
+#include "marble/mesh/vertex_normals.h"
 
 namespace marble::test {
 
@@ -20,5 +21,20 @@ inline void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
   for (const auto& q : quads)
     for (int t : {0, 1, 2, 0, 2, 3}) m.indices.push_back(base + static_cast<uint32_t>(q[t]));
 }
+
+// The bounce tests' thin plate (5 mm at 100 mm per unit, its top at y = kPlateTop, x from kWall to
+// 1) with, optionally, a wall standing on its end (x in [-kWall, kWall], up to y = 1); z in
+// [-1, 1]. Flat faces. In a namespace of its own: other tests name their own kWall.
+namespace thin_plate {
+constexpr float kWall = 0.1f, kPlateTop = -0.6f, kPlate = 0.05f;
+
+inline Mesh plateWithWall(bool withWall) {
+  Mesh m;
+  if (withWall) addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  addBox(m, {kWall, kPlateTop - kPlate, -1.0f}, {1.0f, kPlateTop, 1.0f});
+  computeVertexNormals(m, 60.0f);  // flat faces
+  return m;
+}
+}  // namespace thin_plate
 
 }  // namespace marble::test

@@ -32,15 +32,7 @@ using namespace marble::test;
 
 namespace {
 
-constexpr float kWall = 0.1f, kPlateTop = -0.6f, kPlate = 0.05f;
-
-Mesh plateWithWall(bool withWall) {
-  Mesh m;
-  if (withWall) addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  addBox(m, {kWall, kPlateTop - kPlate, -1.0f}, {1.0f, kPlateTop, 1.0f});
-  computeVertexNormals(m, 60.0f);  // flat faces
-  return m;
-}
+using namespace marble::test::thin_plate;
 
 // The camera on the plate's far side at N.V = cosView toward the plate's point at distance d from
 // the wall, 1.5 away from it.

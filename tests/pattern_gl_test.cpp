@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl_support.h"
+#include "marble/gl/checked_calls.h"
 #include "marble/gl/draw_state_check.h"
 #include "marble/gl/headless_context.h"
 #include "marble/gl/shader_library.h"
@@ -163,8 +164,7 @@ protected:
     uploadMaterialUniforms(program, gl::lookUpUniforms(program, materialUniformNames()), m);
     glUseProgram(program);
     for (GLuint i = 0; i < 3; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, buffers_[i]);
-    gl::checkBeforeDraw();
-    glDispatchCompute(kPoints / 64, 1, 1);
+    gl::dispatchCompute(kPoints / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> out(2 * kPoints);
     glGetNamedBufferSubData(buffers_[2], 0, static_cast<GLsizeiptr>(out.size() * sizeof(glm::vec4)), out.data());

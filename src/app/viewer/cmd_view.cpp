@@ -22,6 +22,7 @@
 #include "glfw_window.h"
 #include "marble/core/error.h"
 #include "marble/core/image.h"
+#include "marble/gl/checked_calls.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
 #include "../shader_source.h"
@@ -234,10 +235,10 @@ int runViewCommand(const ViewOptions& o) {
       glViewport(0, 0, fw, fh);
       const glm::vec3 bg = s.scene.render.background;
       glClearColor(bg.r, bg.g, bg.b, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT);
+      gl::clearBound(GL_COLOR_BUFFER_BIT);
       if (r.width > 0)
-        glBlitNamedFramebuffer(view->fbo(), 0, 0, 0, r.width, r.height, r.x, 0, r.x + r.width, r.height,
-                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        gl::blitFramebuffer(view->fbo(), 0, 0, 0, r.width, r.height, r.x, 0, r.x + r.width, r.height,
+                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
       const bool lastFrame = o.frames > 0 && frame + 1 == o.frames;

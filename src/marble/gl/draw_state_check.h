@@ -27,9 +27,8 @@ inline bool drawStateChecksOn = false;
 // Checks the current program's active samplers against what their units hold now.
 void checkDrawState();
 
-// Called right before every glDraw*, glDispatch*, clear and blit of the renderer
-// (drawFullscreenTriangle, GpuMesh::draw, the subsurface blur's two draws, the bounce pass's
-// dispatches, the passes' clears, the renderer's and the floor's blits).
+// Runs before every draw, dispatch, clear and blit: the functions of gl/checked_calls.h call it,
+// and marble's code calls those, never the raw commands (a source rule test holds it to that).
 inline void checkBeforeDraw() {
   if (drawStateChecksOn) checkDrawState();
 }

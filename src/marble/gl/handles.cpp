@@ -1,5 +1,7 @@
 #include "marble/gl/handles.h"
 
+#include "marble/gl/checked_calls.h"
+
 namespace marble::gl {
 long& liveObjectCount() {
   static long count = 0;
@@ -81,8 +83,7 @@ void setSurfaceOnlyScreenPassState() {
 void drawFullscreenTriangle(GLuint program, GLuint emptyVao) {
   glUseProgram(program);
   glBindVertexArray(emptyVao);
-  checkBeforeDraw();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(GL_TRIANGLES, 0, 3);
 }
 
 }  // namespace marble::gl

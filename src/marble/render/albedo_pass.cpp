@@ -1,5 +1,6 @@
 #include "marble/render/albedo_pass.h"
 
+#include "marble/gl/checked_calls.h"
 #include "marble/noise/marble_pattern.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/material_uniforms.h"
@@ -71,8 +72,7 @@ void AlbedoPass::run(GLuint depthTexture, GLuint normalTexture, const glm::mat4&
   glViewport(0, 0, width_, height_);
   gl::setSurfaceOnlyScreenPassState();
   const float zero[4] = {0, 0, 0, 0};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+  gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, zero);
   scissorTo(rect);
   const GLuint textures[] = {depthTexture, normalTexture};
   glBindTextures(shader::UNIT_ALBEDO_DEPTH, 2, textures);

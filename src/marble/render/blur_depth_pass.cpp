@@ -1,5 +1,6 @@
 #include "marble/render/blur_depth_pass.h"
 
+#include "marble/gl/checked_calls.h"
 #include "marble/render/shader_constants.h"
 
 namespace marble {
@@ -36,8 +37,7 @@ void BlurDepthPass::run(const ScreenRect& rect) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);  // every texel takes its pixel's depth (setScreenPassState left writes on)
   const float one = 1.0f;
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, gBufferDepth_.id());
   program_.set("u_scale", scale_);

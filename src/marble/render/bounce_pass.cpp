@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "marble/gl/draw_state_check.h"
+#include "marble/gl/checked_calls.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -84,8 +84,7 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, kNone);
+  gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
@@ -111,7 +110,6 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   const ScreenRect cells = scaledDown(rect, scale_);
   const int fx0 = std::max(2 * cells.x - 1, 0), fy0 = std::max(2 * cells.y - 1, 0);
   const int fx1 = std::min(2 * (cells.x + cells.width) + 1, fineWidth_), fy1 = std::min(2 * (cells.y + cells.height) + 1, fineHeight_);
-  gl::checkBeforeDraw();
   if (fx1 > fx0 && fy1 > fy0)
     glClearTexSubImage(bounce_.id(), 0, width_ + fx0, fy0, 0, fx1 - fx0, fy1 - fy0, 1, GL_RGBA, GL_FLOAT, kNone);
   // The list's header: the gather's dispatch of {0, 1, 1} workgroups, no texel yet.
@@ -131,10 +129,9 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
   // prior to the barrier complete").
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   const int groups = shader::BOUNCE_MARK_GROUP;
-  gl::checkBeforeDraw();
   if (!cells.empty())
-    glDispatchCompute(static_cast<GLuint>((cells.width + groups - 1) / groups),
-                      static_cast<GLuint>((cells.height + groups - 1) / groups), 1);
+    gl::dispatchCompute(static_cast<GLuint>((cells.width + groups - 1) / groups),
+                        static_cast<GLuint>((cells.height + groups - 1) / groups), 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
@@ -145,8 +142,7 @@ void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices
   refineProgram_.set("u_scale", scale_ / 2);
   glUseProgram(refineProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
-  gl::checkBeforeDraw();
-  glDispatchComputeIndirect(0);
+  gl::dispatchComputeIndirect(0);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
@@ -161,8 +157,7 @@ void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices&
   refineMergeProgram_.set("u_further_scale", 2 * scale_);
   glUseProgram(refineMergeProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
-  gl::checkBeforeDraw();
-  glDispatchComputeIndirect(0);
+  gl::dispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   // The mark's and the merge's stores into bounce_: fetched by the lighting pass, then (the next
   // frame) overwritten by the coarse merge's clear and draw (framebuffer) and the mark's
@@ -200,8 +195,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   // The first bounce, from the light's map.
   glBindFramebuffer(GL_FRAMEBUFFER, firstFbo_.id());
   glViewport(0, 0, width_, height_);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(firstFbo_.id(), GL_COLOR, 0, kNone);
+  gl::clearFramebuffer(firstFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
@@ -209,8 +203,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   // The further bounces, from the first, on the grid twice as coarse.
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(furtherFbo_.id(), GL_COLOR, 0, kNone);
+  gl::clearFramebuffer(furtherFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, 2 * scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
   setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "marble/gl/checked_calls.h"
+
 namespace marble {
 
 FloorPass::FloorPass(const ShaderLibrary& shaders)
@@ -27,10 +29,8 @@ void FloorPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMat
   gl::setMeshPassState();
   const glm::vec4 clear(background, 1.0f);
   const float one = 1.0f;
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &clear.x);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, &clear.x);
+  gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);
   program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
@@ -38,9 +38,8 @@ void FloorPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMat
   program_.set("u_color", color);
   glUseProgram(program_.id());
   mesh.draw();
-  gl::checkBeforeDraw();
-  glBlitNamedFramebuffer(fbo_.id(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                         GL_NEAREST);
+  gl::blitFramebuffer(fbo_.id(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
   timer_.end();
 }
 

@@ -1,5 +1,6 @@
 #include "marble/render/fxaa_pass.h"
 
+#include "marble/gl/checked_calls.h"
 #include "marble/render/shader_constants.h"
 
 namespace marble {
@@ -26,8 +27,7 @@ void FxaaPass::run(GLuint displayImage, GLuint targetFbo, int width, int height,
   // so the flat background outside the spans is cleared instead of filtered.
   const glm::vec4 clear(background, 1.0f);
   scissorTo({0, 0, width, height});  // the target may be larger than the frame
-  gl::checkBeforeDraw();
-  glClearBufferfv(GL_COLOR, 0, &clear.x);
+  gl::clearBoundFramebuffer(GL_COLOR, 0, &clear.x);
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, displayImage);
   program_.set("u_texel", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
   // Each span is the full-screen triangle scissored to it, not two triangles of its own: llvmpipe

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "marble/gl/checked_calls.h"
+
 namespace marble {
 
 GeometryPass::GeometryPass(const ShaderLibrary& shaders)
@@ -25,10 +27,8 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   gl::setMeshPassState();
   const float zero[4] = {0, 0, 0, 0};
   const float one = 1.0f;
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, zero);
+  gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);
   program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "marble/gl/draw_state_check.h"
+#include "marble/gl/checked_calls.h"
 
 namespace marble {
 
@@ -39,8 +39,7 @@ GpuMesh::GpuMesh(const Mesh& mesh)
 
 void GpuMesh::draw() const {
   glBindVertexArray(vao_.id());
-  gl::checkBeforeDraw();
-  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  gl::drawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
 }
 
 }  // namespace marble

@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "marble/gl/checked_calls.h"
+
 namespace marble {
 namespace {
 
@@ -65,11 +67,9 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   gl::setMeshPassState();  // both faces: meshes with holes must still block the light
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, farValue);
+  gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, farValue);
   const float one = 1.0f;
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", light.viewProj);
   program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
@@ -82,12 +82,9 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glBindFramebuffer(GL_FRAMEBUFFER, bounceFbo_.id());
   glViewport(0, 0, bounceSize_, bounceSize_);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 1, zero);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(bounceFbo_.id(), GL_COLOR, 2, zero);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(bounceFbo_.id(), GL_DEPTH, 0, &one);
+  gl::clearFramebuffer(bounceFbo_.id(), GL_COLOR, 1, zero);
+  gl::clearFramebuffer(bounceFbo_.id(), GL_COLOR, 2, zero);
+  gl::clearFramebuffer(bounceFbo_.id(), GL_DEPTH, 0, &one);
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());

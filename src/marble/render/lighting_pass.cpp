@@ -1,5 +1,6 @@
 #include "marble/render/lighting_pass.h"
 
+#include "marble/gl/checked_calls.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -65,10 +66,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     gl::setSurfaceOnlyScreenPassState();
   // Outside the rectangle, and on the background, there is no surface: zero light.
   const float zero[4] = {0, 0, 0, 0};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
+  gl::clearFramebuffer(fbo, GL_COLOR, marble ? 1 : 0, zero);
   const float none[4] = {-1, -1, 0, 0};  // no mirror hit
-  if (marble) glClearNamedFramebufferfv(fbo, GL_COLOR, 2, none);
+  if (marble) gl::clearFramebuffer(fbo, GL_COLOR, 2, none);
   if (marble)
     scissorTo(scaledDown(rect, enteringScale_));
   else if (!wholeFrame)

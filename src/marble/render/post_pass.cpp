@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "marble/gl/checked_calls.h"
 #include "marble/noise/turbulence_grid.h"
 #include "marble/render/albedo_pass.h"
 #include "marble/render/frame_uniforms.h"
@@ -117,8 +118,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     // Alpha as the shader writes it: coverage 0, luma, or 1.
     const float alpha = output == Output::DisplayWithLuma ? fxaaLuma(background) : 1.0f;
     const glm::vec4 clear = linearOutput ? glm::vec4(0.0f) : glm::vec4(background, alpha);
-    gl::checkBeforeDraw();
-    glClearBufferfv(GL_COLOR, 0, &clear.x);
+    gl::clearBoundFramebuffer(GL_COLOR, 0, &clear.x);
     scissorTo(rect);
   }
   // The outputs this source writes besides the picture (post.frag.glsl): the diffuse part at 1,

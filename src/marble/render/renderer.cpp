@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "marble/gl/checked_calls.h"
 #include "marble/mesh/mesh_optimize.h"
 #include "marble/render/mesh_detail.h"
 #include "marble/scene/material_params.h"
@@ -230,9 +231,8 @@ void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int wid
   const int gx = std::gcd(width, rw), gy = std::gcd(height, rh);
   const int srcX = rw / gx, srcY = rh / gy, dstX = width / gx, dstY = height / gy;
   if (!contentRect_) {
-    gl::checkBeforeDraw();
-    glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, rw, rh, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                           GL_LINEAR);
+    gl::blitFramebuffer(reducedFrame_->fbo(), targetFbo, 0, 0, rw, rh, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                        GL_LINEAR);
     return;
   }
   // Outside contentRect_ the reduced frame is the flat background (as FXAA and the post pass
@@ -243,12 +243,10 @@ void Renderer::stretchReducedFrame(const Scene& scene, GLuint targetFbo, int wid
   const int x0 = std::max(0, c.x - 2) / srcX, x1 = std::min(gx, (c.x + c.width + 2 + srcX - 1) / srcX);
   const int y0 = std::max(0, c.y - 2) / srcY, y1 = std::min(gy, (c.y + c.height + 2 + srcY - 1) / srcY);
   const glm::vec4 background(glm::clamp(scene.render.background, 0.0f, 1.0f), 1.0f);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(targetFbo, GL_COLOR, 0, &background.x);
+  gl::clearFramebuffer(targetFbo, GL_COLOR, 0, &background.x);
   if (x1 <= x0 || y1 <= y0) return;
-  gl::checkBeforeDraw();
-  glBlitNamedFramebuffer(reducedFrame_->fbo(), targetFbo, x0 * srcX, y0 * srcY, x1 * srcX, y1 * srcY, x0 * dstX,
-                         y0 * dstY, x1 * dstX, y1 * dstY, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  gl::blitFramebuffer(reducedFrame_->fbo(), targetFbo, x0 * srcX, y0 * srcY, x1 * srcX, y1 * srcY, x0 * dstX,
+                      y0 * dstY, x1 * dstX, y1 * dstY, GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
@@ -404,9 +402,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   contentRect_.reset();
   if (!wholeFrame) contentRect_ = rect;
   if (!fxaa) {
-    gl::checkBeforeDraw();
-    glBlitNamedFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
+    gl::blitFramebuffer(display.fbo(), targetFbo, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                        GL_NEAREST);
   } else {
     // FXAA changes nothing on flat background: it draws only the tiles the mesh can cover (and
     // their neighbours); the rest of the target is the background.

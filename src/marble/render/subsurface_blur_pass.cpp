@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "marble/gl/draw_state_check.h"
+#include "marble/gl/checked_calls.h"
 #include "marble/render/shader_constants.h"
 
 namespace marble {
@@ -115,22 +115,18 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
 
   // Outside the (half-resolution) rectangle: no surface, zero light and zero coverage.
   const float zero[4] = {0, 0, 0, 0};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(horizontalFbo_.id(), GL_COLOR, 0, zero);
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(resultFbo_.id(), GL_COLOR, 0, zero);
+  gl::clearFramebuffer(horizontalFbo_.id(), GL_COLOR, 0, zero);
+  gl::clearFramebuffer(resultFbo_.id(), GL_COLOR, 0, zero);
   scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, in.entering);
   p.set("u_direction", glm::vec2(1, 0));
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
-  gl::checkBeforeDraw();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(GL_TRIANGLES, 0, 3);
 
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, horizontal_.id());
   p.set("u_direction", glm::vec2(0, 1));
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
-  gl::checkBeforeDraw();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(GL_TRIANGLES, 0, 3);
   scissorOff();
   timer_.end();
 }

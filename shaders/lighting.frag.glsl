@@ -11,9 +11,7 @@ layout(location = 0) out vec4 o_color;
 // the screen-space subsurface blur; o_color is then not drawn (the post pass adds what the
 // surface reflects). The pass binds only the output its mode uses.
 layout(location = 1) out vec4 o_diffuse;
-// `marble`: the pixel the mirror ray meets (xy); where it meets none the camera sees, x = -1 and
-// y the light of the hidden surface it meets behind a part (hidden_mirror_light), 0 if none.
-layout(location = 2) out vec4 o_mirror_hit;
+layout(location = 2) out vec4 o_mirror_hit;  // `marble`: the pixel the mirror ray meets (xy), -1 none
 
 layout(binding = UNIT_LIGHTING_ALBEDO) uniform sampler2D u_albedo;
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
@@ -475,34 +473,6 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
                      u_light_radiance * crossed) * u_translucency;
 }
 
-// The light of the surface that P's mirror ray meets behind a part, hidden from the camera
-// (luma; irradiance / PI before the albedo, as the entering light the post pass mirrors from
-// surfaces the camera sees). X: the middle of the march's step in which the ray passed behind
-// the depth buffer's surface (self_reflection_hit's behind_t). Back-lit, most of the stone's mirror image is of such
-// surfaces: the rays from rims and creases run away from the camera, behind the part in front,
-// to the far sides of other parts, which glow with the light crossing them (Cycles' mirror image
-// of the glowing stone, its specular layer's view of it, is 2.0x marble's on dragon-back and 2.3x
-// on buddha-back, and where the march passes behind a part it holds 10.1 and 7.7 of the 24.4 and
-// 16.1 luma sums; docs/quality.md, "Nineteenth session"). Where the light's map puts stone between
-// the light and X (a chord over two of its texels: X is inside a part, or just behind one, in its
-// shadow), that surface is taken to glow as the transmission's straight model has it at X
-// (gathered_transport without the rings, which cost 24 taps more): light that entered where the
-// map says, at its cosine, carried s millimetres by the walk's slab transport. Where the map puts
-// no stone in front of X, X is in the open on the light's side, and the surface the ray meets
-// beyond it is unknown: nothing (lit surfaces facing the ray are the bounce's mirrored part's).
-// Errors, each stated: the surface lies somewhere in that step, X at its middle (the chord off by
-// up to half the step; at the step's far point instead, buddha-back's SSIM was 0.0034 lower and the
-// ten scenes' mean 0.0004); the straight chord is 1.8-2.5x the
-// random walk across round 10 mm parts (docs/quality.md, "Eleventh session"); the colour is not
-// kept, only the luma (the hit texture has two channels).
-float hidden_mirror_light(vec3 X) {
-  vec2 s_cos = transmission_thickness(X);
-  if (s_cos.x <= 2.0 * u_light_texel_world) return 0.0;
-  vec3 crossed = light_irradiance(light_distance_of(X) - s_cos.x) / PI * s_cos.y * principled_entry(s_cos.y) *
-                 slab_transport(s_cos.x * u_mm_per_unit) * u_translucency;
-  return dot(crossed, vec3(0.2126, 0.7152, 0.0722));
-}
-
 // The paper's reflectance (§3.3) on colour C: the Schlick term F over it, by schlick_blend.
 vec3 paper_reflectance(vec3 C, vec3 N, vec3 V, vec3 L) {
   vec3 F = paper_schlick(C, u_metalness, N, V, L, u_schlick_hn);
@@ -550,10 +520,8 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    float behind_t;
-    ivec2 hit = self_reflection_hit(px, depth, P, N, V, behind_t);
-    float hidden = behind_t > 0.0 ? hidden_mirror_light(P + reflect(-V, N) * behind_t) : 0.0;
-    o_mirror_hit = hit.x >= 0 ? vec4(vec2(hit), 0.0, 0.0) : vec4(-1.0, hidden, 0.0, 0.0);
+    ivec2 hit = self_reflection_hit(px, depth, P, N, V);
+    o_mirror_hit = vec4(vec2(hit), 0.0, 0.0);
     o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0),
                      linear_depth(depth, u_camera_near_far));
     return;

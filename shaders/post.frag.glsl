@@ -87,9 +87,8 @@ vec3 as_stored_half(vec3 v) {
 
 // The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
 // mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
-// surface's mirror ray meets the object on screen (self_reflection_hit), or -1; hidden: where it
-// meets none there, the light of the surface it meets behind a part (hidden_mirror_light).
-vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, float hidden) {
+// surface's mirror ray meets the object on screen (self_reflection_hit), or -1.
+vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 #if DIFFUSE_SOURCE == 2
   return texelFetch(u_diffuse, px, 0).rgb;
 #else
@@ -108,13 +107,9 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, float hidd
   // of the blur texel nearest the hit, not the depth-aware upsample: the hit lies on a surface the
   // march found, and the upsample's four taps cost 10.6 M instructions of the dragon's 800^2
   // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
-  // Where it meets a surface hidden behind a part, that surface's light as the lighting pass
-  // estimated it (hidden_mirror_light: a luma, so grey).
   if (hit.x >= 0) {
     ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * texelFetch(u_blurred, texel, 0).rgb;
-  } else {
-    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * hidden;
   }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
@@ -126,15 +121,13 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, float hidd
 #endif
 }
 
-// What pixel px's mirror ray meets: the lighting pass marched it for the entering texel nearest
-// px (texel h sits at pixel h * scale, blur_texel.glsl), from that texel's surface point; within a
-// texel the pixels share it (the mirror image at the entering light's resolution, half by
-// default). xy: the pixel it meets on screen; or x = -1 where it meets none there, and y the
-// light of the hidden surface it meets behind a part (0 if none, also the texture's clear value:
-// LightingPass).
-vec2 mirror_hit_at(ivec2 px) {
+// Where pixel px's mirror ray meets the object on screen, or -1: the lighting pass marched it for
+// the entering texel nearest px (texel h sits at pixel h * scale, blur_texel.glsl), from that
+// texel's surface point; within a texel the pixels share it (the mirror image at the entering
+// light's resolution, half by default).
+ivec2 mirror_hit_at(ivec2 px) {
   ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
-  return texelFetch(u_mirror_hit, t, 0).xy;
+  return ivec2(texelFetch(u_mirror_hit, t, 0).xy);
 }
 
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
@@ -145,15 +138,12 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 V = vec3(0.0);
   ivec2 hit = ivec2(-1);
-  float hidden = 0.0;
 #if SURFACE_REUSE == 2
   vec3 reflected = texelFetch(u_surface_reflected, px, 0).rgb;
 #else
   vec3 P = surface_point(v_uv, depth);
   V = normalize(u_camera_pos - P);
-  vec2 mirror = mirror_hit_at(px);
-  hit = mirror.x >= 0.0 ? ivec2(mirror) : ivec2(-1);
-  hidden = mirror.x >= 0.0 ? 0.0 : mirror.y;
+  hit = mirror_hit_at(px);
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
@@ -170,7 +160,7 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   // a cached frame must equal a fresh one bit for bit; without it a compiler may fuse a multiply
   // with an add in one variant and not in another (NVIDIA's does, per program; llvmpipe's does
   // not), which GLSL allows. docs/performance.md, "Eighteenth session".
-  precise vec3 composed = marble_diffuse(px, depth, N, V, hit, hidden) + reflected;
+  precise vec3 composed = marble_diffuse(px, depth, N, V, hit) + reflected;
   return composed;
 }
 

@@ -29,11 +29,8 @@
 //   is narrower than the march resolves; the lobe's albedo is taken as Fresnel's exact factor at
 //   the view's cosine (Smith's masking takes under 2 % off up to 85 degrees at that alpha,
 //   bounce.glsl). Rougher stones blur their reflection; this keeps it sharp;
-// - only what the camera sees (screen space), with one exception: where the ray passes behind a
-//   part, the surface it meets there is hidden from the camera, and the lighting pass estimates
-//   that surface's light from the light's map instead (hidden_mirror_light, lighting.frag.glsl;
-//   docs/quality.md, "Nineteenth session"). Surfaces that face away, or lie beyond the march, are
-//   not mirrored here (the bounce's mirrored part, from the light's map, stands in for them);
+// - only what the camera sees (screen space): parts hidden behind others or facing away are not
+//   mirrored here (the bounce's mirrored part, from the light's map, stands in for them);
 // - the radiance leaving the hit is its diffuse part, the blurred entering light there
 //   (its nearest blur texel), times P's albedo (applied with P's own light by the post pass), not the
 //   hit's: exact for a flat stone, off by the veins' contrast on a veined one (the bounce's
@@ -48,12 +45,8 @@ const float SELF_REFLECTION_GROWTH = 1.75;
 
 // The pixel whose surface P's mirror ray meets, or ivec2(-1) where it meets none the camera sees
 // (it leaves the screen, passes behind a part, or runs out of steps). px: P's pixel; depth: its
-// depth-buffer value; V: toward the camera. behind_t: where the ray passed behind a part, the
-// middle of the last step, between the point still clear of the depth buffer's surface and the
-// first one hidden behind it (where the ray met whatever it met, at best the step's middle); 0
-// otherwise.
-ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, out float behind_t) {
-  behind_t = 0.0;
+// depth-buffer value; V: toward the camera.
+ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
   ivec2 size = textureSize(u_depth, 0);
   // One pixel's footprint at P, for the hit's tolerance.
   float pixel = distance(surface_point((vec2(px) + vec2(1.5, 0.5)) / vec2(size), depth), P);
@@ -69,9 +62,7 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, out flo
     float d = texelFetch(u_depth, q, 0).r;
     if (q != px && d < 1.0 && ndc.z * 0.5 + 0.5 > d) {
       vec3 S = surface_point((vec2(q) + 0.5) / vec2(size), d);
-      if (distance(S, P + R * t) <= (t - previous) + 2.0 * pixel) return q;
-      behind_t = 0.5 * (previous + t);  // passed behind a part
-      return ivec2(-1);
+      return distance(S, P + R * t) > (t - previous) + 2.0 * pixel ? ivec2(-1) : q;  // else: passed behind a part
     }
     previous = t;
     t *= SELF_REFLECTION_GROWTH;

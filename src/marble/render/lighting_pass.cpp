@@ -67,9 +67,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   const float zero[4] = {0, 0, 0, 0};
   gl::checkBeforeDraw();
   glClearNamedFramebufferfv(fbo, GL_COLOR, marble ? 1 : 0, zero);
-  // No mirror hit, and no hidden surface's light (post.frag.glsl, mirror_hit_at): what the post
-  // pass reads where its nearest texel is background.
-  const float none[4] = {-1, 0, 0, 0};
+  const float none[4] = {-1, -1, 0, 0};  // no mirror hit
   if (marble) glClearNamedFramebufferfv(fbo, GL_COLOR, 2, none);
   if (marble)
     scissorTo(scaledDown(rect, enteringScale_));

@@ -39,8 +39,8 @@ float fresnel_dielectric(float c, float eta) {
 // area covers, not the lobe at its centre: the stone's lobe (roughness 0.15, alpha 0.0225, about
 // 1.3 degrees) is narrower than the 2-4 degrees a pixel's normals turn across the back-lit
 // silhouettes, so its peak often falls between pixel centres. Across a pixel the normal is taken
-// as linear, N0 + dndx u + dndy v (u, v in [-1/2, 1/2]; in each quarter of the pixel, footprint_mean_distribution);
-// near its peak GGX is, in the tangent plane of N0, alpha^2 / (pi (alpha^2 + |s - h|^2)^2) with s
+// as linear on each side of its centre, reaching the midpoints to its four neighbours
+// (footprint_mean_distribution); near its peak GGX is, in the tangent plane of N0, alpha^2 / (pi (alpha^2 + |s - h|^2)^2) with s
 // the normal's and h the half vector's tangential part (exact to a relative alpha^2 ~ 5e-4 at any
 // angle, with |s - h| the sine: GGX's cos^4 (alpha^2 + tan^2)^2 is (alpha^2 cos^2 + sin^2)^2).
 // The pixel's mean is then this density's mass in the parallelogram the footprint's normals
@@ -56,7 +56,8 @@ float fresnel_dielectric(float c, float eta) {
 // keeps GGX's tail the stone's own (the mean of alpha^2 / (pi r^4) over a pixel far from the peak
 // is the value at its centre), which the widening needed a Beckmann mix for (session 14).
 // A jump to another surface is capped as before: the footprint's normals spread at most as far as
-// 2 sigma^2 (the normals' variance over the pixel) = SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's kappa, 0.18).
+// 2 sigma^2 (their variance over the pixel) = SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's
+// kappa, 0.18).
 const float SPECULAR_FOOTPRINT_MAX_A2 = 0.18;
 
 // The normal's change per pixel on the two sides of a pixel along one axis (each toward +axis;
@@ -82,57 +83,44 @@ void footprint_axis_steps(inout vec3 before, bool before_on, inout vec3 after, b
 // atan(l1 / k) - atan(l0 / k) (l1 > l0, k > 0), the angle an edge subtends, in one atan.
 float edge_angle(float l0, float l1, float k) { return atan(k * (l1 - l0), k * k + l0 * l1); }
 
-// The edge from P to Q (relative to the lobe's centre, in the tangent plane of N): its share of
-// the lobe's mass (w; positive where the centre lies to the left of the edge) and of the mass's
-// first moment about the centre (xyz), both times 2 pi. The moment of a radial density f(r) is
-// the boundary integral of its radial antiderivative times the outward normal (s f(|s|) is the
-// gradient of -alpha^2 / (2 pi (alpha^2 + r^2)) for GGX), which along an edge is the same angle
-// over k as the mass's: -alpha^2 (angle / k) times the normal.
-vec4 edge_mass(vec3 P, vec3 Q, vec3 N, float a2) {
-  vec3 d = Q - P;
-  float len = length(d);
-  vec3 e = d / len;
-  float p = dot(N, cross(P, e));  // signed distance of the centre from the edge's line
+// An edge from P along the unit direction e for len (in a 2D frame of the tangent plane of N,
+// relative to the lobe's centre): its share of the lobe's mass (z; positive where the centre
+// lies to the left of the edge) and of the mass's first moment about the centre (xy), both
+// times 2 pi. The moment of a radial density f(r) is the boundary integral of its radial
+// antiderivative times the outward normal (s f(|s|) is the gradient of
+// -alpha^2 / (2 pi (alpha^2 + r^2)) for GGX), which along an edge is the same angle over k as the
+// mass's: -alpha^2 (angle / k) times the normal.
+vec3 edge_mass(vec2 P, vec2 e, float len, float a2) {
+  vec2 n = vec2(e.y, -e.x);  // the right-hand normal: outward for a counter-clockwise polygon
+  float p = dot(P, n);       // signed distance of the centre from the edge's line
   float k = sqrt(a2 + p * p);
   float l0 = dot(P, e);
   float t = edge_angle(l0, l0 + len, k) / k;
-  return vec4(-a2 * t * cross(e, N), p * t);
+  return vec3(-a2 * t * n, p * t);
 }
 
-// The lobe over the parallelogram c, c + s1, c + s1 + s2, c + s2 (relative to the lobe's centre,
-// in the tangent plane of N): its mass there (w) and the mass's first moment (xyz), over the
-// parallelogram's area. Each side is given a width of at least w (a footprint smaller than the
-// lobe's alpha / 8 is a point sample: its mean then differs from GGX at the centre by < 1 %, and
-// the mass / area quotient stays well conditioned in 32-bit floats).
-vec4 parallelogram_mean(vec3 c, vec3 s1, vec3 s2, vec3 N, float a2, float w) {
-  if (dot(s2, s2) > dot(s1, s1)) { vec3 t = s1; s1 = s2; s2 = t; }
-  float l1 = length(s1);
-  if (l1 < w) {
-    vec3 t = abs(N.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);  // any tangent direction
-    s1 = w * normalize(t - N * dot(N, t));
-    l1 = w;
-  }
-  vec3 across = cross(N, s1) / l1;
-  float height = dot(s2, across);
-  s2 += (height < 0.0 ? -1.0 : 1.0) * (max(abs(height), w) - abs(height)) * across;
-  float area = dot(N, cross(s1, s2));
-  if (area < 0.0) { vec3 t = s1; s1 = s2; s2 = t; area = -area; }  // counter-clockwise about N
-  vec3 v1 = c + s1, v2 = v1 + s2, v3 = c + s2;
-  vec4 m = edge_mass(c, v1, N, a2) + edge_mass(v1, v2, N, a2) + edge_mass(v2, v3, N, a2) + edge_mass(v3, c, N, a2);
-  return m / (2.0 * PI * area);
+// A side vector s given a height of at least w across the unit direction `across` (on its own
+// side; on `side` where it has none), so that a parallelogram of it keeps an area.
+vec2 with_height(vec2 s, vec2 across, float w, float side) {
+  float height = dot(s, across);
+  float sgn = height == 0.0 ? side : sign(height);
+  return s + (sgn * max(abs(height), w) - height) * across;
 }
 
 // The GGX lobe of the stone (alpha a) averaged over a pixel's footprint (see the top of this
 // part): N the pixel's normal, H the half vector, bx, ax, by, ay the normal's change to the
 // neighbours before and after it along x and y (footprint_axis_steps; each toward +axis). The
-// normal is taken as linear in each quarter of the pixel, reaching the midpoints to the four
-// neighbours. Returns the mean D, and in N_lobe the footprint's normal at the centroid of the
+// normal is taken as linear in each half of the pixel, reaching the midpoints to the neighbours.
+// Returns the mean D, and in N_lobe the footprint's normal at the centroid of the
 // lobe's mass within it: there the factors that vary more slowly are evaluated (N.L, N.V,
 // Smith's shadowing), which is exact for factors linear across the lobe. They are not constant:
 // at a back-lit glint N.V ~ 0.1 and 1 / (4 N.V) changes by 25 % across the stone's lobe; taken at
 // the pixel's centre or at the footprint's normal nearest H, the lid rim's glint on teapot-back
 // was 0.18 / 0.22 off the brute-force sub-pixel integral (relative L2 over its 18 x 6 pixels of
-// the 800^2 frame), at the centroid 0.10 (docs/quality.md, "Nineteenth session").
+// the 800^2 frame; four quarters of the pixel), at the centroid 0.10 (docs/quality.md,
+// "Nineteenth session"). Cost: each half's four edges are one atan each; a single parallelogram
+// for the whole pixel put 1.2x the light on a row whose neighbours turned 3.4 and 2.2 degrees
+// away, four quarters gave what two halves give at twice the edges.
 float footprint_mean_distribution(vec3 N, vec3 H, vec3 bx, vec3 ax, vec3 by, vec3 ay, float a, out vec3 N_lobe) {
   bx -= N * dot(N, bx); ax -= N * dot(N, ax); by -= N * dot(N, by); ay -= N * dot(N, ay);  // tangential parts
   float spread = (dot(bx, bx) + dot(ax, ax) + dot(by, by) + dot(ay, ay)) / 12.0;
@@ -140,22 +128,59 @@ float footprint_mean_distribution(vec3 N, vec3 H, vec3 bx, vec3 ax, vec3 by, vec
     float shrink = sqrt(SPECULAR_FOOTPRINT_MAX_A2 / spread);
     bx *= shrink; ax *= shrink; by *= shrink; ay *= shrink;
   }
-  // Far from the lobe (the half vector more than 8 footprint radii away) the mean is GGX at the
-  // centre, to < 4 % (the mean of alpha^2 / (pi r^4) over a box of half-width R at distance r
-  // exceeds the centre's value by about 8 R^2 / (3 r^2)), and costs no edges; so is a half vector
-  // behind the surface, which the tangent plane would fold onto the front (a silhouette sample
-  // whose normal faces away, buddha-back's (120,44): 1266 where GGX gives 0).
+  // Far from the lobe (the half vector more than 4 footprint radii R away) the mean is GGX at the
+  // centre with its second-order term, and costs no edges: the mean of a function over a
+  // footprint whose normals' variance totals T is f + (T / 4) times its Laplacian, for GGX's
+  // alpha^2 / (pi g^2), g = alpha^2 + r^2, a factor 1 + 2 T (2 r^2 - alpha^2) / g^2 (up to 1.08 at
+  // r = 4 R; the next term, of order (R / r)^4, under 1 %). T: each axis spans (|before| + |after|)
+  // / 2, variance ~ (|before|^2 + |after|^2) / 24. So is a half vector behind the surface, which
+  // the tangent plane would fold onto the front (a silhouette sample whose normal faces away,
+  // buddha-back's (120,44): 1266 where GGX gives 0).
   float NoH = dot(N, H);
   vec3 h = H - N * NoH;
+  float r2 = dot(h, h);
   float radius2 = 0.25 * (max(dot(bx, bx), dot(ax, ax)) + max(dot(by, by), dot(ay, ay)));
-  if (NoH <= 0.0 || dot(h, h) >= 64.0 * radius2) {
+  if (NoH <= 0.0 || r2 >= 16.0 * radius2) {
     N_lobe = N;
-    return ggx_distribution(max(NoH, 0.0), a);
+    float variance = (dot(bx, bx) + dot(ax, ax) + dot(by, by) + dot(ay, ay)) / 24.0;
+    float g = a * a + r2;
+    return ggx_distribution(max(NoH, 0.0), a) * (1.0 + 2.0 * variance * (2.0 * r2 - a * a) / (g * g));
   }
   float a2 = a * a, w = 0.125 * a;
-  vec3 c = -h;
-  vec4 m = 0.25 * (parallelogram_mean(c, 0.5 * ax, 0.5 * ay, N, a2, w) + parallelogram_mean(c, 0.5 * ax, -0.5 * by, N, a2, w) +
-                   parallelogram_mean(c, -0.5 * bx, 0.5 * ay, N, a2, w) + parallelogram_mean(c, -0.5 * bx, -0.5 * by, N, a2, w));
+  // The footprint as two parallelograms, split across the axis whose two sides differ more (the
+  // halves toward the neighbours before and after); along the other axis one span, centred
+  // between the midpoints to its two neighbours. Each side is given a width of at least w
+  // (alpha / 8: a smaller footprint is a point sample, its mean within 1 % of GGX at the centre,
+  // and the mass / area quotient stays well conditioned in 32-bit floats). In a 2D frame of the
+  // tangent plane; the halves share their middle edge.
+  vec3 dx = ax - bx, dy = ay - by;
+  if (dot(dx, dx) > dot(dy, dy)) {
+    vec3 t = bx; bx = by; by = t;
+    t = ax; ax = ay; ay = t;
+  }
+  vec3 t1 = normalize(cross(N, abs(N.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 t2 = cross(N, t1);
+  mat2x3 frame = mat2x3(t1, t2);
+  vec2 span = (0.5 * (bx + ax)) * frame, up = (0.5 * ay) * frame, down = (-0.5 * by) * frame;
+  vec2 c = (0.25 * (ax - bx) - 0.25 * (bx + ax) - h) * frame;
+  float span_len = length(span);
+  vec2 along = span_len >= w ? span / span_len : vec2(1.0, 0.0);
+  span_len = max(span_len, w);
+  span = along * span_len;
+  vec2 across = vec2(-along.y, along.x);
+  up = with_height(up, across, w, 1.0);
+  down = with_height(down, across, w, -1.0);
+  float up_len = length(up), down_len = length(down);
+  vec2 e_up = up / up_len, e_down = down / down_len;
+  // Signed areas: a half traversed clockwise has negative mass and area alike.
+  float area_up = span_len * dot(up, across), area_down = span_len * dot(down, across);
+  vec3 middle = edge_mass(c, along, span_len, a2);
+  vec3 m_up = middle + edge_mass(c + span, e_up, up_len, a2) + edge_mass(c + span + up, -along, span_len, a2) +
+              edge_mass(c + up, -e_up, up_len, a2);
+  vec3 m_down = middle + edge_mass(c + span, e_down, down_len, a2) + edge_mass(c + span + down, -along, span_len, a2) +
+                edge_mass(c + down, -e_down, down_len, a2);
+  vec3 m2 = (m_up / area_up + m_down / area_down) / (4.0 * PI);
+  vec4 m = vec4(frame * m2.xy, m2.z);
   float mass = max(m.w, 0.0);
   N_lobe = normalize(N + h + (mass > 0.0 ? m.xyz / mass : vec3(0.0)));
   return mass;

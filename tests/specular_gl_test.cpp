@@ -182,7 +182,7 @@ std::vector<double> greenIntegratedPerPixel(const Scene& s, int sub) {
 }  // namespace
 
 // Away from a highlight the footprint must not add light (marble_reflected: the footprint's
-// filter keeps the stone's own GGX tail). GGX's slopes have no finite variance and its tail,
+// integral keeps the stone's own GGX tail). GGX's slopes have no finite variance and its tail,
 // alpha^2 / (pi sin^4), grows with alpha^2: widened as a whole (alpha^2 + 2 sigma^2, Beckmann's
 // rule) the lobe put alpha'^2 / alpha^2 times the stone's tail on every pixel whose normals spread,
 // far from the highlight; at the back-lit silhouettes, times the grazing 1 / (4 N.V), that was

@@ -7,19 +7,22 @@
 // dielectric's exact Fresnel factor (as Cycles' Principled BSDF), and the environment's blurred
 // reflection weighted by the split-sum BRDF (Schlick-based: Karis's fit). E: the light's
 // irradiance at normal incidence; visible: its PCF visibility; ior: the stone's index.
-// footprint_a2: added to GGX's alpha^2 for the normal's spread over the pixel (0: none).
-vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, float footprint_a2,
-                      float env_intensity) {
-  float NoV = max(dot(N, V), 1e-4);
-  float nl = max(dot(N, L), 0.0);
+// bx, ax, by, ay: the normal's change to the pixel's neighbours before and after it along x and y
+// (0: a point sample); the light's lobe is integrated
+// over the pixel's normals (footprint_mean_distribution), N.L, N.V and Smith's shadowing taken at
+// the centroid of the lobe's mass within the footprint.
+vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, vec3 bx, vec3 ax, vec3 by,
+                      vec3 ay, float env_intensity) {
   vec3 H = normalize(V + L);
   float a_stone = max(roughness * roughness, 0.002);
-  float a = sqrt(min(a_stone * a_stone + footprint_a2, 1.0));  // the lobe widened by the pixel's footprint
+  vec3 N_lobe;
+  float D = footprint_mean_distribution(N, H, bx, ax, by, ay, a_stone, N_lobe);
+  float NoV = max(dot(N_lobe, V), 1e-4);
+  float nl = max(dot(N_lobe, L), 0.0);
   float F = fresnel_dielectric(dot(H, V), ior);
-  float D = footprint_filtered_distribution(max(dot(N, H), 0.0), a_stone * a_stone, a * a);
-  vec3 r = E * (nl * visible * D * smith_ggx_visibility(NoV, nl, a) * F);
+  vec3 r = E * (nl * visible * D * smith_ggx_visibility(NoV, nl, a_stone) * F);
   if (env_intensity > 0.0)
-    r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, NoV);
+    r += env_intensity * env_radiance(reflect(-V, N), roughness) * env_brdf_approx(f0_from_ior(ior), roughness, max(dot(N, V), 1e-4));
   return r;
 }
 

@@ -34,57 +34,156 @@ float fresnel_dielectric(float c, float eta) {
   return 0.5 * a * a * (1.0 + b * b);
 }
 
-// Geometric specular antialiasing (Kaplanyan et al. 2016; Tokuyoshi & Kaplanyan 2019, "Improved
-// Geometric Specular Antialiasing"): a pixel's highlight is the GGX lobe averaged over the normals
-// its footprint covers; their spread widens the lobe, alpha^2 += 2 sigma^2 (GGX's alpha^2 as twice
-// the slopes' variance, Beckmann's relation). sigma^2: the normal's variance over a box one pixel
-// wide, d_x^2 / 12 + d_y^2 / 12 (a box pixel: what --supersample's block average and Cycles' --box
-// reference integrate), d the normal's change to the next pixel along each axis. Without it a
-// highlight narrower than a pixel is point-sampled: on the side-lit reference scenes (a highlight's
-// core ~ a pixel of the 800^2 frame) marble's highlights landed on different pixels than Cycles'
-// (docs/quality.md, "Tenth session"). d^2 per axis: footprint_axis_d2. A jump to another surface
-// is capped at SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's kappa, 0.18).
+// The highlight integrated over a pixel's footprint. A pixel (of the 800^2 frame that
+// --supersample 4 averages, or of Cycles' --box film) is the mean of the lobe over the normals its
+// area covers, not the lobe at its centre: the stone's lobe (roughness 0.15, alpha 0.0225, about
+// 1.3 degrees) is narrower than the 2-4 degrees a pixel's normals turn across the back-lit
+// silhouettes, so its peak often falls between pixel centres. Across a pixel the normal is taken
+// as linear on each side of its centre, reaching the midpoints to its four neighbours
+// (footprint_mean_distribution); near its peak GGX is, in the tangent plane of N0, alpha^2 / (pi (alpha^2 + |s - h|^2)^2) with s
+// the normal's and h the half vector's tangential part (exact to a relative alpha^2 ~ 5e-4 at any
+// angle, with |s - h| the sine: GGX's cos^4 (alpha^2 + tan^2)^2 is (alpha^2 cos^2 + sin^2)^2).
+// The pixel's mean is then this density's mass in the parallelogram the footprint's normals
+// cover, over the parallelogram's area: the mass of a radial density whose radial CDF is
+// r^2 / (alpha^2 + r^2) in a convex polygon is a sum over its edges (a fan of triangles from
+// the lobe's centre, integrated in angle), each edge at signed distance p from the centre, from
+// l0 to l1 along it, giving (p / k) (atan(l1 / k) - atan(l0 / k)) / (2 pi), k = sqrt(alpha^2 + p^2):
+// a closed form, no samples. It replaces the lobe widened by the footprint's variance (Kaplanyan
+// et al. 2016; Tokuyoshi & Kaplanyan 2019, used before session 19), which spread a glint
+// symmetrically about each pixel centre: on teapot-back the lid rim's glint, whose peak lies on the
+// boundary between two rows of the 800^2 frame, was split 1.7 : 1 between two 200^2 pixels where
+// Cycles splits it 3.9 : 1 (docs/quality.md, "Nineteenth session"). The exact integral also
+// keeps GGX's tail the stone's own (the mean of alpha^2 / (pi r^4) over a pixel far from the peak
+// is the value at its centre), which the widening needed a Beckmann mix for (session 14).
+// A jump to another surface is capped as before: the footprint's normals spread at most as far as
+// 2 sigma^2 (their variance over the pixel) = SPECULAR_FOOTPRINT_MAX_A2 (Tokuyoshi & Kaplanyan's
+// kappa, 0.18).
 const float SPECULAR_FOOTPRINT_MAX_A2 = 0.18;
-float specular_footprint_a2(float dx2, float dy2) {
-  return min(2.0 * (dx2 + dy2) / 12.0, SPECULAR_FOOTPRINT_MAX_A2);
+
+// The normal's change per pixel on the two sides of a pixel along one axis (each toward +axis;
+// on: that neighbour is on the object). Each side keeps its own difference, so the footprint's
+// normals reach the midpoints to both neighbours and the pixels' footprints tile the surface's
+// normals without gaps or overlaps: with one difference for both sides (the smaller, session 16)
+// a row whose neighbours turned 3.4 and 2.2 degrees away left a 0.6-degree band to neither, and
+// a glint there lost its light (teapot-back's lid rim: docs/quality.md, "Nineteenth session"). A
+// side off the object, or one that turns more than 3x as far as the other (a depth edge inside the
+// object: a part in front, the far side of a fold, whose difference is no change of this
+// surface's normal; taking it erased silhouette glints Cycles keeps: dragon-back's brightest pixel
+// 0.28 of Cycles' converged value, "Sixteenth session"), is mirrored from the other side.
+void footprint_axis_steps(inout vec3 before, bool before_on, inout vec3 after, bool after_on) {
+  if (!before_on && !after_on) {
+    before = after = vec3(0.0);
+    return;
+  }
+  float b2 = dot(before, before), a2 = dot(after, after);
+  if (!before_on || (after_on && b2 > 9.0 * a2)) before = after;
+  else if (!after_on || a2 > 9.0 * b2) after = before;
 }
 
-// The normal's squared change per pixel along one axis, from the squared differences to the two
-// neighbours on it (negative: that neighbour is off the object, left out): the smaller of the two
-// (the minmod rule of slope limiters, van Leer 1979). On a smooth surface the two sides agree to
-// the surface's change of curvature; where one neighbour lies on another surface (a depth edge
-// inside the object: a part in front, the far side of a fold) its difference is no spread of this
-// surface's normal, and taking it (the 2x2 quad's one difference, used before session 16) capped
-// the lobe at kappa on the pixel next to the edge, which erased silhouette glints Cycles keeps
-// (dragon-back's brightest pixel 0.28 of Cycles' converged value; docs/quality.md, "Sixteenth
-// session"). Error: where the normal turns faster on one side (a crease) the spread is that of
-// the flatter side; the crease's own pixels are then closer to point-sampled.
-float footprint_axis_d2(float before, float after) {
-  if (before < 0.0) return max(after, 0.0);
-  if (after < 0.0) return before;
-  return min(before, after);
+// atan(l1 / k) - atan(l0 / k) (l1 > l0, k > 0), the angle an edge subtends, in one atan.
+float edge_angle(float l0, float l1, float k) { return atan(k * (l1 - l0), k * k + l0 * l1); }
+
+// An edge from P along the unit direction e for len (in a 2D frame of the tangent plane of N,
+// relative to the lobe's centre): its share of the lobe's mass (z; positive where the centre
+// lies to the left of the edge) and of the mass's first moment about the centre (xy), both
+// times 2 pi. The moment of a radial density f(r) is the boundary integral of its radial
+// antiderivative times the outward normal (s f(|s|) is the gradient of
+// -alpha^2 / (2 pi (alpha^2 + r^2)) for GGX), which along an edge is the same angle over k as the
+// mass's: -alpha^2 (angle / k) times the normal.
+vec3 edge_mass(vec2 P, vec2 e, float len, float a2) {
+  vec2 n = vec2(e.y, -e.x);  // the right-hand normal: outward for a counter-clockwise polygon
+  float p = dot(P, n);       // signed distance of the centre from the edge's line
+  float k = sqrt(a2 + p * p);
+  float l0 = dot(P, e);
+  float t = edge_angle(l0, l0 + len, k) / k;
+  return vec3(-a2 * t * n, p * t);
 }
 
-// The stone's GGX lobe (alpha^2 = a_stone2) averaged over a pixel's normals, which widen it to
-// a2 = a_stone2 + specular_footprint_a2 (at most 1). Adding the kernel's variance to alpha^2 is
-// exact for Beckmann's Gaussian slopes, but GGX's slopes, density alpha^2 / (pi (alpha^2 + s^2)^2),
-// have no finite variance: averaging over a narrow kernel leaves their tail alpha^2 / (pi s^4)
-// as it was, while GGX at a2 scales it by a2 / a_stone2 -- up to 360x the stone's (0.0005 against
-// the cap 0.18) at silhouettes, where the normal turns fast across a pixel; there, times the
-// grazing 1 / (4 N.V), it lit whole rims far from any highlight (teapot-back's terminator band
-// 3-9x Cycles' highlight; docs/quality.md, "Fourteenth session"). So: a normalised mix of GGX
-// at a2 weighted w = a_stone2 / a2, whose tail w a2 / (pi s^4) is then the stone's exactly, and a
-// Beckmann core at a2 carrying the rest. w = 1 (no spread): the stone's GGX (to rounding); w -> 0:
-// Beckmann at a2, the Gaussian convolution. Measured against marble's own highlight rendered with
-// 16x the samples and no widening, the highlight's relative RMSE falls in all ten reference scenes
-// (tests/specular_gl_test.cpp, WidenedLobeAddsNoLightAwayFromTheHighlight: 0.86-0.89 of the
-// integrated light away from the highlight, where GGX at a2 gave 7-8x).
-float footprint_filtered_distribution(float NoH, float a_stone2, float a2) {
-  float w = a_stone2 / a2;
-  if (w >= 1.0) return ggx_distribution(NoH, sqrt(a2));
-  float c2 = max(NoH * NoH, 1e-6);
-  float beckmann = exp((c2 - 1.0) / (a2 * c2)) / (PI * a2 * c2 * c2);
-  return w * ggx_distribution(NoH, sqrt(a2)) + (1.0 - w) * beckmann;
+// A side vector s given a height of at least w across the unit direction `across` (on its own
+// side; on `side` where it has none), so that a parallelogram of it keeps an area.
+vec2 with_height(vec2 s, vec2 across, float w, float side) {
+  float height = dot(s, across);
+  float sgn = height == 0.0 ? side : sign(height);
+  return s + (sgn * max(abs(height), w) - height) * across;
+}
+
+// The GGX lobe of the stone (alpha a) averaged over a pixel's footprint (see the top of this
+// part): N the pixel's normal, H the half vector, bx, ax, by, ay the normal's change to the
+// neighbours before and after it along x and y (footprint_axis_steps; each toward +axis). The
+// normal is taken as linear in each half of the pixel, reaching the midpoints to the neighbours.
+// Returns the mean D, and in N_lobe the footprint's normal at the centroid of the
+// lobe's mass within it: there the factors that vary more slowly are evaluated (N.L, N.V,
+// Smith's shadowing), which is exact for factors linear across the lobe. They are not constant:
+// at a back-lit glint N.V ~ 0.1 and 1 / (4 N.V) changes by 25 % across the stone's lobe; taken at
+// the pixel's centre or at the footprint's normal nearest H, the lid rim's glint on teapot-back
+// was 0.18 / 0.22 off the brute-force sub-pixel integral (relative L2 over its 18 x 6 pixels of
+// the 800^2 frame; four quarters of the pixel), at the centroid 0.10 (docs/quality.md,
+// "Nineteenth session"). Cost: each half's four edges are one atan each; a single parallelogram
+// for the whole pixel put 1.2x the light on a row whose neighbours turned 3.4 and 2.2 degrees
+// away, four quarters gave what two halves give at twice the edges.
+float footprint_mean_distribution(vec3 N, vec3 H, vec3 bx, vec3 ax, vec3 by, vec3 ay, float a, out vec3 N_lobe) {
+  bx -= N * dot(N, bx); ax -= N * dot(N, ax); by -= N * dot(N, by); ay -= N * dot(N, ay);  // tangential parts
+  float spread = (dot(bx, bx) + dot(ax, ax) + dot(by, by) + dot(ay, ay)) / 12.0;
+  if (spread > SPECULAR_FOOTPRINT_MAX_A2) {
+    float shrink = sqrt(SPECULAR_FOOTPRINT_MAX_A2 / spread);
+    bx *= shrink; ax *= shrink; by *= shrink; ay *= shrink;
+  }
+  // Far from the lobe (the half vector more than 4 footprint radii R away) the mean is GGX at the
+  // centre with its second-order term, and costs no edges: the mean of a function over a
+  // footprint whose normals' variance totals T is f + (T / 4) times its Laplacian, for GGX's
+  // alpha^2 / (pi g^2), g = alpha^2 + r^2, a factor 1 + 2 T (2 r^2 - alpha^2) / g^2 (up to 1.08 at
+  // r = 4 R; the next term, of order (R / r)^4, under 1 %). T: each axis spans (|before| + |after|)
+  // / 2, variance ~ (|before|^2 + |after|^2) / 24. So is a half vector behind the surface, which
+  // the tangent plane would fold onto the front (a silhouette sample whose normal faces away,
+  // buddha-back's (120,44): 1266 where GGX gives 0).
+  float NoH = dot(N, H);
+  vec3 h = H - N * NoH;
+  float r2 = dot(h, h);
+  float radius2 = 0.25 * (max(dot(bx, bx), dot(ax, ax)) + max(dot(by, by), dot(ay, ay)));
+  if (NoH <= 0.0 || r2 >= 16.0 * radius2) {
+    N_lobe = N;
+    float variance = (dot(bx, bx) + dot(ax, ax) + dot(by, by) + dot(ay, ay)) / 24.0;
+    float g = a * a + r2;
+    return ggx_distribution(max(NoH, 0.0), a) * (1.0 + 2.0 * variance * (2.0 * r2 - a * a) / (g * g));
+  }
+  float a2 = a * a, w = 0.125 * a;
+  // The footprint as two parallelograms, split across the axis whose two sides differ more (the
+  // halves toward the neighbours before and after); along the other axis one span, centred
+  // between the midpoints to its two neighbours. Each side is given a width of at least w
+  // (alpha / 8: a smaller footprint is a point sample, its mean within 1 % of GGX at the centre,
+  // and the mass / area quotient stays well conditioned in 32-bit floats). In a 2D frame of the
+  // tangent plane; the halves share their middle edge.
+  vec3 dx = ax - bx, dy = ay - by;
+  if (dot(dx, dx) > dot(dy, dy)) {
+    vec3 t = bx; bx = by; by = t;
+    t = ax; ax = ay; ay = t;
+  }
+  vec3 t1 = normalize(cross(N, abs(N.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 t2 = cross(N, t1);
+  mat2x3 frame = mat2x3(t1, t2);
+  vec2 span = (0.5 * (bx + ax)) * frame, up = (0.5 * ay) * frame, down = (-0.5 * by) * frame;
+  vec2 c = (0.25 * (ax - bx) - 0.25 * (bx + ax) - h) * frame;
+  float span_len = length(span);
+  vec2 along = span_len >= w ? span / span_len : vec2(1.0, 0.0);
+  span_len = max(span_len, w);
+  span = along * span_len;
+  vec2 across = vec2(-along.y, along.x);
+  up = with_height(up, across, w, 1.0);
+  down = with_height(down, across, w, -1.0);
+  float up_len = length(up), down_len = length(down);
+  vec2 e_up = up / up_len, e_down = down / down_len;
+  // Signed areas: a half traversed clockwise has negative mass and area alike.
+  float area_up = span_len * dot(up, across), area_down = span_len * dot(down, across);
+  vec3 middle = edge_mass(c, along, span_len, a2);
+  vec3 m_up = middle + edge_mass(c + span, e_up, up_len, a2) + edge_mass(c + span + up, -along, span_len, a2) +
+              edge_mass(c + up, -e_up, up_len, a2);
+  vec3 m_down = middle + edge_mass(c + span, e_down, down_len, a2) + edge_mass(c + span + down, -along, span_len, a2) +
+                edge_mass(c + down, -e_down, down_len, a2);
+  vec3 m2 = (m_up / area_up + m_down / area_down) / (4.0 * PI);
+  vec4 m = vec4(frame * m2.xy, m2.z);
+  float mass = max(m.w, 0.0);
+  N_lobe = normalize(N + h + (mass > 0.0 ? m.xyz / mass : vec3(0.0)));
+  return mass;
 }
 
 #include "fresnel_f0.glsl"

@@ -131,10 +131,11 @@ ivec2 mirror_hit_at(ivec2 px) {
 }
 
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
-// highlight's lobe widened by the normal's spread over the pixel (specular_footprint_a2). Where
+// highlight integrated over the pixel's normals (bx, ax, by, ay: their change to its neighbours,
+// footprint_normal_steps). Where
 // the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse),
 // not the environment behind it: the environment's reflection is left out there.
-vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
+vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 V = vec3(0.0);
   ivec2 hit = ivec2(-1);
@@ -147,7 +148,7 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, footprint_a2,
+  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, bx, ax, by, ay,
                                              hit.x >= 0 ? 0.0 : u_env_intensity);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);
@@ -164,28 +165,37 @@ vec3 marble_compose(float depth, vec3 N, float footprint_a2) {
   return composed;
 }
 
-// The squared change of the normal from pixel p to its neighbour q, or -1 where q is off the
-// object or outside the frame (specular_footprint_a2's inputs).
-float normal_step_d2(ivec2 q, vec3 N) {
-  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return -1.0;
-  if (texelFetch(u_depth, q, 0).r >= 1.0) return -1.0;
-  vec3 d = decode_normal(texelFetch(u_normal, q, 0).xy) - N;
-  return dot(d, d);
+// The change of the normal from pixel p to its neighbour q (toward +axis: q - p, or p - q when q
+// lies on the minus side, `sign`); false where q is off the object or outside the frame.
+bool normal_step(ivec2 q, vec3 N, float sign, out vec3 step) {
+  step = vec3(0.0);
+  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
+  if (texelFetch(u_depth, q, 0).r >= 1.0) return false;
+  step = sign * (decode_normal(texelFetch(u_normal, q, 0).xy) - N);
+  return true;
 }
 
-// The highlight's footprint widening at surface pixel p (normal N), from both neighbours on each
-// axis, so a depth edge on one side is left out (footprint_axis_d2). The neighbour inside the 2x2
-// quad comes from the fine screen derivatives (d*_quad: N's and coverage's), the one outside it
-// from two texel reads: half the reads of fetching all four (post pass +21 M instructions a
-// frame on the dragon at 800^2 with four; docs/performance.md, "Sixteenth session").
-float quad_step_d2(vec3 dn, float d_on) { return d_on == 0.0 ? dot(dn, dn) : -1.0; }
-float footprint_a2_at(ivec2 p, vec3 N, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy) {
+// The normal's change to the four neighbours of surface pixel p (normal N), each toward +axis
+// (bx, ax: before and after it along x; by, ay along y), a depth edge on one side mirrored from
+// the other (footprint_axis_steps). The neighbour inside the 2x2 quad comes from the fine screen
+// derivatives (d*_quad: N's and coverage's), the one outside it from two texel reads: half the
+// reads of fetching all four (post pass +21 M instructions a frame on the dragon at 800^2 with
+// four; docs/performance.md, "Sixteenth session").
+void footprint_normal_steps(ivec2 p, vec3 N, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy,
+                            out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
   // The quad pairs columns 2i | 2i+1 (and rows): an even pixel's partner is at +1, its outer
-  // neighbour at -1; an odd one's the other way round.
-  ivec2 outer = ivec2((p.x & 1) == 0 ? p.x - 1 : p.x + 1, (p.y & 1) == 0 ? p.y - 1 : p.y + 1);
-  float dx2 = footprint_axis_d2(quad_step_d2(dndx_quad, don_dx), normal_step_d2(ivec2(outer.x, p.y), N));
-  float dy2 = footprint_axis_d2(quad_step_d2(dndy_quad, don_dy), normal_step_d2(ivec2(p.x, outer.y), N));
-  return specular_footprint_a2(dx2, dy2);
+  // neighbour at -1; an odd one's the other way round. The quad's derivative is toward +axis.
+  bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
+  vec3 outer_x, outer_y;
+  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), N, even_x ? -1.0 : 1.0, outer_x);
+  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), N, even_y ? -1.0 : 1.0, outer_y);
+  bool quad_x_on = don_dx == 0.0, quad_y_on = don_dy == 0.0;
+  bx = even_x ? outer_x : dndx_quad;
+  ax = even_x ? dndx_quad : outer_x;
+  by = even_y ? outer_y : dndy_quad;
+  ay = even_y ? dndy_quad : outer_y;
+  footprint_axis_steps(bx, even_x ? outer_x_on : quad_x_on, ax, even_x ? quad_x_on : outer_x_on);
+  footprint_axis_steps(by, even_y ? outer_y_on : quad_y_on, ay, even_y ? quad_y_on : outer_y_on);
 }
 
 void main() {
@@ -198,13 +208,14 @@ void main() {
     vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
     float on = surface ? 1.0 : 0.0;
 #if SURFACE_REUSE == 2
-    float a2 = 0.0;  // in the stored reflected light
+    vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;  // in the stored reflected light
 #else
-    vec3 dndx = dFdxFine(N), dndy = dFdyFine(N);
+    vec3 dndx_quad = dFdxFine(N), dndy_quad = dFdyFine(N);
     float dondx = dFdxFine(on), dondy = dFdyFine(on);
-    float a2 = surface ? footprint_a2_at(ivec2(gl_FragCoord.xy), N, dndx, dndy, dondx, dondy) : 0.0;
+    vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;
+    if (surface) footprint_normal_steps(ivec2(gl_FragCoord.xy), N, dndx_quad, dndy_quad, dondx, dondy, bx, ax, by, ay);
 #endif
-    c = surface ? marble_compose(depth, N, a2) : vec3(0.0);
+    c = surface ? marble_compose(depth, N, bx, ax, by, ay) : vec3(0.0);
   } else {
     c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
   }

@@ -7,8 +7,8 @@
 // dielectric's exact Fresnel factor (as Cycles' Principled BSDF), and the environment's blurred
 // reflection weighted by the split-sum BRDF (Schlick-based: Karis's fit). E: the light's
 // irradiance at normal incidence; visible: its PCF visibility; ior: the stone's index.
-// bx, ax, by, ay: the normal's change to the pixel's neighbours before and after it along x and y
-// (0: a point sample); the light's lobe is integrated
+// bx, ax, by, ay: the normal's change to the pixel's neighbours before and after it along x and y,
+// less the half vector's (half_vector_step, post.frag.glsl; 0: a point sample); the light's lobe is integrated
 // over the pixel's normals (footprint_mean_distribution), N.L, N.V and Smith's shadowing taken at
 // the centroid of the lobe's mass within the footprint.
 vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, float roughness, vec3 bx, vec3 ax, vec3 by,

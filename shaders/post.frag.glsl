@@ -130,6 +130,23 @@ ivec2 mirror_hit_at(ivec2 px) {
   return ivec2(texelFetch(u_mirror_hit, t, 0).xy);
 }
 
+// The change of the half vector H (at P, normal N) from this pixel to its neighbour toward +axis
+// (axis: (1, 0) or (0, 1)). Across a pixel the highlight's argument is the normal relative to the
+// half vector, and both turn: the view vector with the camera's ray, and a point light's vector with
+// the surface point. The neighbour's point is taken on P's tangent plane, where its ray meets it, so
+// a depth edge beside P does not enter. Left out (the half vector held at the pixel centre's, as in
+// session 19's s19-glints), a lobe narrower than a pixel was integrated over a footprint too small:
+// on the test sphere of Specular.SubPixelHighlightKeepsItsPower (a pixel's normals 0.05 rad, the
+// half vector's 0.0075 rad the other way) the pixel holding the lobe read 1.19 of its brute-force
+// value (docs/quality.md, "Nineteenth session: ... s19-glints2").
+vec3 half_vector_step(vec3 P, vec3 N, vec3 H, vec2 axis) {
+  vec3 ray = surface_point(v_uv + axis / vec2(textureSize(u_depth, 0)), 1.0) - u_camera_pos;
+  float along = dot(ray, N);
+  if (abs(along) < 1e-6 * length(ray)) return vec3(0.0);  // the neighbour's ray grazes the plane
+  vec3 Q = u_camera_pos + ray * (dot(P - u_camera_pos, N) / along);
+  return normalize(normalize(u_camera_pos - Q) + light_vector(Q)) - H;
+}
+
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
 // highlight integrated over the pixel's normals (bx, ax, by, ay: their change to its neighbours,
 // footprint_normal_steps). Where
@@ -148,7 +165,9 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   vec3 L = light_vector(P);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, bx, ax, by, ay,
+  vec3 H = normalize(V + L);
+  vec3 hx = half_vector_step(P, N, H, vec2(1.0, 0.0)), hy = half_vector_step(P, N, H, vec2(0.0, 1.0));
+  precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, bx - hx, ax - hx, by - hy, ay - hy,
                                              hit.x >= 0 ? 0.0 : u_env_intensity);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);

@@ -6,8 +6,15 @@
 // dragon's 100,000 triangles cost 1.8 million fragment invocations for 130,000 covered
 // pixels (GPUs lose the same way, in 2x2 quads).
 #include "gbuffer.glsl"
+#include "valid_reflection.glsl"
 
+in vec3 v_world_pos;
 in vec3 v_world_normal;
+
+uniform vec3 u_camera_position;
+// `marble` mode: store the normal bent by Cycles' valid-reflection rule (valid_reflection.glsl),
+// which needs the triangle's own normal: only this pass has it exactly.
+uniform bool u_valid_reflection;
 
 layout(location = 0) out vec2 o_normal;
 
@@ -17,5 +24,20 @@ void main() {
   vec3 n = v_world_normal;
   // Meshes with inward or inconsistent winding: face the normal toward the viewer.
   if (!gl_FrontFacing) n = -n;
+  if (u_valid_reflection) {
+    // The triangle's normal: the screen derivatives of the interpolated position lie in its
+    // plane (exact for the primitive, helper lanes included). Faced toward the viewer, as
+    // Cycles' Ng is.
+    vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));
+    vec3 to_eye = u_camera_position - v_world_pos;
+    if (dot(ng, ng) > 0.0 && dot(n, n) > 0.0) {
+      if (dot(ng, to_eye) < 0.0) ng = -ng;
+      vec3 unit_n = normalize(n);
+      vec3 bent = valid_reflection_normal(normalize(ng), normalize(to_eye), unit_n);
+      // Store the interpolated normal unchanged where the rule keeps it: the same bits as
+      // without the rule.
+      if (bent != unit_n) n = bent;
+    }
+  }
   o_normal = encode_normal(n);
 }

@@ -20,7 +20,8 @@ void GeometryPass::resize(int width, int height) {
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 }
 
-void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera) {
+void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera,
+                       bool validReflection) {
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
@@ -32,6 +33,8 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);
   program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  program_.set("u_camera_position", camera.position);
+  program_.set("u_valid_reflection", validReflection ? 1 : 0);
   glUseProgram(program_.id());
   mesh.draw();
   timer_.end();

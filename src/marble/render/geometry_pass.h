@@ -14,7 +14,9 @@ class GeometryPass {
 public:
   explicit GeometryPass(const ShaderLibrary& shaders);
   void resize(int width, int height);
-  void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera);
+  // validReflection: store the normal bent by Cycles' valid-reflection rule
+  // (shaders/valid_reflection.glsl), for `marble` mode, whose Principled reference applies it.
+  void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera, bool validReflection);
   GLuint normalTexture() const { return normal_.id(); }
   GLuint depthTexture() const { return depth_.id(); }
   size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }

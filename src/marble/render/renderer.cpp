@@ -285,7 +285,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   }
   passes_->geometry.resize(width, height);
   if (stale(Pass::Geometry)) {
-    passes_->geometry.run(cameraMesh(), model, camera);
+    passes_->geometry.run(cameraMesh(), model, camera, marble);
     ran(Pass::Geometry);
   }
   const ScreenRect rect =

@@ -27,17 +27,13 @@ void main() {
   if (u_valid_reflection) {
     // The triangle's normal: the screen derivatives of the interpolated position lie in its
     // plane (exact for the primitive, helper lanes included). Faced toward the viewer, as
-    // Cycles' Ng is.
-    vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));
+    // Cycles' Ng is. Where the rule keeps the normal, the interpolated one is stored unchanged
+    // (the same bits as without the rule).
+    vec3 g = cross(dFdx(v_world_pos), dFdy(v_world_pos));
     vec3 to_eye = u_camera_position - v_world_pos;
-    if (dot(ng, ng) > 0.0 && dot(n, n) > 0.0) {
-      if (dot(ng, to_eye) < 0.0) ng = -ng;
-      vec3 unit_n = normalize(n);
-      vec3 bent = valid_reflection_normal(normalize(ng), normalize(to_eye), unit_n);
-      // Store the interpolated normal unchanged where the rule keeps it: the same bits as
-      // without the rule.
-      if (bent != unit_n) n = bent;
-    }
+    if (dot(g, to_eye) < 0.0) g = -g;
+    vec3 bent;
+    if (valid_reflection_bend(g, to_eye, n, bent)) n = bent;
   }
   o_normal = encode_normal(n);
 }

@@ -52,7 +52,7 @@ std::vector<StoredNormal> storedNormals(const Mesh& mesh, bool validReflection) 
   GpuMesh gpu(mesh);
   pass.run(gpu, glm::mat4(1.0f), matrices, validReflection);
   std::vector<float> encoded(kSize * kSize * 2), depth(kSize * kSize);
-  glGetTextureImage(pass.normalTexture(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(encoded.size() * 4),
+  glGetTextureImage(pass.specularNormalTexture(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(encoded.size() * 4),
                     encoded.data());
   glGetTextureImage(pass.depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * 4),
                     depth.data());
@@ -92,6 +92,25 @@ TEST(ValidReflection, MarbleModeLiftsTheViewsReflectionJustAboveTheFacet) {
     // Turned within the plane of the interpolated and the facet's normal, toward the viewer.
     ASSERT_NEAR(s.normal.x, 0.0f, 1e-3f);
     ASSERT_GT(glm::dot(s.normal, s.toEye), 0.0f);
+  }
+}
+
+// The normal leaning toward the camera, nearly along the facet: N.I = 0.99 but the view's
+// reflection is still below the facet (R.Ng = -0.07). Here the normal's tangential part points
+// toward the viewer (I.x > 0 in the rule's frame), where the other of the two roots of the
+// squared equation solves the rule's equation.
+TEST(ValidReflection, LiftsANormalLeaningTowardTheViewerToo) {
+  glContext();
+  const glm::vec3 towardAndLow = glm::normalize(glm::vec3(0.0f, 0.05f, 1.0f));
+  const std::vector<StoredNormal> bent = storedNormals(leaningFacet(towardAndLow), true);
+  ASSERT_GT(bent.size(), 100u);
+  for (const StoredNormal& s : bent) {
+    const float t = std::min(0.9f * s.toEye.y, 0.01f);
+    ASSERT_NEAR(reflectionAboveFacet(s), t, 0.002f) << s.normal.x << " " << s.normal.y << " " << s.normal.z;
+    ASSERT_NEAR(s.normal.x, 0.0f, 1e-3f);
+    // Turned toward the facet's normal, not past the view: still leaning toward the camera.
+    ASSERT_GT(s.normal.z, 0.0f);
+    ASSERT_GT(s.normal.y, towardAndLow.y);
   }
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Pass 2: the mesh seen from the camera into a lean G-buffer:
 //   normal  RG16_SNORM     4 bytes  (octahedral, world space)
+//   specular normal RG16_SNORM 4 bytes (marble mode: the normal bent by Cycles' valid-reflection
+//                                   rule, read by the post pass's reflection terms)
 //   depth   DEPTH32F       4 bytes  (position is reconstructed from it)
 // The albedo (RGBA8, 4 bytes) is added by the AlbedoPass: 8 bytes per pixel plus depth.
 #include "marble/gl/program.h"
@@ -14,17 +16,22 @@ class GeometryPass {
 public:
   explicit GeometryPass(const ShaderLibrary& shaders);
   void resize(int width, int height);
-  void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera);
+  // validReflection: also store the normal bent by Cycles' valid-reflection rule
+  // (shaders/valid_reflection.glsl), for `marble` mode, whose Principled reference applies it.
+  void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera, bool validReflection);
   GLuint normalTexture() const { return normal_.id(); }
+  // The normal for the reflection terms: the bent one where the last run stored it, else the normal.
+  GLuint specularNormalTexture() const { return validReflection_ ? specularNormal_.id() : normal_.id(); }
   GLuint depthTexture() const { return depth_.id(); }
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 8; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 12; }
   PassTimer& timer() { return timer_; }
 
 private:
   gl::Program program_;
-  gl::Texture normal_, depth_;
+  gl::Texture normal_, specularNormal_, depth_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
+  bool validReflection_ = false;
   PassTimer timer_;
 };
 

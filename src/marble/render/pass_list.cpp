@@ -15,8 +15,9 @@ constexpr PassDecl kPasses[] = {
      "Distance and entry cosine of the mesh seen from the light, and its depth (shadows, thickness).",
      in(I::LightMesh) | in(I::Model) | in(I::LightMatrices), 0, 0, 0, false},
     {Pass::Geometry, "geometry", "geometry",
-     "G-buffer: normal and depth of the mesh seen from the camera.",
-     in(I::CameraMesh) | in(I::Model) | in(I::CameraMatrices) | in(I::FrameSize), 0, 0, 0, false},
+     "G-buffer: normal and depth of the mesh seen from the camera (marble mode: also the normal bent by Cycles' "
+     "valid-reflection rule, for the post pass's reflection terms).",
+     in(I::CameraMesh) | in(I::Model) | in(I::CameraMatrices) | in(I::FrameSize) | in(I::Mode), 0, 0, 0, false},
     {Pass::Albedo, "albedo", "albedo",
      "The marble pattern, once per visible pixel (marble mode evaluates it in the post pass, into the same texture).",
      in(I::Model) | in(I::CameraMatrices) | in(I::SeenPattern) | in(I::TurbulenceGrid), kAlbedoPassBit, 0,

@@ -285,7 +285,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   }
   passes_->geometry.resize(width, height);
   if (stale(Pass::Geometry)) {
-    passes_->geometry.run(cameraMesh(), model, camera);
+    passes_->geometry.run(cameraMesh(), model, camera, marble);
     ran(Pass::Geometry);
   }
   const ScreenRect rect =
@@ -445,7 +445,7 @@ OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target,
 
 PostInputs Renderer::postInputs() const {
   return {passes_->lighting.hdrTexture(),      passes_->geometry.depthTexture(), passes_->blur.resultTexture(),
-          passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
+          passes_->albedo.albedoTexture(), passes_->geometry.specularNormalTexture(),
           passes_->lightDepth.depthTexture(), passes_->lighting.mirrorHitTexture()};
 }
 

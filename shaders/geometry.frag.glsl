@@ -16,15 +16,12 @@ uniform vec3 u_camera_position;
 // (valid_reflection.glsl), which needs the triangle's own normal: only this pass has it exactly.
 uniform bool u_valid_reflection;
 
-// Both normals in one RGBA16_SNORM target (one clear, one store per fragment: two RG16 targets
-// cost llvmpipe ~12 M instructions more a frame on the dragon at 800x800; docs/performance.md,
-// "Nineteenth session: both normals in one target"):
-//   .xy  the normal: the albedo pass, the light's entry and the bounce read it. Bent, it
-//        darkened back-lit rims 3-4x below Cycles' (docs/quality.md, "Eighteenth session" and
-//        "Nineteenth session: ... valid-reflection").
-//   .zw  the normal the post pass's reflection terms read (the highlight, the mirrored light):
-//        bent by the rule in `marble` mode; the same bits as .xy in other modes.
-layout(location = 0) out vec4 o_normals;
+layout(location = 0) out vec2 o_normal;
+// The normal the post pass's reflection terms read (the highlight, the mirrored light): bent by
+// the rule in `marble` mode; not written in other modes (no draw buffer). The light's entry and
+// the bounce read o_normal: bent, they darkened back-lit rims 3-4x below Cycles'
+// (docs/quality.md, "Eighteenth session" and "Nineteenth session: ... valid-reflection").
+layout(location = 1) out vec2 o_specular_normal;
 
 void main() {
   // Not normalized: the octahedral encoding divides by the L1 norm, whatever the length (a
@@ -32,18 +29,16 @@ void main() {
   vec3 n = v_world_normal;
   // Meshes with inward or inconsistent winding: face the normal toward the viewer.
   if (!gl_FrontFacing) n = -n;
-  vec2 encoded = encode_normal(n);
-  vec2 specular = encoded;
   if (u_valid_reflection) {
     // The triangle's normal: the screen derivatives of the interpolated position lie in its
     // plane (exact for the primitive, helper lanes included). Faced toward the viewer, as
     // Cycles' Ng is. Where the rule keeps the normal, the interpolated one is stored unchanged
-    // (the same bits as .xy).
+    // (the same bits as o_normal).
     vec3 g = cross(dFdx(v_world_pos), dFdy(v_world_pos));
     vec3 to_eye = u_camera_position - v_world_pos;
     if (dot(g, to_eye) < 0.0) g = -g;
     vec3 bent;
-    specular = encode_normal(valid_reflection_bend(g, to_eye, n, bent) ? bent : n);
+    o_specular_normal = encode_normal(valid_reflection_bend(g, to_eye, n, bent) ? bent : n);
   }
-  o_normals = vec4(encoded, specular);
+  o_normal = encode_normal(n);
 }

@@ -51,8 +51,6 @@ layout(binding = UNIT_POST_HDR) uniform sampler2D u_hdr;       // other modes: t
 layout(binding = UNIT_POST_BLURRED) uniform sampler2D u_blurred;   // marble: blurred entering light, half resolution
 layout(binding = UNIT_POST_DIFFUSE) uniform sampler2D u_diffuse;   // marble, DIFFUSE_SOURCE 2: the stored diffuse part
 layout(binding = UNIT_POST_ALBEDO) uniform sampler2D u_albedo;
-// The G-buffer's normals: the post pass reads .zw, the normal for the reflection terms (bent by
-// Cycles' valid-reflection rule in `marble` mode; shaders/geometry.frag.glsl).
 layout(binding = UNIT_POST_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_POST_LIGHT_SHADOW) uniform sampler2DShadow u_light_shadow;
 // Composing `marble` or passing another mode through: a constant of the program
@@ -192,7 +190,7 @@ bool normal_step(ivec2 q, vec3 N, float sign, out vec3 step) {
   step = vec3(0.0);
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
   if (texelFetch(u_depth, q, 0).r >= 1.0) return false;
-  step = sign * (decode_normal(texelFetch(u_normal, q, 0).zw) - N);
+  step = sign * (decode_normal(texelFetch(u_normal, q, 0).xy) - N);
   return true;
 }
 
@@ -226,7 +224,7 @@ void main() {
   if (u_compose_marble == 1) {
     // The fine derivatives are taken here, where every pixel of a 2x2 quad runs (none is defined
     // inside a branch some of them skip); background pixels hold N = 0 and on = 0.
-    vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).zw) : vec3(0.0);
+    vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
     float on = surface ? 1.0 : 0.0;
 #if SURFACE_REUSE == 2
     vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;  // in the stored reflected light

@@ -45,8 +45,8 @@ struct StoredNormal {
 };
 
 // Decodes the octahedral G-buffer normal (shaders/gbuffer.glsl) and, from the depth, the view.
-// specular: the post pass's normal (the normals texture's .zw), else the G-buffer's normal that
-// the light's entry and the bounce read (.xy).
+// specular: the post pass's normal (specularNormalTexture), else the G-buffer's normal that the
+// light's entry and the bounce read.
 std::vector<StoredNormal> storedNormals(const Mesh& mesh, bool validReflection, bool specular = true) {
   GeometryPass pass{ShaderLibrary()};
   pass.resize(kSize, kSize);
@@ -54,9 +54,9 @@ std::vector<StoredNormal> storedNormals(const Mesh& mesh, bool validReflection, 
   const CameraMatrices matrices = cameraMatrices(camera, 1.0f);
   GpuMesh gpu(mesh);
   pass.run(gpu, glm::mat4(1.0f), matrices, validReflection);
-  std::vector<float> normals(kSize * kSize * 4), depth(kSize * kSize);
-  glGetTextureImage(pass.normalTexture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(normals.size() * 4), normals.data());
-  const size_t channel = specular ? 2 : 0;
+  std::vector<float> encoded(kSize * kSize * 2), depth(kSize * kSize);
+  glGetTextureImage(specular ? pass.specularNormalTexture() : pass.normalTexture(), 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(encoded.size() * 4),
+                    encoded.data());
   glGetTextureImage(pass.depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * 4),
                     depth.data());
   std::vector<StoredNormal> out;
@@ -64,8 +64,7 @@ std::vector<StoredNormal> storedNormals(const Mesh& mesh, bool validReflection, 
     for (int x = 0; x < kSize; ++x) {
       const size_t i = static_cast<size_t>(y * kSize + x);
       if (depth[i] >= 1.0f) continue;  // background
-      const float ex = normals[4 * i + channel], ey = normals[4 * i + channel + 1];
-      glm::vec3 n(ex, ey, 1.0f - std::abs(ex) - std::abs(ey));
+      glm::vec3 n(encoded[2 * i], encoded[2 * i + 1], 1.0f - std::abs(encoded[2 * i]) - std::abs(encoded[2 * i + 1]));
       const float t = std::max(-n.z, 0.0f);
       n.x += n.x >= 0.0f ? -t : t;
       n.y += n.y >= 0.0f ? -t : t;

@@ -13,22 +13,29 @@ void GeometryPass::resize(int width, int height) {
   if (width == width_ && height == height_ && fbo_) return;
   width_ = width;
   height_ = height;
-  normals_ = gl::makeTexture2D(GL_RGBA16_SNORM, width, height, GL_NEAREST);
+  normal_ = gl::makeTexture2D(GL_RG16_SNORM, width, height, GL_NEAREST);
+  specularNormal_ = gl::makeTexture2D(GL_RG16_SNORM, width, height, GL_NEAREST);
   depth_ = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, normals_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, normal_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, specularNormal_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 }
 
 void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera,
                        bool validReflection) {
   timer_.begin();
+  validReflection_ = validReflection;
+  // The bent normal only where it is read (marble mode); otherwise its attachment is not drawn.
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, validReflection ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 2, drawBuffers);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
   gl::setMeshPassState();
   const float zero[4] = {0, 0, 0, 0};
   const float one = 1.0f;
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, zero);
+  if (validReflection) gl::clearFramebuffer(fbo_.id(), GL_COLOR, 1, zero);
   gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);

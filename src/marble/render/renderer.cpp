@@ -445,7 +445,7 @@ OffscreenTarget& Renderer::surfaceTarget(std::optional<OffscreenTarget>& target,
 
 PostInputs Renderer::postInputs() const {
   return {passes_->lighting.hdrTexture(),      passes_->geometry.depthTexture(), passes_->blur.resultTexture(),
-          passes_->albedo.albedoTexture(), passes_->geometry.normalTexture(),
+          passes_->albedo.albedoTexture(), passes_->geometry.specularNormalTexture(),
           passes_->lightDepth.depthTexture(), passes_->lighting.mirrorHitTexture()};
 }
 

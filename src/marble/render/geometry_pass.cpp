@@ -35,13 +35,7 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   const float zero[4] = {0, 0, 0, 0};
   const float one = 1.0f;
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, zero);
-  // The bent normal is not cleared (llvmpipe: 2.2 M instructions a frame at 800x800;
-  // docs/performance.md, "Nineteenth session: the geometry pass's cost"): its one reader, the
-  // post pass, reads it only at pixels whose depth is below 1 (post.frag.glsl: `surface`, and
-  // normal_step's depth test), and every such pixel was written in this run by the fragment that
-  // wrote its depth (the depth is cleared to 1 below; no fragment discards, and no colour is masked or blended).
-  // The normal is cleared: its readers (albedo, lighting, bounce) are not all shown to skip the
-  // background.
+  if (validReflection) gl::clearFramebuffer(fbo_.id(), GL_COLOR, 1, zero);
   gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   program_.set("u_model", model);
   program_.set("u_view_proj", camera.viewProj);

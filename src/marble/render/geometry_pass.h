@@ -2,8 +2,7 @@
 // Pass 2: the mesh seen from the camera into a lean G-buffer:
 //   normal  RG16_SNORM     4 bytes  (octahedral, world space)
 //   specular normal RG16_SNORM 4 bytes (marble mode: the normal bent by Cycles' valid-reflection
-//                                   rule, read by the post pass's reflection terms; not cleared:
-//                                   undefined on the background, where nothing reads it)
+//                                   rule, read by the post pass's reflection terms)
 //   depth   DEPTH32F       4 bytes  (position is reconstructed from it)
 // The albedo (RGBA8, 4 bytes) is added by the AlbedoPass: 8 bytes per pixel plus depth.
 #include "marble/gl/program.h"

@@ -20,15 +20,20 @@ void GeometryPass::resize(int width, int height) {
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, normal_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, specularNormal_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  drawBuffersSet_ = false;  // a new framebuffer draws to attachment 0 only
 }
 
 void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera,
                        bool validReflection) {
   timer_.begin();
-  validReflection_ = validReflection;
   // The bent normal only where it is read (marble mode); otherwise its attachment is not drawn.
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, validReflection ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 2, drawBuffers);
+  // Framebuffer state: set when the framebuffer is new or the mode changes, not every frame.
+  if (!drawBuffersSet_ || validReflection != validReflection_) {
+    const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, validReflection ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
+    glNamedFramebufferDrawBuffers(fbo_.id(), 2, drawBuffers);
+    drawBuffersSet_ = true;
+  }
+  validReflection_ = validReflection;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
   gl::setMeshPassState();

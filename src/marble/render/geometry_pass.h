@@ -32,6 +32,7 @@ private:
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
   bool validReflection_ = false;
+  bool drawBuffersSet_ = false;  // fbo_'s draw buffers match validReflection_
   PassTimer timer_;
 };
 

@@ -471,7 +471,8 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
     // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
-    // from 12. Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
+    // from 12, or where the surface the camera sees there faces away from the light (entry_seen).
+    // Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
     float tol = 4.0 * u_light_texel_world;
     float hidden = (1.0 - entry_seen(P_in + light_vector(P_in) * s, tol)) * (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);

@@ -395,23 +395,37 @@ vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   return mix(straight, rings, blend);
 }
 
-// How far the surface the camera sees in the direction of `entry` (where the transmitted light
-// entered the stone) lies from it: about 0 where the camera sees the entry, the thickness of
-// stone in front of it where the object hides it, and "far" (1e30) off screen or against the
-// background. The subsurface blur spreads the light entering every surface the camera sees over
-// its neighbours, so light whose entry the camera sees is, near that entry, already in the
-// picture (docs/quality.md, "Tenth session: the back-lit glow"). The distance, not a yes/no,
-// so that the weight built on it changes smoothly where an entry passes behind a silhouette.
-float entry_hidden_by(vec3 entry) {
+// How much the camera sees of `entry` (where the transmitted light entered the stone): 1 where
+// it does, 0 where the object hides it, off screen or against the background. The subsurface
+// blur spreads the light entering every surface the camera sees over its neighbours, so light
+// whose entry the camera sees is, near that entry, already in the picture (docs/quality.md,
+// "Tenth session: the back-lit glow"). Two conditions, each a ramp, not a yes/no, so that the
+// weight built on it changes smoothly where an entry passes behind a silhouette or a terminator:
+// - the surface the camera sees in the entry's direction lies at the entry: within tol (the map's
+//   placement of the entry, a few texels), gone from 3 tol (the stone in front of it hides it);
+// - that surface faces the light. The light entered through a surface facing it (the map's
+//   entry cosine is > 0); a surface the camera sees within tol of the entry but facing away from
+//   the light is another sheet -- the far face of a part thinner than tol, the front wall of the
+//   teapot's open body where the light enters its inner face through the lid's gap -- and the
+//   entry is behind it. Without this, light crossing such a thin part was counted as seen and
+//   weighted as the terminator's, away^2 (0.49 on teapot-back's lid rim, docs/quality.md,
+//   "Twentieth session: teapot-back's thin sheets"). Ramp over N.L -0.1 ... 0, as the
+//   transmission's own turn-on over the exit's N.L (marble_entering): across a terminator the
+//   shading normals and the map's cosines disagree by about that much.
+float entry_seen(vec3 entry, float tol) {
   vec4 clip = u_view_proj * vec4(entry, 1.0);
   vec3 ndc = clip.xyz / clip.w;
-  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1e30;
+  if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
   ivec2 size = textureSize(u_depth, 0);
   ivec2 pixel = min(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), size - 1);
   float depth = texelFetch(u_depth, pixel, 0).r;
-  if (depth >= 1.0) return 1e30;
+  if (depth >= 1.0) return 0.0;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
-  return distance(surface_point(uv, depth), entry);
+  vec3 S = surface_point(uv, depth);
+  float at_entry = 1.0 - smoothstep(tol, 3.0 * tol, distance(S, entry));
+  if (at_entry <= 0.0) return 0.0;
+  vec3 N_seen = decode_normal(texelFetch(u_normal, pixel, 0).xy);
+  return at_entry * smoothstep(-0.1, 0.0, dot(N_seen, light_vector(S)));
 }
 
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
@@ -457,10 +471,10 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
     // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
-    // from 12. Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
+    // from 12, or where the surface the camera sees there faces away from the light (entry_seen).
+    // Turned on over the first 0.1 of -N.L so that the weight stays continuous there.
     float tol = 4.0 * u_light_texel_world;
-    float hidden = smoothstep(tol, 3.0 * tol, entry_hidden_by(P_in + light_vector(P_in) * s)) *
-                   (1.0 - smoothstep(-0.1, 0.0, NoL));
+    float hidden = (1.0 - entry_seen(P_in + light_vector(P_in) * s, tol)) * (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
     // The first bounce entering at the same entry (bounce_entry.glsl), carried through the chord
     // as light entering at normal incidence is (slab_transport: the straight model alone, without

@@ -240,3 +240,51 @@ TEST_F(TransmissionShell, CurvedPlateLitAtASlantPassesWhatItsThicknessLetsThroug
               << " " << centre.g / expected.g << " " << centre.b / expected.b << ")\n";
   }
 }
+
+namespace {
+
+// A sheet thinner than the transmission's tolerance for "the camera sees the entry" (4 light-map
+// texels: 0.0135 units, the 1024² map spanning the bounding sphere's diameter): 0.01 units thick.
+constexpr float kSheetHalfThickness = 0.005f, kSheetMmPerUnit = 100.0f;  // 1 mm
+
+struct TransmissionSheet : ::testing::Test {
+  HeadlessContext& context = glContext();
+  Renderer renderer;
+  TransmissionSheet() { renderer.setMesh(slabMesh(kHalfWidth, kSheetHalfThickness)); }
+  // The exit's light at the sheet's centre, lit from behind at `degrees` off its normal.
+  glm::vec3 exitAt(float degrees) {
+    Scene s = test::backLitScene("test:sheet", kSheetMmPerUnit, kSize);
+    const float theta = glm::radians(degrees);
+    s.light.position = {std::sin(theta), 0.0f, -std::cos(theta)};
+    renderImage(renderer, s);
+    return linearRgbAround(renderer.readHdr(), s, {0, 0, kSheetHalfThickness});
+  }
+};
+
+}  // namespace
+
+// Light crossing a sheet thinner than that tolerance, lit from behind at 45 degrees: its entry lies
+// within the tolerance of the face the camera sees, but that face looks away from the light, and
+// light enters only through a face that faces it, so the camera cannot see the entry. The exit
+// takes the transmission at weight 1, as the slanted slab above: the sheet passes what its
+// thickness lets through, times the entry's cos · principled_entry(cos). Checked against the same
+// sheet lit straight from behind (where the exit's N.L = -1 and the weight is 1 either way), so that
+// the weight is what is tested, not the transport through a sheet this thin. This is the wall of the
+// teapot's open body lit through the lid's gap (docs/quality.md, "Twentieth session: teapot-back's
+// thin sheets"). Measured 0.91 / 0.89 / 0.87 (r, g, b). Tolerance 15 %: the slanted gather passes
+// a little less than the thickness model through a sheet this thin, 4-5 % less at 30 degrees, 9-13 %
+// at 45, 19-26 % at 60 (a limit of the gather's plane on sheets of a few texels, not of the weight).
+// Control (checked by hand, main before session 20: the entry counted as seen wherever it lies
+// within the tolerance): the terminator's weight away^2 = (1/2 + cos/2)^2 = 0.73 of that, 0.66 / 0.65
+// / 0.64, failing.
+TEST_F(TransmissionSheet, ThinSheetLitAtASlantIsNotTakenForASeenEntry) {
+  const glm::vec3 behind = exitAt(0.0f), slanted = exitAt(45.0f);
+  const glm::vec3 expected = behind * (slantedEntry(glm::radians(45.0f)) / slantedEntry(0.0f));
+  for (int ch = 0; ch < 3; ++ch) {
+    EXPECT_GT(expected[ch], 1e-3f) << "the sheet must let light through in channel " << ch;
+    EXPECT_NEAR(slanted[ch], expected[ch], 0.15f * expected[ch]) << "channel " << ch;
+  }
+  std::cout << "[          ] sheet: 45 degrees " << slanted.r << " " << slanted.g << " " << slanted.b << ", from behind x entry "
+            << expected.r << " " << expected.g << " " << expected.b << " (ratio " << slanted.r / expected.r << " "
+            << slanted.g / expected.g << " " << slanted.b / expected.b << ")\n";
+}

@@ -15,10 +15,18 @@
 // receiver's specular layer -> camera), which a diffuse receiver leaves out and which is most of
 // what back-lit stone shows between its lit rims (docs/quality.md, "Tenth session"; bounce_sample).
 // Approximations, each stated:
-// - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
-//   between two parts that cannot see each other; the cosines already drop every emitter behind
-//   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
-//   receives none;
+// - visibility between emitter and receiver only through the stone (since session 19): a sample
+//   whose segment to the receiver passes through the first part the light meets is left out
+//   (bounce_crosses_stone: three points on the segment against the light's entry and exit
+//   layers). Light from a lit surface to a point behind the stone goes through the stone or not at
+//   all, and through the stone it is the transmission's (lighting.frag.glsl: the light entering
+//   around the receiver's light ray, carried by the random walk's slab kernel, per channel), so the
+//   bounce does not carry it again. Without it buddha-side's thick shaded side took 2.9-3.6x
+//   Cycles' indirect light, neutral where Cycles' is near black and red (docs/quality.md,
+//   "Nineteenth session"). Other occluders (air paths blocked by a second part behind the first,
+//   points inside parts the light meets second) are not seen: as before, the cosines drop every
+//   emitter behind the receiver's tangent plane and every receiver behind the emitter's, so a
+//   convex surface receives none;
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
@@ -42,6 +50,29 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
+layout(binding = UNIT_LIGHTING_BOUNCE_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit (light_layers.frag.glsl)
+uniform float u_bounce_layer_texel;  // a texel of the layers at the object (scene units)
+
+// Whether the segment from the emitter xp to the receiver P passes through the stone: whether one
+// of its points at 1/4, 1/2 and 3/4 lies between the entry and the exit of the first part the
+// light's ray through it meets (light_layers.frag.glsl), by more than a texel of the layers (their
+// nearest read and the surfaces' slope within a texel; the segment's ends lie on the surface). Three
+// points, as session 9's and 18's tests: a segment that crosses a part thinner than a quarter of
+// its length between them is missed. A point beyond the exit is air (the gap behind the first
+// part), off the map or where no exit lies behind the entry (an open or inward-wound mesh) too.
+bool bounce_crosses_stone(vec3 xp, vec3 P) {
+  for (int i = 1; i <= 3; ++i) {
+    vec3 q = mix(xp, P, 0.25 * float(i));
+    vec4 clip = u_light_view_proj * vec4(q, 1.0);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    vec2 layers = textureLod(u_bounce_layers, uv, 0.0).xy;  // off the map: clamped, then refused below
+    float d = light_distance_of(q);
+    bool onMap = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    bool exits = layers.y < 1e20;  // LightDepthPass::kNoLayer (1e30) where no surface faces away
+    if (onMap && exits && d > layers.x + u_bounce_layer_texel && d < layers.y - u_bounce_layer_texel) return true;
+  }
+  return false;
+}
 
 // Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
 // width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
@@ -110,7 +141,7 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
   float r2 = max(dot(d, d), 1e-12);
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
-  if (cosP <= 0.0 || cosX <= 0.0) return vec4(0.0);
+  if (cosP <= 0.0 || cosX <= 0.0 || bounce_crosses_stone(xp, P)) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

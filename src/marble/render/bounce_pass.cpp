@@ -74,6 +74,11 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_LAYERS, in.bounceLayers);
+  // The layers' texel at the object, for the visibility test's tolerance (bounce.glsl): the light's
+  // map spans the bounding sphere's diameter (view_setup.h).
+  const float layerTexel = 2.0f * kBoundingRadius / static_cast<float>(std::max(in.bounceMapSize, 1));
+  for (const gl::Program* p : {&program_, &refineProgram_, &entryProgram_}) p->set("u_bounce_layer_texel", layerTexel);
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }

@@ -40,6 +40,7 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
+  GLuint bounceLayers;                                 // the light's entry and exit layers, at its size
   int bounceMapSize;                                   // the reflective shadow map's finest width
 };
 

@@ -52,6 +52,8 @@ layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_posit
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
 layout(binding = UNIT_LIGHTING_BOUNCE_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit (light_layers.frag.glsl)
 uniform float u_bounce_layer_texel;  // a texel of the layers at the object (scene units)
+layout(binding = UNIT_LIGHTING_BOUNCE_EXITS) uniform sampler2D u_bounce_exits;  // the far side's emitters (bounce_exits.frag.glsl)
+layout(binding = UNIT_LIGHTING_BOUNCE_EXIT_NORMALS) uniform sampler2D u_bounce_exit_normals;  // and their normals
 
 // Whether the segment from the emitter xp to the receiver P passes through the stone: whether one
 // of its points at 1/4, 1/2 and 3/4 lies between the entry and the exit of the first part the
@@ -116,17 +118,9 @@ const float BOUNCE_GLOSS = 4.0;
 // glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
 // shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
 
-// Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
-// radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
-// y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
-// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
-// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
-// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
-// within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  float texels = dA * size * size;
-  float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
+// The light side's emitters (the reflective shadow map) of bounce_sample's area, `texels` of the
+// finest level, read at `lod`.
+vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
   if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
@@ -155,6 +149,48 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
   float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
   float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
+}
+
+// The far side's emitters of the same area (bounce_exits.frag.glsl: the light the first part the
+// light meets lets through, leaving its far side, Lambertian about the exit's normal), as the
+// reflected ones' diffuse and mirrored parts with their flux phi instead of w (no glossy part: the
+// light leaves from inside the stone), and the same visibility through the stone: the exit point
+// lies on the first part's far side, so a segment from it into the air behind the part is clear
+// and one back through the part is not.
+vec4 bounce_exiting(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
+  vec4 pe = textureLod(u_bounce_exits, uv, lod);  // mean of (exit point x phi, phi)
+  if (pe.w <= 0.0) return vec4(0.0);
+  vec3 xe = pe.xyz / pe.w;
+  float A = pe.w * texels;
+  vec3 ne = textureLod(u_bounce_exit_normals, uv, lod).xyz;  // mean of (normal x phi)
+  float nl = length(ne);
+  if (nl < 1e-12) return vec4(0.0);
+  ne /= nl;
+  vec3 d = P - xe;
+  float r2 = max(dot(d, d), 1e-12);
+  float cosP = dot(ne, d);  // x |d|
+  float cosX = -dot(N, d);
+  if (cosP <= 0.0 || cosX <= 0.0 || bounce_crosses_stone(xe, P)) return vec4(0.0);
+  float falloff = light_falloff(light_distance_of(xe));
+  float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
+  float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
+  float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
+  return falloff * vec4(diffuse, 0.0, 0.0, mirrored);
+}
+
+// Irradiance at P (normal N) from the emitters (the light side's and, since session 20, the far
+// side's of the first part) in the uv area dA around uv, per unit of the light's
+// radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
+// y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
+// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
+// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
+// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
+// within the level: continuous in uv).
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
+  float texels = dA * size * size;
+  float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
+  return bounce_reflected(P, N, R, uv, texels, lod) + bounce_exiting(P, N, R, uv, texels, lod);
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,

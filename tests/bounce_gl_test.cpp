@@ -24,6 +24,7 @@
 #include "marble/mesh/vertex_normals.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/material_scattering.h"
+#include "marble/scene/slab_transport.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -263,6 +264,69 @@ TEST_F(Bounce, NoneThroughTheStone) {
                         mirroredPlate(albedo, kHeight, v, 90.0f, kBlockFar, 1.0);
   std::cout << "[          ] the strip's " << strip << ", beyond the block " << beyond << ", got " << got.g << "\n";
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], strip, 0.3 * strip) << "channel " << c;
+}
+
+namespace {
+// The corner with a thin plate, lit from below (the light travels along +y): the plate's underside
+// takes the light, the random walk carries T(s) of it through the plate's kThinPlate, and its top
+// glows upward, toward the probe's face (edge-on to the light: no direct light). The light the
+// plate reflects leaves its lit underside downward, and the wall's lit bottom faces down too:
+// neither reaches the probe, so what the probe takes from the plate is the far side's light alone.
+// 4 mm at 100 mm per unit (kThinScale): over a texel of the light's layers (2 sqrt(3) / 128 = 0.027
+// units), the finest chord whose far side emits (bounce_exits.frag.glsl).
+constexpr float kThinPlate = 0.04f, kThinScale = 100.0f;
+Mesh thinCorner(bool plateFacingProbe, float thickness = kThinPlate) {
+  Mesh m;
+  addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  if (plateFacingProbe)
+    addBox(m, {kWall, kPlateTop - thickness, -1.0f}, {1.0f, kPlateTop, 1.0f});
+  else
+    addBox(m, {-1.0f, kPlateTop - thickness, -1.0f}, {-kWall, kPlateTop, 1.0f});
+  computeVertexNormals(m, 60.0f);
+  return m;
+}
+}  // namespace
+
+TEST_F(Bounce, ThinPartsFarSideLightsTheFaceBeyondIt) {
+  // Session 20: the far side of the first part the light meets emits the light the walk carried
+  // through it (bounce_exits.frag.glsl). The plate's top emits albedo x E x T(s) per unit area
+  // (E = PI, the sun's at normal incidence, where the entry's coupling is 1; T(s) the slab's
+  // transport relative to R_inf, its luminance for a grey stone: the emitters' colour is the
+  // albedo's), a Lambertian emitter facing the light's direction of travel, here the top's normal:
+  // the probe takes albedo^2 41/42 T F_plate + T x the plate's mirrored part, the corner's light with
+  // T beside it. Allowed 30 %, as the corner's (the reflective shadow map's near field,
+  // Bounce.NearTheFoldTheClosestEmittersCount). Without the far side's emitters the probe takes
+  // nothing from the plate.
+  const float albedo = 0.8f;
+  Scene s = cornerScene(albedo, kHeight, -90.0f);
+  s.mm_per_unit = kThinScale;
+  const glm::vec3 T = slabTransportAt(slabTransportFor(s.material), kThinPlate * s.mm_per_unit);
+  const double lumT = glm::dot(glm::dvec3(0.2126, 0.7152, 0.0722), glm::dvec3(T));
+  const HdrPair img = renderHdrPair(s, thinCorner(true), thinCorner(false));
+  const glm::vec3 got = linearRgbAround(img.first, s, probe(kHeight)) - linearRgbAround(img.second, s, probe(kHeight));
+  const double want = lumT * (albedo * albedo * (41.0 / 42.0) * viewFactorOfPlate(kHeight) +
+                              mirroredPlate(albedo, kHeight, kHeadOn));
+  std::cout << "[          ] T(" << kThinPlate * s.mm_per_unit << " mm) " << T.r << " " << T.g << " " << T.b
+            << ", want " << want << ", got " << got.r << " " << got.g << " " << got.b << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want, 0.3 * want) << "channel " << c;
+}
+
+TEST_F(Bounce, NoFarSideLightThroughAChordUnderALayersTexel) {
+  // A plate a third of a texel of the light's layers thick (0.009 units, 0.9 mm): its entry and exit
+  // are point samples the layers do not resolve, and its far side emits nothing
+  // (bounce_exits.frag.glsl; docs/quality.md, "Twentieth session": such chords emitting cost
+  // buddha-side SSIM). The probe takes under 2 % of what the far side would send it.
+  const float albedo = 0.8f, thin = 0.009f;
+  Scene s = cornerScene(albedo, kHeight, -90.0f);
+  s.mm_per_unit = kThinScale;
+  const glm::vec3 T = slabTransportAt(slabTransportFor(s.material), thin * s.mm_per_unit);
+  const double lumT = glm::dot(glm::dvec3(0.2126, 0.7152, 0.0722), glm::dvec3(T));
+  const HdrPair img = renderHdrPair(s, thinCorner(true, thin), thinCorner(false, thin));
+  const glm::vec3 got = linearRgbAround(img.first, s, probe(kHeight)) - linearRgbAround(img.second, s, probe(kHeight));
+  const double would = lumT * (albedo * albedo * (41.0 / 42.0) * viewFactorOfPlate(kHeight) +
+                               mirroredPlate(albedo, kHeight, kHeadOn));
+  std::cout << "[          ] would " << would << ", got " << got.g << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_LT(std::abs(got[c]), 0.02 * would) << "channel " << c;
 }
 
 TEST_F(Bounce, GrazingLightAlsoBouncesOffTheGlossySurface) {

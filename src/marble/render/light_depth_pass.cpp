@@ -7,23 +7,6 @@
 #include "marble/gl/checked_calls.h"
 
 namespace marble {
-namespace {
-
-// A mipmapped render target (all levels down to 1x1), clamped; read bilinearly within the nearest
-// level (bounce.glsl picks a level per sample): trilinear cost the dragon's lighting pass ~1.5x.
-gl::Texture makeMipmapped(GLenum internalFormat, int size) {
-  int levels = 1;
-  while ((size >> levels) > 0) ++levels;
-  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(t.id(), levels, internalFormat, size, size);
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
-
-}  // namespace
 
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
@@ -43,8 +26,8 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // w is a texel's area, ~1e-5 scene units^2, below half float's normal range (and so is the
       // glossy weight a in the normal's alpha).
       bounceSize_(std::max(size / 8, 1)),
-      bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
-      bounceNormal_(makeMipmapped(GL_RGBA32F, bounceSize_)),
+      bouncePosition_(gl::makeMipmappedTexture2D(GL_RGBA32F, bounceSize_)),
+      bounceNormal_(gl::makeMipmappedTexture2D(GL_RGBA32F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
       // Nearest: a blend of an entry with "none" would be meaningless.
       bounceLayers_(gl::makeTexture2D(GL_RG32F, bounceSize_, bounceSize_, GL_NEAREST)),

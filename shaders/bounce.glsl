@@ -27,6 +27,11 @@
 //   points inside parts the light meets second) are not seen: as before, the cosines drop every
 //   emitter behind the receiver's tangent plane and every receiver behind the emitter's, so a
 //   convex surface receives none;
+// - the emitters are the light's side of the first part the light meets (the reflective shadow map)
+//   and, since session 20, its far side (bounce_exits.frag.glsl: the light the walk carries through
+//   the part, from its exit, Lambertian about the exit's normal; its own approximations there).
+//   Back-lit, that far side's glow is what lights the body beside the thin parts; before, only the
+//   light bounced through the stone stood in for it (docs/quality.md, "Twentieth session");
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the

@@ -84,8 +84,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glEnable(GL_BLEND);
   glBlendEquation(GL_MIN);
   const float none[4] = {kNoLayer, kNoLayer, 0.0f, 0.0f};
-  gl::checkBeforeDraw();
-  glClearNamedFramebufferfv(layersFbo_.id(), GL_COLOR, 0, none);
+  gl::clearFramebuffer(layersFbo_.id(), GL_COLOR, 0, none);
   layersProgram_.set("u_model", model);
   layersProgram_.set("u_view_proj", light.viewProj);
   layersProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));

@@ -124,10 +124,8 @@ const float BOUNCE_GLOSS = 4.0;
 // shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
 
 // The light side's emitters (the reflective shadow map) of bounce_sample's area, `texels` of the
-// finest level, read at `lod`.
-vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
-  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
-  if (pw.w <= 0.0) return vec4(0.0);
+// finest level, read at `lod`: pw, the mean of (position x w, w) over the level's texel (w > 0).
+vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, vec4 pw, float texels, float lod) {
   vec3 xp = pw.xyz / pw.w;
   vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
@@ -195,7 +193,15 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float 
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   float texels = dA * size * size;
   float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
-  return bounce_reflected(P, N, R, uv, texels, lod) + bounce_exiting(P, N, R, uv, texels, lod);
+  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
+  // No surface of the light's map there: no exit either (the far side's map is 0 where this one is),
+  // and its reads are saved.
+  if (pw.w <= 0.0) return vec4(0.0);
+#ifdef BOUNCE_REFLECTED_ONLY
+  return bounce_reflected(P, N, R, uv, pw, texels, lod);
+#else
+  return bounce_reflected(P, N, R, uv, pw, texels, lod) + bounce_exiting(P, N, R, uv, texels, lod);
+#endif
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,

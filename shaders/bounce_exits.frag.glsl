@@ -36,6 +36,8 @@ uniform float u_translucency;
 uniform vec3 u_pat_base_color;  // the emitters' albedo (bounce_merge.frag.glsl applies it)
 uniform float u_layer_texel;    // a texel of the layers at the object (scene units)
 
+const float EXITS_MIN_TRANSPORT = 0.01;  // of the light the same surface reflects (T / R_inf)
+
 layout(location = 0) out vec4 o_exit;    // exit point x phi, phi (scene units^2, as w)
 layout(location = 1) out vec4 o_normal;  // the exit's normal x phi (its mean's direction: the emitters' normal)
 
@@ -66,7 +68,11 @@ void main() {
   // silhouettes, parts finer than the map), which the visibility test (bounce_crosses_stone, its
   // one-texel tolerance) does not count as stone either. Measured: chords under 3 mm emitting
   // cost buddha-side 0.008 of SSIM (docs/quality.md, "Twentieth session").
-  float phi = e.w > u_layer_texel ? w * transported * u_translucency : 0.0;
+  // And only where the part lets through at least EXITS_MIN_TRANSPORT of what it reflects: the
+  // thick parts' exits (most of a statue's body) emit less than that, and left at 0 their samples
+  // cost the gathers one texture read instead of the cosines and the visibility test
+  // (docs/performance.md, "Twentieth session").
+  float phi = e.w > u_layer_texel && transported >= EXITS_MIN_TRANSPORT ? w * transported * u_translucency : 0.0;
   // The exit surface's normal from the exit points of the texel's neighbours (central differences,
   // one-sided where a neighbour's ray misses the part or leaves it elsewhere: an exit point over 4
   // texels away, a slope beyond 76 degrees), turned along the light's travel; the travel itself

@@ -15,23 +15,10 @@
 // receiver's specular layer -> camera), which a diffuse receiver leaves out and which is most of
 // what back-lit stone shows between its lit rims (docs/quality.md, "Tenth session"; bounce_sample).
 // Approximations, each stated:
-// - visibility between emitter and receiver only through the stone (since session 19): a sample
-//   whose segment to the receiver passes through the first part the light meets is left out
-//   (bounce_crosses_stone: three points on the segment against the light's entry and exit
-//   layers). Light from a lit surface to a point behind the stone goes through the stone or not at
-//   all, and through the stone it is the transmission's (lighting.frag.glsl: the light entering
-//   around the receiver's light ray, carried by the random walk's slab kernel, per channel), so the
-//   bounce does not carry it again. Without it buddha-side's thick shaded side took 2.9-3.6x
-//   Cycles' indirect light, neutral where Cycles' is near black and red (docs/quality.md,
-//   "Nineteenth session"). Other occluders (air paths blocked by a second part behind the first,
-//   points inside parts the light meets second) are not seen: as before, the cosines drop every
-//   emitter behind the receiver's tangent plane and every receiver behind the emitter's, so a
-//   convex surface receives none;
-// - the emitters are the light's side of the first part the light meets (the reflective shadow map)
-//   and, since session 20, its far side (bounce_exits.frag.glsl: the light the walk carries through
-//   the part, from its exit, Lambertian about the exit's normal; its own approximations there).
-//   Back-lit, that far side's glow is what lights the body beside the thin parts; before, only the
-//   light bounced through the stone stood in for it (docs/quality.md, "Twentieth session");
+// - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
+//   between two parts that cannot see each other; the cosines already drop every emitter behind
+//   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
+//   receives none;
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
@@ -55,31 +42,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-layout(binding = UNIT_LIGHTING_BOUNCE_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit (light_layers.frag.glsl)
-uniform float u_bounce_layer_texel;  // a texel of the layers at the object (scene units)
-layout(binding = UNIT_LIGHTING_BOUNCE_EXITS) uniform sampler2D u_bounce_exits;  // the far side's emitters (bounce_exits.frag.glsl)
-layout(binding = UNIT_LIGHTING_BOUNCE_EXIT_NORMALS) uniform sampler2D u_bounce_exit_normals;  // and their normals
-
-// Whether the segment from the emitter xp to the receiver P passes through the stone: whether one
-// of its points at 1/4, 1/2 and 3/4 lies between the entry and the exit of the first part the
-// light's ray through it meets (light_layers.frag.glsl), by more than a texel of the layers (their
-// nearest read and the surfaces' slope within a texel; the segment's ends lie on the surface). Three
-// points, as session 9's and 18's tests: a segment that crosses a part thinner than a quarter of
-// its length between them is missed. A point beyond the exit is air (the gap behind the first
-// part), off the map or where no exit lies behind the entry (an open or inward-wound mesh) too.
-bool bounce_crosses_stone(vec3 xp, vec3 P) {
-  for (int i = 1; i <= 3; ++i) {
-    vec3 q = mix(xp, P, 0.25 * float(i));
-    vec4 clip = u_light_view_proj * vec4(q, 1.0);
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    vec2 layers = textureLod(u_bounce_layers, uv, 0.0).xy;  // off the map: clamped, then refused below
-    float d = light_distance_of(q);
-    bool onMap = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
-    bool exits = layers.y < 1e20;  // LightDepthPass::kNoLayer (1e30) where no surface faces away
-    if (onMap && exits && d > layers.x + u_bounce_layer_texel && d < layers.y - u_bounce_layer_texel) return true;
-  }
-  return false;
-}
 
 // Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
 // width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
@@ -123,9 +85,19 @@ const float BOUNCE_GLOSS = 4.0;
 // glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
 // shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
 
-// The light side's emitters (the reflective shadow map) of bounce_sample's area, `texels` of the
-// finest level, read at `lod`: pw, the mean of (position x w, w) over the level's texel (w > 0).
-vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, vec4 pw, float texels, float lod) {
+// Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
+// radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
+// y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
+// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
+// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
+// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
+// within the level: continuous in uv).
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
+  float texels = dA * size * size;
+  float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
+  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
+  if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
   vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
@@ -138,7 +110,7 @@ vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, vec4 pw, float texels, fl
   float r2 = max(dot(d, d), 1e-12);
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
-  if (cosP <= 0.0 || cosX <= 0.0 || bounce_crosses_stone(xp, P)) return vec4(0.0);
+  if (cosP <= 0.0 || cosX <= 0.0) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
@@ -152,56 +124,6 @@ vec4 bounce_reflected(vec3 P, vec3 N, vec3 R, vec2 uv, vec4 pw, float texels, fl
   float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
   float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
-}
-
-// The far side's emitters of the same area (bounce_exits.frag.glsl: the light the first part the
-// light meets lets through, leaving its far side, Lambertian about the exit's normal), as the
-// reflected ones' diffuse and mirrored parts with their flux phi instead of w (no glossy part: the
-// light leaves from inside the stone), and the same visibility through the stone: the exit point
-// lies on the first part's far side, so a segment from it into the air behind the part is clear
-// and one back through the part is not.
-vec4 bounce_exiting(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
-  vec4 pe = textureLod(u_bounce_exits, uv, lod);  // mean of (exit point x phi, phi)
-  if (pe.w <= 0.0) return vec4(0.0);
-  vec3 xe = pe.xyz / pe.w;
-  float A = pe.w * texels;
-  vec3 ne = textureLod(u_bounce_exit_normals, uv, lod).xyz;  // mean of (normal x phi)
-  float nl = length(ne);
-  if (nl < 1e-12) return vec4(0.0);
-  ne /= nl;
-  vec3 d = P - xe;
-  float r2 = max(dot(d, d), 1e-12);
-  float cosP = dot(ne, d);  // x |d|
-  float cosX = -dot(N, d);
-  if (cosP <= 0.0 || cosX <= 0.0 || bounce_crosses_stone(xe, P)) return vec4(0.0);
-  float falloff = light_falloff(light_distance_of(xe));
-  float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
-  float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
-  float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
-  return falloff * vec4(diffuse, 0.0, 0.0, mirrored);
-}
-
-// Irradiance at P (normal N) from the emitters (the light side's and, since session 20, the far
-// side's of the first part) in the uv area dA around uv, per unit of the light's
-// radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
-// y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
-// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
-// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
-// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
-// within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  float texels = dA * size * size;
-  float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
-  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
-  // No surface of the light's map there: no exit either (the far side's map is 0 where this one is),
-  // and its reads are saved.
-  if (pw.w <= 0.0) return vec4(0.0);
-#ifdef BOUNCE_REFLECTED_ONLY
-  return bounce_reflected(P, N, R, uv, pw, texels, lod);
-#else
-  return bounce_reflected(P, N, R, uv, pw, texels, lod) + bounce_exiting(P, N, R, uv, texels, lod);
-#endif
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,

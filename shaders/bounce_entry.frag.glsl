@@ -17,10 +17,6 @@
 // Interleaved as the camera-side gather: each 2 x 2 block turns the pattern by quarters of its
 // angular step, and the lighting pass reads the grid bilinearly.
 const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs it
-// The light side's receivers face the light, and the far side's emitters (bounce_exits.frag.glsl)
-// face away from it: the little they could send here (a lit surface facing back toward another
-// part's far side) is left out, and with it their cost on every light change.
-#define BOUNCE_REFLECTED_ONLY
 #include "deferred_common.glsl"
 #include "rotation.glsl"
 #include "bounce.glsl"

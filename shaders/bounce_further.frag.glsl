@@ -38,8 +38,7 @@
 // Approximations, each stated:
 // - only the emitters the camera sees: a crease's far wall hidden behind its near one sends none
 //   (the further bounces come out low where the view grazes into a fold);
-// - no visibility between emitter and receiver (the first bounce has one through the first part
-//   the light meets since session 20, bounce_crosses_stone; here only the cosines cut emitters
+// - no visibility between emitter and receiver (as the first bounce: the cosines cut emitters
 //   behind P's tangent plane and receivers behind the emitter's);
 // - a disk of FURTHER_RADIUS of the frame's height: emitters farther away on the screen are left
 //   out (the further bounces are local: a crease sees itself);

@@ -56,18 +56,6 @@ Texture makeTexture2D(GLenum internalFormat, int width, int height, GLenum filte
   return t;
 }
 
-Texture makeMipmappedTexture2D(GLenum internalFormat, int size) {
-  int levels = 1;
-  while ((size >> levels) > 0) ++levels;
-  Texture t = Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(t.id(), levels, internalFormat, size, size);
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
-
 void setMeshPassState() {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

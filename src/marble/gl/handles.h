@@ -119,11 +119,6 @@ private:
 // A 2D texture with immutable storage, clamped at the edges, filtered by `filter`
 // (GL_NEAREST or GL_LINEAR) both ways: the one shape every render target here takes.
 Texture makeTexture2D(GLenum internalFormat, int width, int height, GLenum filter);
-// A square 2D texture with a full mipmap chain, linear within a level and the nearest level
-// (GL_LINEAR_MIPMAP_NEAREST), clamped: the reflective shadow map's shape (LightDepthPass) and its
-// far side's (BouncePass), read by textureLod at a chosen level (shaders/bounce.glsl); trilinear
-// cost the dragon's lighting pass ~1.5x.
-Texture makeMipmappedTexture2D(GLenum internalFormat, int size);
 
 // Sets what a pass that draws meshes relies on: depth test (less, writing), no blending,
 // no culling (meshes with holes or inconsistent winding must still be whole).

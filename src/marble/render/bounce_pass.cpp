@@ -19,13 +19,6 @@ constexpr float kNone[4] = {0, 0, 0, -1};
 // a thin part's width on the lit side (tens of millimetres), which level 1's texels (~25 mm on the
 // teapot) resolve as coarsely as the camera-side gather's grid.
 constexpr int kEntryLevel = 1;
-
-// The layers' texel at the object, for the visibility test's tolerance (bounce.glsl) and the
-// exits' neighbours (bounce_exits.frag.glsl): the light's map spans the bounding sphere's diameter
-// (view_setup.h).
-float layerTexel(const BounceInputs& in) {
-  return 2.0f * kBoundingRadius / static_cast<float>(std::max(in.bounceMapSize, 1));
-}
 }  // namespace
 
 void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& grid) {
@@ -39,7 +32,6 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
-      exitsProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_exits.frag.glsl"}}),
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
       refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
@@ -82,15 +74,6 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_LAYERS, in.bounceLayers);
-  for (const gl::Program* p : {&program_, &refineProgram_, &entryProgram_}) p->set("u_bounce_layer_texel", layerTexel(in));
-  // Every gather reads the exits: where they were drawn again, the gathers run again too.
-  if (drawExits(lightM, light, material, lightTexelWorld, in, camera)) {
-    gather = true;
-    entriesStale_ = true;
-  }
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_EXITS, exits_.id());
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_EXIT_NORMALS, exitNormals_.id());
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }
@@ -205,40 +188,6 @@ void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices
   uploadMaterialUniforms(entryProgram_, material);
   entryProgram_.set("u_level", kEntryLevel);
   gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
-}
-
-bool BouncePass::drawExits(const LightMatrices& lightM, const Light& light, const Material& material,
-                           float lightTexelWorld, const BounceInputs& in, const CameraMatrices& camera) {
-  const auto key = std::tuple(material.sigma_a_mm, material.sigma_s_mm, material.translucency, in.mmPerUnit);
-  const int size = std::max(in.bounceMapSize, 1);
-  if (!exitsStale_ && exitsFor_ == key && size == exitsSize_) return false;
-  if (size != exitsSize_ || !exitsFbo_) {
-    exitsSize_ = size;
-    // Mipmapped as the reflective shadow map: the gather reads its sectors' means at the same levels.
-    exits_ = gl::makeMipmappedTexture2D(GL_RGBA32F, size);
-    exitNormals_ = gl::makeMipmappedTexture2D(GL_RGBA32F, size);
-    exitsFbo_ = gl::Framebuffer::create();
-    glNamedFramebufferTexture(exitsFbo_.id(), GL_COLOR_ATTACHMENT0, exits_.id(), 0);
-    glNamedFramebufferTexture(exitsFbo_.id(), GL_COLOR_ATTACHMENT1, exitNormals_.id(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(exitsFbo_.id(), 2, buffers);
-  }
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_EXITS, 0);  // written here, read by the gathers
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_EXIT_NORMALS, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, exitsFbo_.id());
-  glViewport(0, 0, exitsSize_, exitsSize_);
-  scissorOff();  // the whole map
-  setFrameUniforms(exitsProgram_, camera, lightM, light, lightTexelWorld);
-  uploadMaterialUniforms(exitsProgram_, material);
-  slab_.upload(exitsProgram_, material);
-  exitsProgram_.set("u_mm_per_unit", in.mmPerUnit);
-  exitsProgram_.set("u_layer_texel", layerTexel(in));
-  gl::drawFullscreenTriangle(exitsProgram_.id(), emptyVao_.id());
-  glGenerateTextureMipmap(exits_.id());
-  glGenerateTextureMipmap(exitNormals_.id());
-  exitsStale_ = false;
-  exitsFor_ = key;
-  return true;
 }
 
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,

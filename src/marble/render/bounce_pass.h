@@ -22,18 +22,9 @@
 // texels refined; the refined grid sits beside the coarse one in the output texture
 // (shaders/bounce_refined_grid.glsl), and where nothing is refined the lighting pass reads the
 // coarse grid exactly as before.
-// Since session 20 a draw before all of them writes the bounce's second kind of emitter, the far
-// side of the first part the light meets (shaders/bounce_exits.frag.glsl, at the reflective shadow
-// map's size, mipmapped): it depends on the light's map and on what the walk carries through a
-// chord (the scattering coefficients, the translucency, the scene's scale), and when those change
-// the gathers that read it run again.
-#include <optional>
-#include <tuple>
-
 #include "marble/gl/program.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
-#include "marble/render/slab_transport_uniforms.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
 
@@ -49,9 +40,7 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
-  GLuint bounceLayers;                                 // the light's entry and exit layers, at its size
   int bounceMapSize;                                   // the reflective shadow map's finest width
-  float mmPerUnit;                                     // the scene's millimetres per unit (the exits' chords)
 };
 
 class BouncePass {
@@ -71,32 +60,21 @@ public:
   int refinedTexelCount() const;
   // The first bounce at the light's entries (bounce_entry.frag.glsl), for the lighting pass.
   GLuint entryTexture() const { return entry_.id(); }
-  // The light's map was redrawn: the exits' and the entry draw must run again at the next run().
-  void markEntriesStale() { entriesStale_ = exitsStale_ = true; }
-  // The far side's emitters (bounce_exits.frag.glsl; exit point x phi and phi, normal x phi: RGBA32F
-  // with mipmaps at the reflective shadow map's size), for tests.
-  GLuint exitsTexture() const { return exits_.id(); }
-  GLuint exitNormalsTexture() const { return exitNormals_.id(); }
+  // The light's map was redrawn: the entry draw must run again at the next run().
+  void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
   BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
   // RGBA16F: the first bounce on this grid, the further bounces' grid, all bounces on this grid
-  // and the refined one beside it, the refined first bounce, the entries' grid; the refined list;
-  // the exits' two RGBA32F maps with their mipmaps (a third more).
+  // and the refined one beside it, the refined first bounce, the entries' grid; the refined list.
   size_t bytes() const {
     const size_t fine = static_cast<size_t>(fineWidth_) * fineHeight_;
     return static_cast<size_t>(width_) * height_ * 8 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
            static_cast<size_t>(width_ + fineWidth_) * fineHeight_ * 8 + fine * 8 +
-           static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4 +
-           static_cast<size_t>(exitsSize_) * exitsSize_ * 32 * 4 / 3;
+           static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4;
   }
   PassTimer& timer() { return timer_; }
 
 private:
-  // The far side's emitters (bounce_exits.frag.glsl), before any gather that reads them: drawn when
-  // the light's map was redrawn or what the walk carries through a chord changed (the coefficients,
-  // the translucency, the scene's scale). Returns whether it drew.
-  bool drawExits(const LightMatrices& lightM, const Light& light, const Material& material, float lightTexelWorld,
-                 const BounceInputs& in, const CameraMatrices& camera);
   // The first two draws: the first bounce and the further bounces, before any material parameter.
   void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                      float lightTexelWorld, const ScreenRect& rect);
@@ -110,20 +88,15 @@ private:
   void gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld);
   void mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, const Material& material,
                     float lightTexelWorld);
-  gl::Program program_, furtherProgram_, mergeProgram_, entryProgram_, exitsProgram_;
+  gl::Program program_, furtherProgram_, mergeProgram_, entryProgram_;
   gl::Program markProgram_, refineProgram_, refineMergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture first_, further_, bounce_, entry_, refinedFirst_, exits_, exitNormals_;
-  gl::Framebuffer firstFbo_, furtherFbo_, fbo_, entryFbo_, exitsFbo_;
+  gl::Texture first_, further_, bounce_, entry_, refinedFirst_;
+  gl::Framebuffer firstFbo_, furtherFbo_, fbo_, entryFbo_;
   gl::Buffer refineList_;  // shaders/bounce_refine_list.glsl: the indirect dispatch's arguments, the count, the texels
-  int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0, exitsSize_ = 0;
+  int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0;
   int fineWidth_ = 0, fineHeight_ = 0;  // the refined grid's texels (at scale_ / 2)
   bool entriesStale_ = true;
-  bool exitsStale_ = true;  // the light's map was redrawn since the exits were drawn
-  SlabTransportUniforms slab_;  // the transmission's table, for the exits
-  // What the exits were drawn for besides the light's map: the slab table's coefficients
-  // (sigma_a_mm, sigma_s_mm), the translucency, the millimetres per unit.
-  std::optional<std::tuple<glm::vec3, glm::vec3, float, float>> exitsFor_;
   PassTimer timer_;
 };
 

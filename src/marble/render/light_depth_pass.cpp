@@ -7,11 +7,27 @@
 #include "marble/gl/checked_calls.h"
 
 namespace marble {
+namespace {
+
+// A mipmapped render target (all levels down to 1x1), clamped; read bilinearly within the nearest
+// level (bounce.glsl picks a level per sample): trilinear cost the dragon's lighting pass ~1.5x.
+gl::Texture makeMipmapped(GLenum internalFormat, int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), levels, internalFormat, size, size);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
 
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
       program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
-      layersProgram_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}}),
       // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
       // distance with the "nothing hit" clear value would invent huge entry distances, hence
       // zero thickness and light leaking through past the terminator.
@@ -26,14 +42,11 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // w is a texel's area, ~1e-5 scene units^2, below half float's normal range (and so is the
       // glossy weight a in the normal's alpha).
       bounceSize_(std::max(size / 8, 1)),
-      bouncePosition_(gl::makeMipmappedTexture2D(GL_RGBA32F, bounceSize_)),
-      bounceNormal_(gl::makeMipmappedTexture2D(GL_RGBA32F, bounceSize_)),
+      bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
+      bounceNormal_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
-      // Nearest: a blend of an entry with "none" would be meaningless.
-      bounceLayers_(gl::makeTexture2D(GL_RG32F, bounceSize_, bounceSize_, GL_NEAREST)),
       fbo_(gl::Framebuffer::create()),
-      bounceFbo_(gl::Framebuffer::create()),
-      layersFbo_(gl::Framebuffer::create()) {
+      bounceFbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -45,7 +58,6 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
   const GLenum bounceBuffers[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(bounceFbo_.id(), 3, bounceBuffers);
   glNamedFramebufferTexture(bounceFbo_.id(), GL_DEPTH_ATTACHMENT, bounceDepth_.id(), 0);
-  glNamedFramebufferTexture(layersFbo_.id(), GL_COLOR_ATTACHMENT0, bounceLayers_.id(), 0);
 }
 
 void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
@@ -76,26 +88,6 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());
-  // The entry and exit layers: every fragment of both faces, each channel keeping its nearest by
-  // MIN blending (no depth test: the nearest exit lies behind the nearest entry). The blend state
-  // is put back as every other pass expects it (off, the default equation).
-  glBindFramebuffer(GL_FRAMEBUFFER, layersFbo_.id());
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendEquation(GL_MIN);
-  const float none[4] = {kNoLayer, kNoLayer, 0.0f, 0.0f};
-  gl::clearFramebuffer(layersFbo_.id(), GL_COLOR, 0, none);
-  layersProgram_.set("u_model", model);
-  layersProgram_.set("u_view_proj", light.viewProj);
-  layersProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  layersProgram_.set("u_light_pos", light.position);
-  layersProgram_.set("u_light_dir", light.direction);
-  layersProgram_.set("u_light_directional", light.directional ? 1 : 0);
-  layersProgram_.set("u_none", kNoLayer);
-  glUseProgram(layersProgram_.id());
-  mesh.draw();
-  glBlendEquation(GL_FUNC_ADD);
-  glDisable(GL_BLEND);
   timer_.end();
 }
 

@@ -21,27 +21,22 @@ public:
   // texel is the w-weighted mean of the texels under it.
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
-  // At the same size, the distance from the light to the nearest surface facing it and to the
-  // nearest facing away (RG32F, nearest; kNoLayer where there is none): the first part's entry
-  // and exit along each texel's ray, for the bounce's visibility (light_layers.frag.glsl).
-  GLuint bounceLayersTexture() const { return bounceLayers_.id(); }
-  static constexpr float kNoLayer = 1e30f;
   int size() const { return size_; }
   int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest width
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
-  // mipmaps a third more) + depth 4 and the layers 8 at its own size.
+  // mipmaps a third more) + depth 4 at its own size.
   size_t bytes() const {
-    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 8 + 32 * 4 / 3);
+    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3);
   }
   PassTimer& timer() { return timer_; }
 
 private:
   int size_;
-  gl::Program program_, layersProgram_;
+  gl::Program program_;
   gl::Texture distance_, depth_;
   int bounceSize_;
-  gl::Texture bouncePosition_, bounceNormal_, bounceDepth_, bounceLayers_;
-  gl::Framebuffer fbo_, bounceFbo_, layersFbo_;
+  gl::Texture bouncePosition_, bounceNormal_, bounceDepth_;
+  gl::Framebuffer fbo_, bounceFbo_;
   PassTimer timer_;
 };
 

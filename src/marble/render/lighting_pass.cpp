@@ -4,6 +4,7 @@
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
+#include "marble/scene/slab_transport.h"
 
 namespace marble {
 
@@ -85,7 +86,15 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
   uploadMaterialUniforms(p, m);
   p.set("u_mm_per_unit", scene.mm_per_unit);
-  slab_.upload(p, m);
+  // Derived from sigma_a_mm, sigma_s_mm: not parameters of their own. Cut from the walk's table
+  // again only when they change, not each time the camera or the light moves.
+  if (!slabFor_ || slabFor_->first != m.sigma_a_mm || slabFor_->second != m.sigma_s_mm) {
+    slab_ = slabTransportFor(m);
+    slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
+  }
+  glProgramUniform3fv(p.id(), p.location("u_slab_ln_t"), kSlabTransportNodes, &slab_.lnT[0].x);
+  p.set("u_slab_tau_max", slab_.tauMax);
+  p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setBounceGridUniforms(p, in.bounceGrid);
   setEnvironmentUniforms(p, settings, environment);

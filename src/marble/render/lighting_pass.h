@@ -12,9 +12,9 @@
 #include "marble/render/environment_map.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
-#include "marble/render/slab_transport_uniforms.h"
 #include "marble/render/view_setup.h"
 #include "marble/scene/scene.h"
+#include "marble/scene/slab_transport.h"
 
 namespace marble {
 
@@ -56,7 +56,8 @@ private:
   int width_ = 0, height_ = 0, enteringWidth_ = 0, enteringHeight_ = 0, enteringScale_ = 0;
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
-  SlabTransportUniforms slab_;  // the transmission's table
+  SlabTransport slab_;  // the transmission's table for the scattering coefficients in slabFor_
+  std::optional<std::pair<glm::vec3, glm::vec3>> slabFor_;  // (sigma_a_mm, sigma_s_mm)
 };
 
 }  // namespace marble

@@ -28,10 +28,8 @@ constexpr PassDecl kPasses[] = {
     {Pass::Bounce, "bounce", "bounce",
      "Marble mode: light bounced inside the object (from the light's reflective shadow map), gathered at a quarter "
      "of the lighting pass's texels, and its further bounces gathered from it in screen space at a sixteenth; the "
-     "lighting pass upsamples their sum. Its emitters: the light's side of the stone and the far side of the first "
-     "part the light crosses.",
-     in(I::Light) | in(I::LightMatrices) | in(I::CameraMatrices) | in(I::FrameSize) | in(I::SubsurfaceResolution) |
-         in(I::ObjectSize),
+     "lighting pass upsamples their sum.",
+     in(I::Light) | in(I::LightMatrices) | in(I::CameraMatrices) | in(I::FrameSize) | in(I::SubsurfaceResolution),
      kBouncePassBit, 0, of(Pass::LightDepth) | of(Pass::Geometry), false},
     {Pass::Lighting, "lighting", "lighting",
      "Screen-space shading of the object's pixels; marble mode: the light entering the stone, at the blur's "

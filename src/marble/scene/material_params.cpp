@@ -341,7 +341,7 @@ const ParamDesc kParams[] = {
      .doc = "radius form: Blender's Principled BSDF *Subsurface Radius* (× *Subsurface*) for the RANDOM_WALK method, "
             "mean free path per channel; `base_color` is then the subsurface albedo (Blender's *Subsurface Color*). "
             "The default is Jensen's marble's extinction at albedo 0.83, 0.79, 0.75",
-     .modes = kMarble, .passes = kLightingPassBit | kBlurPassBit | kBouncePassBit, .uniform = nullptr, .choices = {},
+     .modes = kMarble, .passes = kLightingPassBit | kBlurPassBit, .uniform = nullptr, .choices = {},
      .slider = {0.01f, 1000.0f, true, "%.4g"}, MARBLE_FIELD(ScatteringParams::subsurface_radius_mm),
      .active = &radiusForm, .inactive = "used only in the radius form (scattering \"radius\")"},
     {.key = "sigma_a_mm", .group = ParamGroup::Scattering, .type = ParamType::Vec3, .lo = 0, .hi = 1000,
@@ -349,7 +349,7 @@ const ParamDesc kParams[] = {
      .tooltip = "Measured absorption per millimetre, per channel: light lost inside the stone. Higher: darker, more "
                 "coloured glow.",
      .doc = "absorption coefficient, RGB (Jensen et al. 2001: marble 0.0021, 0.0041, 0.0071)", .modes = kMarble,
-     .passes = kLightingPassBit | kBlurPassBit | kBouncePassBit, .uniform = nullptr, .choices = {},
+     .passes = kLightingPassBit | kBlurPassBit, .uniform = nullptr, .choices = {},
      .slider = {1.0e-4f, 2.0f, true, "%.4g"}, MARBLE_FIELD(ScatteringParams::sigma_a_mm),
      .active = &coefficientForm, .inactive = "in the radius form (scattering \"radius\") it is derived from base_color, subsurface_radius_mm and ior"},
     {.key = "sigma_s_mm", .group = ParamGroup::Scattering, .type = ParamType::Vec3, .lo = 0, .hi = 10000,
@@ -357,7 +357,7 @@ const ParamDesc kParams[] = {
      .tooltip = "Reduced scattering per millimetre, per channel: how often light turns inside. Higher: milkier, "
                 "shorter glow.",
      .doc = "reduced scattering coefficient, RGB (Jensen et al. 2001: marble 2.19, 2.62, 3.00)", .modes = kMarble,
-     .passes = kLightingPassBit | kBlurPassBit | kBouncePassBit, .uniform = nullptr, .choices = {},
+     .passes = kLightingPassBit | kBlurPassBit, .uniform = nullptr, .choices = {},
      .slider = {0.01f, 10.0f, true, "%.4g"}, MARBLE_FIELD(ScatteringParams::sigma_s_mm),
      .active = &coefficientForm, .inactive = "in the radius form (scattering \"radius\") it is derived from base_color, subsurface_radius_mm and ior"},
     {.key = "ior", .group = ParamGroup::Scattering, .type = ParamType::Float, .lo = 1.0, .hi = 3.0, .atMost = nullptr,
@@ -372,7 +372,7 @@ const ParamDesc kParams[] = {
      .atMost = nullptr, .unit = "", .label = "translucency",
      .tooltip = "Scales light transmitted through thin parts: 1 is physical, 0 opaque, above 1 exaggerated.",
      .doc = "scale on the light transmitted through thin parts (1 = as measured)", .modes = kMarble,
-     .passes = kLightingPassBit | kBouncePassBit, .uniform = "u_translucency", .choices = {}, .slider = {0.0f, 2.0f, false},
+     .passes = kLightingPassBit, .uniform = "u_translucency", .choices = {}, .slider = {0.0f, 2.0f, false},
      MARBLE_FIELD(ScatteringParams::translucency)},
     {.key = "scattering", .group = ParamGroup::Scattering, .type = ParamType::Choice, .lo = 0, .hi = 0, .atMost = nullptr,
      .unit = "", .label = "given as",
@@ -383,7 +383,7 @@ const ParamDesc kParams[] = {
             "`\"radius\"` (derived from `base_color`, `subsurface_radius_mm`, `ior` as Cycles derives them, below). "
             "Without it, an object that gives `subsurface_radius_mm` selects the radius form, one that gives "
             "`sigma_a_mm`/`sigma_s_mm` the coefficient form; both without `scattering` is an error",
-     .modes = kMarble, .passes = kLightingPassBit | kBlurPassBit | kBouncePassBit, .uniform = nullptr, .choices = kScatteringForm,
+     .modes = kMarble, .passes = kLightingPassBit | kBlurPassBit, .uniform = nullptr, .choices = kScatteringForm,
      .slider = {}, MARBLE_FIELD(ScatteringParams::scattering)},
 
     // --- physically based marble: gloss ---

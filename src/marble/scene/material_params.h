@@ -37,7 +37,7 @@ enum PassBit : uint32_t {
   kBlurPassBit = 1u << 2,      // SubsurfaceBlurPass
   kPostPassBit = 1u << 3,      // PostPass (`marble`: the reflection)
   kFloorPassBit = 1u << 4,     // FloorPass
-  kBouncePassBit = 1u << 5,    // BouncePass (`marble`: the further bounces' albedo and F0, the exits' chords)
+  kBouncePassBit = 1u << 5,    // BouncePass (`marble`: the further bounces' albedo and F0)
 };
 
 enum class ParamType {

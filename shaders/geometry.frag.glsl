@@ -21,7 +21,10 @@ layout(location = 0) out vec2 o_normal;
 // the rule in `marble` mode; not written in other modes (no draw buffer). The light's entry and
 // the bounce read o_normal: bent, they darkened back-lit rims 3-4x below Cycles'
 // (docs/quality.md, "Eighteenth session" and "Nineteenth session: ... valid-reflection").
-layout(location = 1) out vec2 o_specular_normal;
+// zw: the interpolated normal (o_normal's bits), so that the post pass tells a bent pixel
+// (xy != zw) and takes a kept pixel's footprint steps from its neighbours' interpolated normals
+// (post.frag.glsl, footprint_normal_steps) in the same texel read.
+layout(location = 1) out vec4 o_specular_normal;
 
 void main() {
   // Not normalized: the octahedral encoding divides by the L1 norm, whatever the length (a
@@ -29,6 +32,7 @@ void main() {
   vec3 n = v_world_normal;
   // Meshes with inward or inconsistent winding: face the normal toward the viewer.
   if (!gl_FrontFacing) n = -n;
+  vec2 kept = encode_normal(n);
   if (u_valid_reflection) {
     // The triangle's normal: the screen derivatives of the interpolated position lie in its
     // plane (exact for the primitive, helper lanes included). Faced toward the viewer, as
@@ -38,7 +42,7 @@ void main() {
     vec3 to_eye = u_camera_position - v_world_pos;
     if (dot(g, to_eye) < 0.0) g = -g;
     vec3 bent;
-    o_specular_normal = encode_normal(valid_reflection_bend(g, to_eye, n, bent) ? bent : n);
+    o_specular_normal = vec4(valid_reflection_bend(g, to_eye, n, bent) ? encode_normal(bent) : kept, kept);
   }
-  o_normal = encode_normal(n);
+  o_normal = kept;
 }

@@ -186,11 +186,13 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
 
 // The change of the normal from pixel p to its neighbour q (toward +axis: q - p, or p - q when q
 // lies on the minus side, `sign`); false where q is off the object or outside the frame.
-bool normal_step(ivec2 q, vec3 N, float sign, out vec3 step) {
+// interpolated: q's interpolated normal (the specular normal texture's zw), not its bent one (xy).
+bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) {
   step = vec3(0.0);
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
   if (texelFetch(u_depth, q, 0).r >= 1.0) return false;
-  step = sign * (decode_normal(texelFetch(u_normal, q, 0).xy) - N);
+  vec4 stored = texelFetch(u_normal, q, 0);
+  step = sign * (decode_normal(interpolated ? stored.zw : stored.xy) - N);
   return true;
 }
 
@@ -200,14 +202,24 @@ bool normal_step(ivec2 q, vec3 N, float sign, out vec3 step) {
 // derivatives (d*_quad: N's and coverage's), the one outside it from two texel reads: half the
 // reads of fetching all four (post pass +21 M instructions a frame on the dragon at 800^2 with
 // four; docs/performance.md, "Sixteenth session").
-void footprint_normal_steps(ivec2 p, vec3 N, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy,
+// kept: the valid-reflection rule kept p's normal (geometry.frag.glsl); its steps then go to the
+// neighbours' interpolated normals, not their bent ones (d*_quad: the interpolated normal's
+// derivatives). Cycles bends each ray's normal where that ray's reflection falls below its
+// triangle (kernel/closure/bsdf_util.h, `ensure_valid_reflection`, called for the Principled
+// BSDF's normal in kernel/svm/closure.h, `svm_node_closure_bsdf`), so from a kept pixel's centre
+// toward a bent neighbour the normals stay the interpolated ones until the view's reflection
+// crosses that threshold, which on the silhouette rows lies mostly beyond the midpoint between
+// the two centres; a step to the neighbour's bent normal swept the kept pixel's footprint over
+// normals no ray there has: on bunny-back's back rim the 800^2 row below the bent one read
+// 1506 / 1193 against Cycles' 1201 / 1009 (docs/quality.md, "Twentieth session: ... s20-bunny2").
+void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy,
                             out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
   // The quad pairs columns 2i | 2i+1 (and rows): an even pixel's partner is at +1, its outer
   // neighbour at -1; an odd one's the other way round. The quad's derivative is toward +axis.
   bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
   vec3 outer_x, outer_y;
-  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), N, even_x ? -1.0 : 1.0, outer_x);
-  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), N, even_y ? -1.0 : 1.0, outer_y);
+  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), N, even_x ? -1.0 : 1.0, kept, outer_x);
+  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), N, even_y ? -1.0 : 1.0, kept, outer_y);
   bool quad_x_on = don_dx == 0.0, quad_y_on = don_dy == 0.0;
   bx = even_x ? outer_x : dndx_quad;
   ax = even_x ? dndx_quad : outer_x;
@@ -224,15 +236,24 @@ void main() {
   if (u_compose_marble == 1) {
     // The fine derivatives are taken here, where every pixel of a 2x2 quad runs (none is defined
     // inside a branch some of them skip); background pixels hold N = 0 and on = 0.
-    vec3 N = surface ? decode_normal(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xy) : vec3(0.0);
+    // xy: the normal for the reflection terms (bent by the valid-reflection rule in `marble`
+    // mode); zw: the interpolated normal, the same bits where the rule kept it (a two-channel
+    // texture, when the rule is off, reads (0, 1) there: counted as bent, the steps as before).
+    vec4 stored = surface ? texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0) : vec4(0.0);
+    vec3 N = surface ? decode_normal(stored.xy) : vec3(0.0);
+    bool kept = stored.xy == stored.zw;
     float on = surface ? 1.0 : 0.0;
 #if SURFACE_REUSE == 2
     vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;  // in the stored reflected light
 #else
+    vec3 n = kept ? N : decode_normal(stored.zw);  // the interpolated normal
     vec3 dndx_quad = dFdxFine(N), dndy_quad = dFdyFine(N);
+    vec3 dnidx_quad = dFdxFine(n), dnidy_quad = dFdyFine(n);
     float dondx = dFdxFine(on), dondy = dFdyFine(on);
     vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;
-    if (surface) footprint_normal_steps(ivec2(gl_FragCoord.xy), N, dndx_quad, dndy_quad, dondx, dondy, bx, ax, by, ay);
+    if (surface)
+      footprint_normal_steps(ivec2(gl_FragCoord.xy), N, kept, kept ? dnidx_quad : dndx_quad, kept ? dnidy_quad : dndy_quad,
+                             dondx, dondy, bx, ax, by, ay);
 #endif
     c = surface ? marble_compose(depth, N, bx, ax, by, ay) : vec3(0.0);
   } else {

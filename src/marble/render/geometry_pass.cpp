@@ -14,7 +14,7 @@ void GeometryPass::resize(int width, int height) {
   width_ = width;
   height_ = height;
   normal_ = gl::makeTexture2D(GL_RG16_SNORM, width, height, GL_NEAREST);
-  specularNormal_ = gl::makeTexture2D(GL_RG16_SNORM, width, height, GL_NEAREST);
+  specularNormal_ = gl::makeTexture2D(GL_RGBA16_SNORM, width, height, GL_NEAREST);
   depth_ = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, normal_.id(), 0);

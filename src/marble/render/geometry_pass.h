@@ -1,10 +1,11 @@
 #pragma once
 // Pass 2: the mesh seen from the camera into a lean G-buffer:
 //   normal  RG16_SNORM     4 bytes  (octahedral, world space)
-//   specular normal RG16_SNORM 4 bytes (marble mode: the normal bent by Cycles' valid-reflection
-//                                   rule, read by the post pass's reflection terms)
+//   specular normal RGBA16_SNORM 8 bytes (marble mode: xy the normal bent by Cycles' valid-reflection
+//                                   rule, read by the post pass's reflection terms; zw the
+//                                   interpolated normal, for the highlight's footprint steps)
 //   depth   DEPTH32F       4 bytes  (position is reconstructed from it)
-// The albedo (RGBA8, 4 bytes) is added by the AlbedoPass: 8 bytes per pixel plus depth.
+// The albedo (RGBA8, 4 bytes) is added by the AlbedoPass.
 #include "marble/gl/program.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/pass_timer.h"
@@ -23,7 +24,7 @@ public:
   // The normal for the reflection terms: the bent one where the last run stored it, else the normal.
   GLuint specularNormalTexture() const { return validReflection_ ? specularNormal_.id() : normal_.id(); }
   GLuint depthTexture() const { return depth_.id(); }
-  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 12; }
+  size_t bytes() const { return static_cast<size_t>(width_) * height_ * 16; }
   PassTimer& timer() { return timer_; }
 
 private:

@@ -85,17 +85,22 @@ const float BOUNCE_GLOSS = 4.0;
 // glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
 // shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
 
-// Irradiance at P (normal N) from the emitters in the uv area dA around uv, per unit of the light's
+// The mipmap level a sample standing for `texels` of the map's finest level is read at:
+// BOUNCE_LOD_FINER levels finer than the level of that area. Per ring, not per sample: the ring's
+// samples share their area (a log2 less per sample: -0.9 M instructions of the dragon's 800²
+// camera frame, docs/performance.md "Twentieth session: the bounce's grids").
+float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod); }
+
+// Irradiance at P (normal N) from the emitters in the area of `texels` of the map's finest level
+// around uv, per unit of the light's
 // radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
 // y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
 // depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
 // view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
-// P's Fresnel factor. Read BOUNCE_LOD_FINER levels finer than the level of that area (bilinear
-// within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float dA, float size, float maxLod) {
+// P's Fresnel factor. Read at level `lod` (bounce_sample_lod; bilinear within the level:
+// continuous in uv).
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  float texels = dA * size * size;
-  float lod = clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod);
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
   if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
@@ -140,7 +145,8 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   float maxLod = log2(size);
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
-  sum += bounce_sample(P, N, R, centre, PI * inner * inner, size, maxLod);
+  float centreTexels = PI * inner * inner * size * size;
+  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod));
   // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
   // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
   // outer four rings keep the angles they had when there were four (session 11): the new inner two
@@ -154,10 +160,11 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
+    float texels = dA * size * size, lod = bounce_sample_lod(texels, maxLod);
     vec2 dir = ringDir;
     ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      sum += bounce_sample(P, N, R, centre + r * dir, dA, size, maxLod);
+      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod);
       dir = rotate2(dir, byStep);
     }
   }

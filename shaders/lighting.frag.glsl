@@ -270,13 +270,12 @@ vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2
     sum = 0.25 * cos0 * principled_entry(cos0) *
           (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
   }
-  // A loop over the rings the quad reads: llvmpipe stops a loop once none of a block's lanes has an
-  // iteration left (glow_rings_shared). A ring's bounds and radius are read once per ring, not per
-  // tap: the loop's counter differs between lanes to llvmpipe, so each read of the constant arrays
-  // is a gather (session 20: the same operations in the same order, pictures byte-equal).
-  for (int i = 0; i < rings; ++i) {
+  // One loop over the taps, not rings x angles, to the count the quad reads: llvmpipe stops a loop
+  // once none of a block's lanes has an iteration left (glow_rings_shared).
+  for (int k = 0; k < GLOW_LANE_ANGLES * rings; ++k) {
+    int i = k / GLOW_LANE_ANGLES, j = k - i * GLOW_LANE_ANGLES;
     float a = bounds[i] * S, b = bounds[i + 1] * S, rho = radii[i] * S;
-    for (int j = 0; j < GLOW_LANE_ANGLES; ++j) {
+    {
       float phi = (float(lane + 4 * j) + 0.5 * float(i)) * (2.0 * PI / float(GLOW_ANGLES));
       vec2 u = frame.xy + rho * (squash * vec2(cos(phi), sin(phi)));
       vec3 q = P_in + u.x * t1 + u.y * t2;

@@ -17,12 +17,11 @@ uniform vec3 u_env_sh[9];      // E(n) / PI as a polynomial in n (src/marble/env
 uniform vec2 u_env_rotation;   // cos and sin of the map's yaw about +Y
 uniform float u_env_alpha1;    // GGX alpha of mip level 1 (level 0 is the map itself)
 uniform float u_env_max_lod;
-// The studio's softboxes blurred over kStudioBlurPerRoughness (1.2, render/environment_map.h) x the
-// roughness env_radiance is called with: per box (radiance x k^2, the cosines of its outer and
-// inner edge; studio_radiance), set with that roughness by the pass that calls env_radiance
-// (marble::setStudioBlurUniform), once per frame.
-uniform vec3 u_studio_boxes[SOFTBOXES];
+// The studio's blur angle for the frame's roughness (1.2 roughness), as cos and sin: set with
+// the roughness by the pass that calls env_radiance (marble::setStudioBlurUniform).
+uniform vec2 u_studio_blur_cs;
 
+const float kStudioBlurPerRoughness = 1.2;  // the same constant in render/environment_map.h
 
 // A world direction in the map's own frame: the map is turned by +yaw about +Y, so it is looked
 // up along R_y(-yaw) d.
@@ -48,7 +47,7 @@ vec3 env_diffuse(vec3 n) {
 }
 
 vec3 env_radiance(vec3 dir, float roughness) {
-  if (u_env_kind == ENV_STUDIO) return studio_radiance(dir, u_studio_boxes);  // roughness: in the uniform
+  if (u_env_kind == ENV_STUDIO) return studio_radiance(dir, roughness * kStudioBlurPerRoughness, u_studio_blur_cs);
   // Level k holds alpha_1 2^(k-1); below alpha_1 / 2 the map itself is as sharp as it gets.
   float alpha = max(roughness * roughness, 1e-8);
   float lod = clamp(1.0 + log2(alpha / u_env_alpha1), 0.0, u_env_max_lod);

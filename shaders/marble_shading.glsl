@@ -261,8 +261,6 @@ float bilinear_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_worl
 // lights behind-left and behind-right, so polished stone shows highlights from every side.
 struct Softbox { vec3 axis; float radius; float radiance; };
 const int SOFTBOXES = 3;
-// The radii and radiances are also in environment_map.cpp (kStudioSoftboxes), which computes the
-// blur's per-box constants once per frame (studio_radiance); studio_diffuse uses them from here.
 Softbox softbox(int i) {
   if (i == 0) return Softbox(normalize(vec3(0.0, 0.85, 0.55)), 0.45, 3.0);
   if (i == 1) return Softbox(normalize(vec3(-0.9, 0.25, -0.45)), 0.18, 4.0);
@@ -272,17 +270,22 @@ vec3 studio_background(vec3 d) {
   return mix(vec3(0.02), vec3(0.12, 0.12, 0.13), smoothstep(-0.4, 0.7, d.y));
 }
 // Radiance seen along d, blurred over `blur` radians (a stand-in for prefiltering by
-// roughness). Widening a box keeps its power: radiance scales by (r / (r + blur))^2. Compared in
-// cosine space (no acos per pixel): inside the box's cone, fading at its edge, the cone's edges
-// cos(r + 0.02 + blur) and cos(max(r - 0.02 - blur, 0)). All of that depends on the blur only,
-// which is the same for a whole frame: boxes[i] = (radiance x k^2, the outer edge's cosine, the
-// inner edge's), computed once per frame on the CPU (setStudioBlurUniform, environment_map.cpp,
-// which holds the boxes' radii and radiances) by the same operations in the same order as this
-// function computed them per pixel before session 20, so the pictures kept every bit (~36 vector
-// operations a fragment; docs/performance.md, "Twentieth session: byte-equal savings").
-vec3 studio_radiance(vec3 d, vec3 boxes[SOFTBOXES]) {
+// roughness); blur_cs = (cos(blur), sin(blur)), given by the caller, which has them once per
+// frame. Widening a box keeps its power: radiance scales by (r / (r + blur))^2.
+vec3 studio_radiance(vec3 d, float blur, vec2 blur_cs) {
   vec3 c = studio_background(d);
-  for (int i = 0; i < SOFTBOXES; ++i) c += boxes[i].x * smoothstep(boxes[i].y, boxes[i].z, dot(d, softbox(i).axis));
+  for (int i = 0; i < SOFTBOXES; ++i) {
+    Softbox b = softbox(i);
+    float r = b.radius;
+    float k = r / (r + blur);
+    // Compared in cosine space (no acos per pixel): inside the box's cone, fading at its edge.
+    // The cone's edges cos(r + 0.02 + blur) and cos(max(r - 0.02 - blur, 0)) by the angle-sum
+    // identities, so the only trigonometry is the compile-time cos and sin of r +- 0.02
+    // (llvmpipe evaluates cos() per pixel, uniform argument or not).
+    float outer = cos(r + 0.02) * blur_cs.x - sin(r + 0.02) * blur_cs.y;
+    float inner = blur >= r - 0.02 ? 1.0 : cos(r - 0.02) * blur_cs.x + sin(r - 0.02) * blur_cs.y;
+    c += b.radiance * k * k * smoothstep(outer, inner, dot(d, b.axis));
+  }
   return c;
 }
 // Irradiance / PI for a surface with normal n: the gradient's cosine-weighted average plus

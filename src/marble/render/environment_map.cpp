@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <vector>
 
 namespace marble {
@@ -53,42 +52,9 @@ std::string environmentDefine(const RenderSettings& settings, const EnvironmentM
   return "ENV_KIND " + std::to_string(environmentKind(settings, map));
 }
 
-namespace {
-// The studio's softboxes (marble_shading.glsl, softbox(): their axes stay there): cone radius in
-// radians and radiance.
-struct StudioSoftbox {
-  float radius, radiance;
-};
-constexpr StudioSoftbox kStudioSoftboxes[] = {{0.45f, 3.0f}, {0.18f, 4.0f}, {0.18f, 4.0f}};
-
-// cos / sin of a value the compiler cannot fold: the shader compiler folds the constant edges'
-// cos(r +- 0.02) with the C library's cosf / sinf, which GCC's own folding (correctly rounded)
-// could differ from by an ulp.
-float libraryCos(float x) {
-  volatile float v = x;
-  return std::cos(static_cast<float>(v));
-}
-float librarySin(float x) {
-  volatile float v = x;
-  return std::sin(static_cast<float>(v));
-}
-}  // namespace
-
 void setStudioBlurUniform(const gl::Program& program, float roughness) {
-  // What studio_radiance (marble_shading.glsl) computed per pixel before session 20, by the same
-  // float operations in the same order (no contraction: -ffp-contract=off for this file), so the
-  // pictures keep every bit.
   const float blur = kStudioBlurPerRoughness * roughness;
-  const float c = std::cos(blur), s = std::sin(blur);
-  glm::vec3 boxes[std::size(kStudioSoftboxes)];
-  for (size_t i = 0; i < std::size(kStudioSoftboxes); ++i) {
-    const float r = kStudioSoftboxes[i].radius;
-    const float k = r / (r + blur);
-    const float outer = libraryCos(r + 0.02f) * c - librarySin(r + 0.02f) * s;
-    const float inner = blur >= r - 0.02f ? 1.0f : libraryCos(r - 0.02f) * c + librarySin(r - 0.02f) * s;
-    boxes[i] = glm::vec3(kStudioSoftboxes[i].radiance * k * k, outer, inner);
-  }
-  glProgramUniform3fv(program.id(), program.location("u_studio_boxes"), static_cast<GLsizei>(std::size(boxes)), &boxes[0].x);
+  program.set("u_studio_blur_cs", glm::vec2(std::cos(blur), std::sin(blur)));
 }
 
 void setEnvironmentUniforms(const gl::Program& p, const RenderSettings& settings, const EnvironmentMap* map) {

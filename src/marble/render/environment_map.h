@@ -44,7 +44,7 @@ std::string environmentDefine(const RenderSettings& settings, const EnvironmentM
 void setEnvironmentUniforms(const gl::Program& program, const RenderSettings& settings, const EnvironmentMap* map);
 // The studio's reflections are blurred over kStudioBlurPerRoughness x roughness radians
 // (kStudioBlurPerRoughness in environment.glsl); a pass that calls env_radiance sets this with
-// its roughness (u_studio_boxes: each softbox's blurred weight and edges, once per frame, not per pixel).
+// its roughness (u_studio_blur_cs: the cosine and sine of that angle, once per frame, not per pixel).
 constexpr float kStudioBlurPerRoughness = 1.2f;
 void setStudioBlurUniform(const gl::Program& program, float roughness);
 

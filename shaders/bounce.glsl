@@ -92,13 +92,12 @@ const float BOUNCE_GLOSS = 4.0;
 float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(texels) - BOUNCE_LOD_FINER, 0.0, maxLod); }
 
 // Irradiance at P (normal N) from the emitters in the area of `texels` of the map's finest level
-// around uv, per unit of the light's
-// radiance and before the emitters' albedo and Fresnel factor: x, diffuse (times the albedo later);
-// y, z, glossy (times F0 and 1 - F0 later: Schlick's F0 + (1 - F0)(1 - cos)^5 split by what
-// depends on the material); w, the radiance P's specular layer reflects toward the camera (R: the
-// view's mirror direction at P) of the emitters' diffuse light, before the emitters' albedo and
-// P's Fresnel factor. Read at level `lod` (bounce_sample_lod; bilinear within the level:
-// continuous in uv).
+// around uv, per unit of the light's radiance and before the emitters' albedo and Fresnel factor:
+// x, diffuse (times the albedo later); y, z, glossy (times F0 and 1 - F0 later: Schlick's
+// F0 + (1 - F0)(1 - cos)^5 split by what depends on the material); w, the radiance P's specular
+// layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
+// light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
+// (bounce_sample_lod; bilinear within the level: continuous in uv).
 vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <vector>
 
+#include "ggx_reference.h"
 #include "gl_support.h"
 #include "image_probe.h"
 
@@ -20,14 +21,6 @@ namespace {
 ImageRGBF renderHdr(Renderer& r, const Scene& s) {
   renderImage(r, s);
   return r.readHdr();
-}
-
-// Reflectance of a dielectric of index n for unpolarized light at cosine c (Fresnel's equations;
-// Born & Wolf), computed independently of the shader's closed form: from the refraction angle.
-double exactFresnel(double c, double n) {
-  const double sinT = std::sqrt(1.0 - c * c) / n, cosT = std::sqrt(1.0 - sinT * sinT);
-  const double rs = (c - n * cosT) / (c + n * cosT), rp = (n * c - cosT) / (n * c + cosT);
-  return 0.5 * (rs * rs + rp * rp);
 }
 
 // The cube's front face (normal +z) seen from 60° to one side and lit by a directional light from
@@ -67,7 +60,7 @@ TEST(Specular, FresnelIsTheDielectricsExactOne) {
   const Scene glossy = obliqueFaceScene(1.5f), bare = obliqueFaceScene(1.0f);
   const float withHighlight = linearRgbAround(renderHdr(renderer, glossy), glossy, {0, 0, 1}).g;
   const float without = linearRgbAround(renderHdr(renderer, bare), bare, {0, 0, 1}).g;
-  const double expected = exactFresnel(0.5, 1.5) / 4.0;  // 0.0223; Schlick's would give 0.0175
+  const double expected = fresnelFromRefractionAngle(0.5, 1.5) / 4.0;  // 0.0223; Schlick's would give 0.0175
   EXPECT_NEAR(withHighlight - without, expected, 0.03 * expected)
       << "with " << withHighlight << " without " << without;
   std::cout << "[          ] highlight " << withHighlight - without << " (expected " << expected << ", Schlick's "
@@ -88,11 +81,7 @@ Scene glintScene(int size) {
   s.camera.fov_y_deg = 30;
   s.light.type = LightType::Directional;
   s.light.position = {1.0f, 0.3f, 0.2f};
-  Material& m = s.material;
-  m.base_color = m.vein_color = m.vein2_color = glm::vec3(0.0f);  // the highlight alone
-  m.ior = 1.5f;
-  m.roughness = 0.05f;
-  m.translucency = 0.0f;
+  showHighlightOnly(s.material, 0.05f);
   return s;
 }
 
@@ -122,11 +111,10 @@ double meanGreenIntegrated(const Scene& s) {
       const double b = glm::dot(d, cam), disc = b * b - (glm::dot(cam, cam) - 1.0);
       if (disc <= 0.0) continue;
       const glm::dvec3 n = cam + (-b - std::sqrt(disc)) * d, v = -d, h = glm::normalize(L + v);
-      const double nl = glm::dot(n, L), nv = std::max(glm::dot(n, v), 1e-4), nh = glm::dot(n, h);
+      const double nl = glm::dot(n, L);
       if (nl <= 0.0) continue;
-      const double q = nh * nh * (a2 - 1.0) + 1.0, D = a2 / (M_PI * q * q);
-      const double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-      sum += M_PI * nl * D * vis * exactFresnel(glm::dot(h, v), s.material.ior);
+      const double highlight = ggxHighlight(nl, glm::dot(n, v), glm::dot(n, h), glm::dot(h, v), a2, s.material.ior);
+      sum += highlight;
     }
   return sum / (double(size) * size * sub * sub);
 }
@@ -172,11 +160,10 @@ std::vector<double> greenIntegratedPerPixel(const Scene& s, int sub) {
       const double b = glm::dot(d, cam), disc = b * b - (glm::dot(cam, cam) - 1.0);
       if (disc <= 0.0) continue;
       const glm::dvec3 n = cam + (-b - std::sqrt(disc)) * d, v = -d, h = glm::normalize(L + v);
-      const double nl = glm::dot(n, L), nv = std::max(glm::dot(n, v), 1e-4), nh = glm::dot(n, h);
+      const double nl = glm::dot(n, L);
       if (nl <= 0.0) continue;
-      const double q = nh * nh * (a2 - 1.0) + 1.0, D = a2 / (M_PI * q * q);
-      const double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-      out[size_t(py / sub) * size + px / sub] += M_PI * nl * D * vis * exactFresnel(glm::dot(h, v), s.material.ior) / (sub * sub);
+      const double highlight = ggxHighlight(nl, glm::dot(n, v), glm::dot(n, h), glm::dot(h, v), a2, s.material.ior);
+      out[size_t(py / sub) * size + px / sub] += highlight / (sub * sub);
     }
   return out;
 }
@@ -252,11 +239,10 @@ double meanGreenIntegratedBalls(const Scene& s, const std::vector<Ball>& balls) 
       }
       if (nearest == 1e30) continue;
       const glm::dvec3 v = -d, h = glm::normalize(L + v);
-      const double nl = glm::dot(n, L), nv = std::max(glm::dot(n, v), 1e-4), nh = glm::dot(n, h);
+      const double nl = glm::dot(n, L);
       if (nl <= 0.0) continue;
-      const double q = nh * nh * (a2 - 1.0) + 1.0, D = a2 / (M_PI * q * q);
-      const double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-      sum += M_PI * nl * D * vis * exactFresnel(glm::dot(h, v), s.material.ior);
+      const double highlight = ggxHighlight(nl, glm::dot(n, v), glm::dot(n, h), glm::dot(h, v), a2, s.material.ior);
+      sum += highlight;
     }
   return sum / (double(size) * size * sub * sub);
 }

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "ggx_reference.h"
 #include "gl_support.h"
 #include "marble/render/geometry_pass.h"
 
@@ -184,20 +185,8 @@ Scene turningFacetScene() {
   s.light.type = LightType::Directional;
   const float e = glm::radians(3.0f);
   s.light.position = {0.0f, std::sin(e), -std::cos(e)};
-  Material& m = s.material;
-  m.base_color = m.vein_color = m.vein2_color = glm::vec3(0.0f);  // the highlight alone
-  m.ior = 1.5f;
-  m.roughness = 0.15f;
-  m.translucency = 0.0f;
+  showHighlightOnly(s.material, 0.15f);
   return s;
-}
-
-// Reflectance of a dielectric of index n for unpolarized light at cosine c (Fresnel's equations;
-// as tests/specular_gl_test.cpp's exactFresnel, computed from the refraction angle).
-double fresnelReflectance(double c, double n) {
-  const double sinT = std::sqrt(1.0 - c * c) / n, cosT = std::sqrt(1.0 - sinT * sinT);
-  const double rs = (c - n * cosT) / (c + n * cosT), rp = (n * c - cosT) / (n * c + cosT);
-  return 0.5 * (rs * rs + rp * rp);
 }
 
 // Per row (0 at the top, as the renderer's image), the facet's highlight summed over the row by
@@ -239,11 +228,9 @@ std::vector<double> turningFacetRowsIntegrated(const Scene& s, float farTilt, fl
       n = std::sin(hi) * x + glm::dvec3(0.0, std::cos(hi), 0.0);
     }
     const glm::dvec3 h = glm::normalize(L + v);
-    const double nl = glm::dot(n, L), nv = std::max(glm::dot(n, v), 1e-4), nh = glm::dot(n, h);
+    const double nl = glm::dot(n, L), nh = glm::dot(n, h);
     if (nl <= 0.0 || nh <= 0.0) return 0.0;
-    const double q = nh * nh * (a2 - 1.0) + 1.0, D = a2 / (M_PI * q * q);
-    const double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-    return M_PI * nl * D * vis * fresnelReflectance(glm::dot(h, v), s.material.ior);
+    return ggxHighlight(nl, glm::dot(n, v), nh, glm::dot(h, v), a2, s.material.ior);
   };
   for (int py = 0; py < kSize; ++py) {
     bool bent = false;

@@ -1,7 +1,8 @@
 #version 450 core
 // The bounce pass's first draw's second step (`marble` only; BouncePass::gatherBounces): the first
-// bounce's interleaved pattern evened out over its 2 x 2 blocks before anything reads it. The gather (bounce_gather.frag.glsl) turns the
-// pattern by another quarter of its angular step in each texel of a 2 x 2 block, but the upsample
+// bounce's interleaved pattern evened out over its 2 x 2 blocks before anything reads it. The
+// gather (bounce_gather.frag.glsl) turns the pattern by another quarter of its angular step in
+// each texel of a 2 x 2 block, but the upsample
 // (bounce_upsample.glsl) is bilinear, so near a texel's own pixel that texel's one turn dominates
 // and a texel-sized mottle of the turns' luck remains (a thin emitter hit by one turn and missed
 // by the next). Here each texel takes the mean of its 3 x 3 neighbours, weighted by a tent
@@ -14,10 +15,12 @@
 // geometry test. Both later readers take the evened values: the further bounces
 // (bounce_further.frag.glsl, which reads the nearest texel at each of its samples) and the merge.
 // Measured against Cycles (docs/quality.md, "Twenty-first session: the interleaved pattern evened
-// out"): the tent in the merge alone, mean SSIM 0.9210 -> 0.9225; read by the further bounces too,
-// higher again; a cross (no corners: the diagonal turn left out) and the aligned 2 x 2 block (every
-// texel of a block the same value: blocks twice a texel wide) less; 5 x 5 (1 4 6 4 1) about as the
-// tent at three times the reads. The cost is in docs/performance.md.
+// out"): mean SSIM 0.9210 -> 0.9231 over the ten scenes, none lower; dragon-side +0.0068 and
+// buddha-side +0.0047 over the pattern's four turns. The tent in the merge alone (the further
+// bounces reading the raw grid) 0.9225; a cross (the diagonal turn left out) and the aligned 2 x 2
+// block (a block's texels one value) lower; 5 x 5 (1 4 6 4 1)^2 +0.0015 on the side-lit scenes at
+// three times the reads; as two separable draws, less (5 taps) or costlier (3 taps). Cost: +3.4 M
+// instructions of the dragon's 800² camera and light frames (docs/performance.md).
 // Error: on a curved surface the tent also blurs the bounce over +-1 texel (+-8 pixels at 800²):
 // the bounce is smooth over tens of pixels (bounce_gather.frag.glsl), and the match keeps it from
 // crossing folds and silhouettes; the refined grid's texels (bounce_refine_gather.comp.glsl) keep

@@ -18,8 +18,8 @@
 // out"): mean SSIM 0.9210 -> 0.9231 over the ten scenes, none lower; dragon-side +0.0068 and
 // buddha-side +0.0047 over the pattern's four turns. The tent in the merge alone (the further
 // bounces reading the raw grid) 0.9225; a cross (the diagonal turn left out) and the aligned 2 x 2
-// block (a block's texels one value) lower; 5 x 5 (1 4 6 4 1)^2 +0.0015 on the side-lit scenes at
-// three times the reads; as two separable draws, less (5 taps) or costlier (3 taps). Cost: +3.4 M
+// block (a block's texels one value) lower; 5 x 5 (1 4 6 4 1)^2 0.9235 at three times the reads
+// (+7.2 M instructions); as two separable draws, less (5 taps) or costlier (3 taps). Cost: +3.4 M
 // instructions of the dragon's 800² camera and light frames (docs/performance.md).
 // Error: on a curved surface the tent also blurs the bounce over +-1 texel (+-8 pixels at 800²):
 // the bounce is smooth over tens of pixels (bounce_gather.frag.glsl), and the match keeps it from

@@ -32,9 +32,10 @@
 //   is covered without gaps, finely near the point (where the emitters that matter most are; D&S
 //   2005 also sample densest there) and coarsely far away. The pattern is turned by a quarter of
 //   its angular step from one gather texel to the next in each 2 x 2 block (interleaved sampling,
-//   Keller & Heidrich 2001; since session 11: bounce_gather's `turn`), and the upsample's bilinear
-//   weights mix four neighbouring texels, so most pixels average four turns of the pattern: its
-//   error, a fixed pattern that moves with the light, shrinks where the four agree on the surface.
+//   Keller & Heidrich 2001; since session 11: bounce_gather's `turn`), and each texel is evened
+//   out over its 3 x 3 neighbours on the same surface, a tent that weighs the four turns equally
+//   (since session 21: bounce_deinterleave.frag.glsl), so every texel averages four turns of the
+//   pattern: its error, a fixed pattern that moves with the light, shrinks where the four agree.
 // Gathered by the bounce pass (bounce_gather.frag.glsl) at one texel per 4 x 4 of the lighting
 // pass's and brought to them by bounce_upsample.glsl.
 // Needs from the includer: deferred_common.glsl (light_falloff, light_vector, light_distance_of,

@@ -51,7 +51,7 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
-layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // the first draw's: the first bounce
+layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // the first bounce, evened out
 uniform int u_scale;         // full-resolution pixels per texel of this draw: twice the first bounce's
 uniform int u_bounce_scale;  // and of the first bounce's (u_bounce)
 layout(location = 0) out vec4 o_further;

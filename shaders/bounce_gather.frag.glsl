@@ -40,7 +40,8 @@ void main() {
   // quarter of its angular step; the four turns together sample the rings 4x as densely in angle.
   // The fixed pattern alone swung SSIM against Cycles by up to 0.03 with its turn (bunny-side
   // 0.892-0.921 over four turns; docs/quality.md, "Eleventh session"), the interleaved one is at or
-  // above the four turns' mean in every scene.
+  // above the four turns' mean in every scene. The next step evens the four turns out over each
+  // block (bounce_deinterleave.frag.glsl) before the further bounces and the merge read them.
   ivec2 q = ivec2(gl_FragCoord.xy) & 1;
   o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y));
 }

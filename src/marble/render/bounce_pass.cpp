@@ -30,6 +30,7 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
+      deinterleaveProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_deinterleave.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
@@ -48,6 +49,9 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   first_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
   firstFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(firstFbo_.id(), GL_COLOR_ATTACHMENT0, first_.id(), 0);
+  evened_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
+  evenedFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(evenedFbo_.id(), GL_COLOR_ATTACHMENT0, evened_.id(), 0);
   const int fw = (width + 2 * scale - 1) / (2 * scale), fh = (height + 2 * scale - 1) / (2 * scale);
   further_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
   furtherFbo_ = gl::Framebuffer::create();
@@ -86,7 +90,7 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glViewport(0, 0, width_, height_);
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
   setFrameUniforms(mergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(mergeProgram_, material);
@@ -200,12 +204,20 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
+  // Its interleaved pattern evened out over the 2 x 2 blocks, on the same grid: what the further
+  // bounces and the merge read.
+  glBindFramebuffer(GL_FRAMEBUFFER, evenedFbo_.id());
+  gl::clearFramebuffer(evenedFbo_.id(), GL_COLOR, 0, kNone);
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  setFrameUniforms(deinterleaveProgram_, camera, lightM, light, lightTexelWorld);
+  deinterleaveProgram_.set("u_scale", scale_);
+  gl::drawFullscreenTriangle(deinterleaveProgram_.id(), emptyVao_.id());
   // The further bounces, from the first, on the grid twice as coarse.
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
   gl::clearFramebuffer(furtherFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, 2 * scale_));
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
   setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);
   furtherProgram_.set("u_scale", 2 * scale_);
   furtherProgram_.set("u_bounce_scale", scale_);

@@ -200,6 +200,13 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
+  // Off before the next clear, which the scissor would cut too: the further bounces' clear was
+  // cut to this draw's rectangle, and the merge's to the further bounces' where the entry draw
+  // (which turned it off) did not run. Texels outside the cut keep an earlier frame's values
+  // (or a new texture's undefined ones); the readers did not reach them while every texel of a
+  // draw's rectangle was shaded, but the background skip (BounceGridDepth) leaves texels there
+  // to the clear.
+  scissorOff();
   // The further bounces, from the first, on the grid twice as coarse.
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
@@ -210,6 +217,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   furtherProgram_.set("u_scale", 2 * scale_);
   furtherProgram_.set("u_bounce_scale", scale_);
   gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
+  scissorOff();
 }
 
 }  // namespace marble

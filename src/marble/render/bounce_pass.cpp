@@ -32,6 +32,7 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
       furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
+      gridDepthProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_grid_depth.frag.glsl"}}),
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
       refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
@@ -63,17 +64,27 @@ void BouncePass::resize(int width, int height, int lightingScale) {
                        nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
+  firstDepth_.resize(w + fineWidth_, std::max(h, fineHeight_));
+  firstDepth_.attachTo(firstFbo_.id());
+  firstDepth_.attachTo(fbo_.id());
+  furtherDepth_.resize(fw, fh);
+  furtherDepth_.attachTo(furtherFbo_.id());
+  gridDepthsStale_ = true;
 }
 
 void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
                      const Light& light, const Material& material, float lightTexelWorld, const ScreenRect& rect,
                      bool gather) {
   timer_.begin();
-  gl::setScreenPassState();
   glBindTextureUnit(shader::UNIT_LIGHTING_NORMAL, in.normal);
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
+  // A run without the gather has the last gather's view (only the material changed since).
+  if (gather || gridDepthsStale_) {
+    fillGridDepths(rect);
+    gridDepthsStale_ = false;
+  }
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }
@@ -81,7 +92,9 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
     gatherEntries(camera, lightM, light, material, lightTexelWorld, in.bounceMapSize);
     entriesStale_ = false;
   }
-  // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
+  // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid: the
+  // background's texels keep the clear's -1, which the draw copies from the first bounce there.
+  setGridDrawState();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
@@ -183,15 +196,31 @@ void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices
   }
   glBindFramebuffer(GL_FRAMEBUFFER, entryFbo_.id());
   glViewport(0, 0, entrySize_, entrySize_);
-  scissorOff();  // the whole map: the camera's rectangle does not apply
+  gl::setScreenPassState();  // the whole map, no depth: the camera's rectangle does not apply
   setFrameUniforms(entryProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(entryProgram_, material);
   entryProgram_.set("u_level", kEntryLevel);
   gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 
+void BouncePass::fillGridDepths(const ScreenRect& rect) {
+  firstDepth_.fill(gridDepthProgram_, emptyVao_.id(), scale_, width_, height_, scaledDown(rect, scale_));
+  furtherDepth_.fill(gridDepthProgram_, emptyVao_.id(), 2 * scale_, (width_ + 1) / 2, (height_ + 1) / 2,
+                     scaledDown(rect, 2 * scale_));
+}
+
+void BouncePass::setGridDrawState() const {
+  if (skipsBackground_)
+    gl::setSurfaceOnlyScreenPassState();
+  else
+    gl::setScreenPassState();
+}
+
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                                float lightTexelWorld, const ScreenRect& rect) {
+  // Both draws shade only the texels whose pixel is stone (BounceGridDepth): the background's
+  // keep the clear's -1, which their shaders write there.
+  setGridDrawState();
   // The first bounce, from the light's map.
   glBindFramebuffer(GL_FRAMEBUFFER, firstFbo_.id());
   glViewport(0, 0, width_, height_);

@@ -33,6 +33,7 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
       deinterleaveProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_deinterleave.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
+      gridDepthProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_grid_depth.frag.glsl"}}),
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
       refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
@@ -67,17 +68,28 @@ void BouncePass::resize(int width, int height, int lightingScale) {
                        nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   fbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, bounce_.id(), 0);
+  firstDepth_.resize(w + fineWidth_, std::max(h, fineHeight_));
+  firstDepth_.attachTo(firstFbo_.id());
+  firstDepth_.attachTo(fbo_.id());
+  firstDepth_.attachTo(evenedFbo_.id());
+  furtherDepth_.resize(fw, fh);
+  furtherDepth_.attachTo(furtherFbo_.id());
+  gridDepthsStale_ = true;
 }
 
 void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const LightMatrices& lightM,
                      const Light& light, const Material& material, float lightTexelWorld, const ScreenRect& rect,
                      bool gather) {
   timer_.begin();
-  gl::setScreenPassState();
   glBindTextureUnit(shader::UNIT_LIGHTING_NORMAL, in.normal);
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
+  // A run without the gather has the last gather's view (only the material changed since).
+  if (gather || gridDepthsStale_) {
+    fillGridDepths(rect);
+    gridDepthsStale_ = false;
+  }
   if (gather) {
     gatherBounces(camera, lightM, light, lightTexelWorld, rect);
   }
@@ -85,7 +97,9 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
     gatherEntries(camera, lightM, light, material, lightTexelWorld, in.bounceMapSize);
     entriesStale_ = false;
   }
-  // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid.
+  // Both, with the emitters' albedo and Fresnel factors, on the first bounce's grid: the
+  // background's texels keep the clear's -1, which the draw copies from the first bounce there.
+  setGridDrawState();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
@@ -187,15 +201,31 @@ void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices
   }
   glBindFramebuffer(GL_FRAMEBUFFER, entryFbo_.id());
   glViewport(0, 0, entrySize_, entrySize_);
-  scissorOff();  // the whole map: the camera's rectangle does not apply
+  gl::setScreenPassState();  // the whole map, no depth: the camera's rectangle does not apply
   setFrameUniforms(entryProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(entryProgram_, material);
   entryProgram_.set("u_level", kEntryLevel);
   gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 
+void BouncePass::fillGridDepths(const ScreenRect& rect) {
+  firstDepth_.fill(gridDepthProgram_, emptyVao_.id(), scale_, width_, height_, scaledDown(rect, scale_));
+  furtherDepth_.fill(gridDepthProgram_, emptyVao_.id(), 2 * scale_, (width_ + 1) / 2, (height_ + 1) / 2,
+                     scaledDown(rect, 2 * scale_));
+}
+
+void BouncePass::setGridDrawState() const {
+  if (skipsBackground_)
+    gl::setSurfaceOnlyScreenPassState();
+  else
+    gl::setScreenPassState();
+}
+
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                                float lightTexelWorld, const ScreenRect& rect) {
+  // The three draws shade only the texels whose pixel is stone (BounceGridDepth): the background's
+  // keep the clear's -1, which their shaders write there.
+  setGridDrawState();
   // The first bounce, from the light's map.
   glBindFramebuffer(GL_FRAMEBUFFER, firstFbo_.id());
   glViewport(0, 0, width_, height_);
@@ -204,14 +234,24 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
+  // Off before the next clear, which the scissor would cut too: the further bounces' clear was
+  // cut to this draw's rectangle, and the merge's to the further bounces' where the entry draw
+  // (which turned it off) did not run. Texels outside the cut keep an earlier frame's values
+  // (or a new texture's undefined ones); the readers did not reach them while every texel of a
+  // draw's rectangle was shaded, but the background skip (BounceGridDepth) leaves texels there
+  // to the clear.
+  scissorOff();
   // Its interleaved pattern evened out over the 2 x 2 blocks, on the same grid: what the further
-  // bounces and the merge read.
+  // bounces and the merge read (the background's texels skipped: they keep the clear's -1, which
+  // the shader copies from the first bounce there).
   glBindFramebuffer(GL_FRAMEBUFFER, evenedFbo_.id());
   gl::clearFramebuffer(evenedFbo_.id(), GL_COLOR, 0, kNone);
+  scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
   setFrameUniforms(deinterleaveProgram_, camera, lightM, light, lightTexelWorld);
   deinterleaveProgram_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(deinterleaveProgram_.id(), emptyVao_.id());
+  scissorOff();
   // The further bounces, from the first, on the grid twice as coarse.
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
@@ -222,6 +262,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   furtherProgram_.set("u_scale", 2 * scale_);
   furtherProgram_.set("u_bounce_scale", scale_);
   gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
+  scissorOff();
 }
 
 }  // namespace marble

@@ -475,6 +475,10 @@ PassTimes Renderer::passTimes(bool wait) {
 }
 
 int Renderer::bounceRefinedTexels() const { return passes_->bounce.refinedTexelCount(); }
+void Renderer::setBounceSkipsBackground(bool on) {
+  passes_->bounce.setSkipsBackground(on);
+  invalidate();
+}
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +

@@ -127,6 +127,9 @@ public:
   // Texels of the `marble` bounce's refined grid gathered at the last bounce pass (BouncePass: where
   // the coarse grid's samples do not continue the surface). Reads the count back (waits for the GPU).
   int bounceRefinedTexels() const;
+  // For tests: whether the `marble` bounce pass's draws skip the background by the depth test
+  // (BouncePass::setSkipsBackground; on by default).
+  void setBounceSkipsBackground(bool on);
 
   // Whether a target that holds frame `shown` (render()'s token; the caller keeps it with its
   // target) still holds what render() would draw now: `shown` is the last frame drawn, of this

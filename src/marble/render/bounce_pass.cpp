@@ -219,7 +219,7 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
   glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
   gl::clearFramebuffer(furtherFbo_.id(), GL_COLOR, 0, kNone);
-  gl::clearFramebuffer(furtherEvenedFbo_.id(), GL_COLOR, 0, kNone);  // whole: the merge's upsample reads a texel beyond
+  gl::clearFramebuffer(furtherEvenedFbo_.id(), GL_COLOR, 0, kNone);  // as the gather's: the merges read a texel beyond
   scissorTo(scaledDown(rect, 2 * scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
   setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);

@@ -96,7 +96,8 @@ void main() {
   ivec2 size = textureSize(u_bounce, 0);
   float outer = FURTHER_RADIUS * full.y;  // in full-resolution pixels
   // The first draw's interleaving (bounce_gather.frag.glsl), for the same reason: each texel of a
-  // 2 x 2 block turns the pattern by another quarter step.
+  // 2 x 2 block turns the pattern by another quarter step; the pass then evens the four turns out
+  // over the blocks with the first bounce's draw (bounce_deinterleave.frag.glsl).
   ivec2 q = t & 1;
   float turn = 0.25 * float(q.x + 2 * q.y);
   vec4 sum = vec4(0.0);

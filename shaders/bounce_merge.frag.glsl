@@ -16,7 +16,7 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 #include "bounce_bilateral.glsl"
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;           // the first draw's, evened out
-layout(binding = UNIT_LIGHTING_BOUNCE_FURTHER) uniform sampler2D u_further;  // the second draw's
+layout(binding = UNIT_LIGHTING_BOUNCE_FURTHER) uniform sampler2D u_further;  // the second draw's, evened out
 uniform int u_scale;            // full-resolution pixels per texel of this draw and the first's
 uniform int u_further_scale;    // and of the further bounces' (twice as many)
 // rgb: irradiance / PI of all bounces per unit of the light's radiance, the emitters' albedo and

@@ -28,7 +28,10 @@ void main() {
   vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
   // The interleaved pattern's turn as the coarse grid's (bounce_gather.frag.glsl) by the texel's
   // place in its 2 x 2 block, and another eighth of a step: the refined texels' pattern lies between
-  // the coarse ones' turns, so where an upsample mixes the two grids it mixes eight turns.
+  // the coarse ones' turns, so where an upsample mixes the two grids it mixes eight turns. Not
+  // evened out over neighbours as the coarse grids are (bounce_deinterleave.frag.glsl): this offset's
+  // luck moves the scenes by at most 0.001 of SSIM (docs/quality.md, "Twenty-first session: the
+  // further bounces' pattern evened out").
   ivec2 q = t & 1;
   imageStore(u_refined_first, t, bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y) + 0.125));
 }

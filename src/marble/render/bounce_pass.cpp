@@ -57,6 +57,9 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   further_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
   furtherFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(furtherFbo_.id(), GL_COLOR_ATTACHMENT0, further_.id(), 0);
+  furtherEvened_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
+  furtherEvenedFbo_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(furtherEvenedFbo_.id(), GL_COLOR_ATTACHMENT0, furtherEvened_.id(), 0);
   // The refined grid at half the scale, beside the coarse one in the output (bounce_refined_grid.glsl).
   const int fine = scale / 2;
   fineWidth_ = (width + fine - 1) / fine;
@@ -74,6 +77,7 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   firstDepth_.attachTo(evenedFbo_.id());
   furtherDepth_.resize(fw, fh);
   furtherDepth_.attachTo(furtherFbo_.id());
+  furtherDepth_.attachTo(furtherEvenedFbo_.id());
   gridDepthsStale_ = true;
 }
 
@@ -105,7 +109,7 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, furtherEvened_.id());
   setFrameUniforms(mergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(mergeProgram_, material);
   mergeProgram_.set("u_scale", scale_);
@@ -167,7 +171,7 @@ void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices
 void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                               const Material& material, float lightTexelWorld) {
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, refinedFirst_.id());
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, further_.id());
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, furtherEvened_.id());
   glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   setFrameUniforms(refineMergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(refineMergeProgram_, material);
@@ -223,7 +227,7 @@ void BouncePass::setGridDrawState() const {
 
 void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                                float lightTexelWorld, const ScreenRect& rect) {
-  // The three draws shade only the texels whose pixel is stone (BounceGridDepth): the background's
+  // The draws shade only the texels whose pixel is stone (BounceGridDepth): the background's
   // keep the clear's -1, which their shaders write there.
   setGridDrawState();
   // The first bounce, from the light's map.
@@ -262,6 +266,14 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   furtherProgram_.set("u_scale", 2 * scale_);
   furtherProgram_.set("u_bounce_scale", scale_);
   gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
+  scissorOff();
+  // Its pattern (turned per 2 x 2 block as the first's) evened out the same way, by the same draw.
+  glBindFramebuffer(GL_FRAMEBUFFER, furtherEvenedFbo_.id());
+  gl::clearFramebuffer(furtherEvenedFbo_.id(), GL_COLOR, 0, kNone);
+  scissorTo(scaledDown(rect, 2 * scale_));
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, further_.id());
+  deinterleaveProgram_.set("u_scale", 2 * scale_);
+  gl::drawFullscreenTriangle(deinterleaveProgram_.id(), emptyVao_.id());
   scissorOff();
 }
 

@@ -23,10 +23,11 @@
 // (shaders/bounce_refined_grid.glsl), and where nothing is refined the lighting pass reads the
 // coarse grid exactly as before. Since session 21 the first bounce's interleaved pattern is evened
 // out over its 2 x 2 blocks right after its gather, on the same grid
-// (shaders/bounce_deinterleave.frag.glsl), and the further bounces and the merge read that; and the
-// full-screen draws test depth against a buffer at their grid's resolution (BounceGridDepth) and
-// shade only the texels whose pixel is stone, as the lighting pass does: about half of each grid's
-// scissor rectangle is background on the dragon.
+// (shaders/bounce_deinterleave.frag.glsl), and the further bounces and the merge read that; the
+// same draw evens out the further bounces' grid before the merges read it. The full-screen draws
+// test depth against a buffer at their grid's resolution (BounceGridDepth) and shade only the
+// texels whose pixel is stone, as the lighting pass does: about half of each grid's scissor
+// rectangle is background on the dragon.
 #include "marble/gl/program.h"
 #include "marble/render/bounce_grid_depth.h"
 #include "marble/render/pass_timer.h"
@@ -70,21 +71,21 @@ public:
   void markEntriesStale() { entriesStale_ = true; }
   int scale() const { return scale_; }  // full-resolution pixels per texel
   BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
-  // RGBA16F: the first bounce on this grid (as gathered and evened out), the further bounces' grid, all bounces on this grid
+  // RGBA16F: the first bounce on this grid and the further bounces' grid (each as gathered and evened out), all bounces on this grid
   // and the refined one beside it, the refined first bounce, the entries' grid; the refined list.
   size_t bytes() const {
     const size_t fine = static_cast<size_t>(fineWidth_) * fineHeight_;
-    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 8 +
+    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 16 +
            static_cast<size_t>(width_ + fineWidth_) * fineHeight_ * 8 + fine * 8 +
            static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4 + firstDepth_.bytes() + furtherDepth_.bytes();
   }
   PassTimer& timer() { return timer_; }
-  // For tests: off, the first three draws shade every texel of the rectangle (no depth test), the
+  // For tests: off, the full-screen draws on the grids shade every texel of the rectangle (no depth test), the
   // reference the skip (BounceGridDepth, on by default) must equal bit for bit.
   void setSkipsBackground(bool on) { skipsBackground_ = on; }
 
 private:
-  // The first three draws' state: the depth test against the grid's depth, or none.
+  // The grids' full-screen draws' state: the depth test against the grid's depth, or none.
   void setGridDrawState() const;
   // The first two draws: the first bounce and the further bounces, before any material parameter.
   void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
@@ -104,10 +105,10 @@ private:
   gl::Program program_, furtherProgram_, deinterleaveProgram_, mergeProgram_, entryProgram_, gridDepthProgram_;
   gl::Program markProgram_, refineProgram_, refineMergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture first_, evened_, further_, bounce_, entry_, refinedFirst_;  // evened_: first_'s pattern evened out
-  gl::Framebuffer firstFbo_, evenedFbo_, furtherFbo_, fbo_, entryFbo_;
+  gl::Texture first_, evened_, further_, furtherEvened_, bounce_, entry_, refinedFirst_;  // evened: the pattern evened out
+  gl::Framebuffer firstFbo_, evenedFbo_, furtherFbo_, furtherEvenedFbo_, fbo_, entryFbo_;
   // The first bounce's grid (attached to firstFbo_, evenedFbo_ and fbo_; as large as bounce_, so
-  // that fbo_ keeps its whole area) and the further bounces' grid (furtherFbo_).
+  // that fbo_ keeps its whole area) and the further bounces' grid (furtherFbo_, furtherEvenedFbo_).
   BounceGridDepth firstDepth_, furtherDepth_;
   gl::Buffer refineList_;  // shaders/bounce_refine_list.glsl: the indirect dispatch's arguments, the count, the texels
   int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0;

@@ -50,6 +50,8 @@ What is matched to marble (docs/scene-format.md, docs/materials.md, src/marble/r
   r = 1 / ((sigma_a + sigma_s) sqrt(3 (1 - a'))), a' from Rd(a') = base_color; the walk's
   single-scattering albedo is then Cycles' (from base_color), not sigma_s / (sigma_a + sigma_s),
   and a warning says so.
+- Sampling: every pixel --samples samples (no adaptive sampling), nothing clamped: an unbiased
+  path tracer, whose only error is its noise (a second --seed measures it).
 - Output: linear OpenEXR, RGBA 32-bit float, transparent film (alpha 0 and RGB 0 on the
   background), view transform Standard (EXR is written scene-linear regardless).
 """
@@ -371,6 +373,16 @@ def main():
     bs.cycles.samples = opts["samples"]
     bs.cycles.seed = opts["seed"]  # a second seed measures the reference's own noise
     bs.cycles.use_denoising = False  # Debian's build has no OpenImageDenoise
+    # An unbiased estimator, every pixel the same samples (session 21; docs/quality.md, "References
+    # that meet item 6"): Cycles' defaults clamp indirect light at 10 per sample, which removed 1.3 %
+    # of the back-lit dragon's light (its fireflies: rare walks that are most of the body's light),
+    # and adaptive sampling stops a pixel whose noise estimate says "converged" after a lucky (or
+    # no) hit on a sub-pixel glint (session 16). The references up to session 21 were made with
+    # both defaults (dragon-back at 2048 samples: SSIM 0.997 / 0.988 against itself without the
+    # clamp / without adaptive sampling, the same seed).
+    bs.cycles.sample_clamp_direct = 0.0
+    bs.cycles.sample_clamp_indirect = 0.0
+    bs.cycles.use_adaptive_sampling = False
     if opts["box"]:
         # Each pixel the plain mean over its own square: what rendering 4x larger and averaging
         # 4x4 blocks (marble compare --downsample 4, marble render --supersample 4) does, so a

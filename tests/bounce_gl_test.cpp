@@ -52,6 +52,22 @@ Mesh corner(bool plateFacingProbe) {
   return m;
 }
 
+// The wall alone, without any plate.
+Mesh wallAlone() {
+  Mesh m;
+  addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  computeVertexNormals(m, 60.0f);
+  return m;
+}
+
+// Scene s rendered with the wall alone: the linear picture the plate's or bar's light is measured over.
+ImageRGBF renderedWallAlone(const Scene& s) {
+  Renderer alone;
+  alone.setMesh(wallAlone());
+  renderImage(alone, s);
+  return alone.readHdr();
+}
+
 Scene cornerScene(float albedo, float h = kHeight, float lightElevationDeg = 90.0f) {
   Scene s;
   s.mesh = "test:corner";
@@ -219,9 +235,7 @@ TEST_F(Bounce, NoneWhereThePlateIsBehindTheFace) {
   // receiver's tangent plane). Without a plate, the wall's face has only what transmission and the
   // blur bring; with the far plate, the same to within 1 % of the corner's bounce.
   const Scene s = cornerScene(0.8f);
-  Mesh wallOnly;
-  addBox(wallOnly, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  computeVertexNormals(wallOnly, 60.0f);
+  const Mesh wallOnly = wallAlone();
   const HdrPair img = renderHdrPair(s, wallOnly, corner(false));
   const glm::vec3 a = linearRgbAround(img.first, s, probe(kHeight));
   const glm::vec3 b = linearRgbAround(img.second, s, probe(kHeight));
@@ -433,14 +447,8 @@ TEST_F(Bounce, ThinRadialEmitterAtEveryAngle) {
   // 0, before session 11) 0.38 (0.40-1.63), which fails. With the turns evened out over the blocks
   // (session 21, bounce_deinterleave.frag.glsl) 0.20 (0.71-1.41).
   constexpr float kAlbedo = 0.8f, kH = 0.3f;
-  Mesh wallOnly;
-  addBox(wallOnly, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  computeVertexNormals(wallOnly, 60.0f);
   const Scene s = cornerScene(kAlbedo, kH);
-  Renderer alone;
-  alone.setMesh(wallOnly);
-  renderImage(alone, s);
-  const glm::vec3 b = aroundTheProbe(alone.readHdr(), s, kH);
+  const glm::vec3 b = aroundTheProbe(renderedWallAlone(s), s, kH);
   double lo = 1e30, hi = 0.0, sq = 0.0;
   for (int i = 0; i < 10; ++i) {
     const float theta = 5.0f * static_cast<float>(i);
@@ -492,14 +500,8 @@ TEST_F(Bounce, TheInterleavedTurnsAreEvenedOutBetweenNeighbouringTexels) {
   // five angles of the bar: 0.106; without the evening out (each texel its own turn) 1.19, which
   // fails.
   constexpr float kAlbedo = 0.8f, kH = 0.5f;
-  Mesh wallOnly;
-  addBox(wallOnly, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  computeVertexNormals(wallOnly, 60.0f);
   const Scene s = cornerScene(kAlbedo, kH);
-  Renderer alone;
-  alone.setMesh(wallOnly);
-  renderImage(alone, s);
-  const ImageRGBF base = alone.readHdr();
+  const ImageRGBF base = renderedWallAlone(s);
   // The face above the bar (which lies on the plate's level, rows below ~34 of 128) and inside
   // its edges: texels 3..11 across, 6..12 up, the residual taken at the inner 7 x 5.
   constexpr int i0 = 3, i1 = 12, j0 = 6, j1 = 13, w = i1 - i0, h = j1 - j0;

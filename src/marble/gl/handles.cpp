@@ -80,6 +80,12 @@ void setSurfaceOnlyScreenPassState() {
   glDepthMask(GL_FALSE);    // nothing written, so sampling the same depth texture is defined
 }
 
+void setDepthCopyScreenPassState() {
+  setScreenPassState();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);  // every texel takes its pixel's depth (setScreenPassState left writes on)
+}
+
 void drawFullscreenTriangle(GLuint program, GLuint emptyVao) {
   glUseProgram(program);
   glBindVertexArray(emptyVao);

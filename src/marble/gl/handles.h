@@ -134,6 +134,11 @@ void setScreenPassState();
 // does the same. Depth writes are off: reading the depth texture while it is attached is then
 // no feedback loop (OpenGL 4.5, 9.3.1: no texel is both written and read).
 void setSurfaceOnlyScreenPassState();
+// A full-screen pass that writes a depth buffer of its own from a shader's gl_FragDepth (the
+// depth copies at a coarser resolution that setSurfaceOnlyScreenPassState later tests against:
+// BlurDepthPass, BounceGridDepth): the test on and always passing, so every texel takes its
+// pixel's depth, writes on. The caller clears the buffer to the far plane first.
+void setDepthCopyScreenPassState();
 // Attaches `depthTexture` (the G-buffer's) to `fbo` as its depth buffer, for
 // setSurfaceOnlyScreenPassState.
 inline void attachSurfaceDepth(GLuint fbo, GLuint depthTexture) {

@@ -33,9 +33,7 @@ void BlurDepthPass::run(const ScreenRect& rect) {
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
-  gl::setScreenPassState();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);  // every texel takes its pixel's depth (setScreenPassState left writes on)
+  gl::setDepthCopyScreenPassState();
   const float one = 1.0f;
   gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
   scissorTo(scaledDown(rect, scale_));

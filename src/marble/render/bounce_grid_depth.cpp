@@ -17,9 +17,7 @@ void BounceGridDepth::fill(const gl::Program& program, GLuint emptyVao, int scal
                            const ScreenRect& cells) const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, gridWidth, gridHeight);
-  gl::setScreenPassState();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);  // every texel takes its pixel's depth (setScreenPassState left writes on)
+  gl::setDepthCopyScreenPassState();
   const float far = 1.0f;
   gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &far);
   scissorTo(cells);

@@ -11,7 +11,7 @@ layout(location = 0) out vec4 o_color;
 // the screen-space subsurface blur; o_color is then not drawn (the post pass adds what the
 // surface reflects). The pass binds only the output its mode uses.
 layout(location = 1) out vec4 o_diffuse;
-layout(location = 2) out vec4 o_mirror_hit;  // `marble`: the pixel the mirror ray meets (xy), -1 none
+layout(location = 2) out vec4 o_mirror_hit;  // `marble`: the pixel the mirror ray meets (xy), -1 none, -2 hidden
 
 layout(binding = UNIT_LIGHTING_ALBEDO) uniform sampler2D u_albedo;
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
@@ -402,6 +402,8 @@ vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   return mix(straight, rings, blend);
 }
 
+#include "hidden_mirror.glsl"
+
 // How much the camera sees of `entry` (where the transmitted light entered the stone): 1 where
 // it does, 0 where the object hides it, off screen or against the background. The subsurface
 // blur spreads the light entering every surface the camera sees over its neighbours, so light
@@ -541,9 +543,15 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
+    // The mirror ray: on screen (self_reflection.glsl; the post pass adds the light there), else
+    // against the light's exit layer (hidden_mirror.glsl; its light added here). Either way the
+    // bounce's mirrored part is left out where the ray met a surface (no light mirrored twice),
+    // and so is the environment's reflection (o_mirror_hit -2: a hidden surface, for the post pass).
     ivec2 hit = self_reflection_hit(px, depth, P, N, V);
-    o_mirror_hit = vec4(vec2(hit), 0.0, 0.0);
-    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0),
+    vec4 hidden = hit.x >= 0 ? vec4(0.0) : hidden_mirror(P, reflect(-V, N));
+    o_mirror_hit = vec4(hidden.a > 0.0 ? vec2(-2.0) : vec2(hit), 0.0, 0.0);
+    vec3 mirrored = fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * hidden.rgb;
+    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0 || hidden.a > 0.0) + mirrored,
                      linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {

@@ -121,7 +121,8 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 #endif
 }
 
-// Where pixel px's mirror ray meets the object on screen, or -1: the lighting pass marched it for
+// Where pixel px's mirror ray meets the object on screen, or -1 (-2: it meets a surface hidden from
+// the camera, whose light the lighting pass added, hidden_mirror.glsl): the lighting pass marched it for
 // the entering texel nearest px (texel h sits at pixel h * scale, blur_texel.glsl), from that
 // texel's surface point; within a texel the pixels share it (the mirror image at the entering
 // light's resolution, half by default).
@@ -150,8 +151,9 @@ vec3 half_vector_step(vec3 P, vec3 N, vec3 H, vec2 axis) {
 // The `marble` frame at a surface pixel (normal N): the diffuse part + reflected light, the
 // highlight integrated over the pixel's normals (bx, ax, by, ay: their change to its neighbours,
 // footprint_normal_steps). Where
-// the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse),
-// not the environment behind it: the environment's reflection is left out there.
+// the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse,
+// or hidden_mirror.glsl's light in the entering light), not the environment behind it: the
+// environment's reflection is left out there.
 vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 V = vec3(0.0);
@@ -168,7 +170,7 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   vec3 H = normalize(V + L);
   vec3 hx = half_vector_step(P, N, H, vec2(1.0, 0.0)), hy = half_vector_step(P, N, H, vec2(0.0, 1.0));
   precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, bx - hx, ax - hx, by - hy, ay - hy,
-                                             hit.x >= 0 ? 0.0 : u_env_intensity);
+                                             hit.x == -1 ? u_env_intensity : 0.0);
 #if SURFACE_REUSE == 1
   o_surface_reflected = vec4(reflected, 1.0);
 #endif

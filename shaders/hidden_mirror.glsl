@@ -16,21 +16,27 @@
 //
 // The march (design, each choice stated):
 // - the ray P + t R in the light's clip space (linear in homogeneous coordinates, as the screen
-//   march's), at HIDDEN_MIRROR_STEPS points, the first one exit-layer texel out, each step
-//   HIDDEN_MIRROR_GROWTH times the last: 20 points reach 57 texels (1.55 scene units at the
-//   layer's 2.7 mm texel: the normalised mesh is 2 units across), the last step 6 texels long, so
-//   a part narrower than that in the light's view may be stepped over far from P;
-// - a point is in the stone where its light distance lies between the entry (the distance map,
-//   nearest texel) and the exit (the exit layer, nearest texel) by more than a layer texel (their
-//   point sampling and the surfaces' slope within a texel, the tolerance of session 19's
-//   visibility test); beyond the exit it is in the air behind the first part, before the entry
-//   in the air in front of it;
+//   march's), at HIDDEN_MIRROR_STEPS points spaced geometrically (the first HIDDEN_MIRROR_FIRST
+//   layer texels out, each step HIDDEN_MIRROR_GROWTH times the last): 12 points reach 58 texels
+//   of the layers (0.78 scene units at their 1.35 mm texel; the normalised mesh is 2 units
+//   across), the last step 9 texels long, so a part narrower than that in the light's view may be
+//   stepped over far from P. Against the ten reference scenes (docs/quality.md, "Twenty-second
+//   session"): reaching 0.45 units lost 0.008 on buddha-back; 1.55 or 2.4 units gained nothing;
+//   - the four texels of a 2 x 2 quad share their marches: texel k marches the k-th quarter of
+//   its own ray's points (and the point before it, for the crossing), and the quad takes the
+//   first quarter, in order along the ray, that meets something: each texel pays a quarter of the
+//   march, and the quad's rays (two full-resolution pixels apart) stand in for each other beyond
+//   the first quarter. A quarter is left out where its texel is off the object;
+// - a point is in the stone where its light distance lies between the entry and the exit of the
+//   layers' texel (nearest) by more than a layer texel (their point sampling and the surfaces'
+//   slope within a texel, the tolerance of session 19's visibility test); beyond the exit it is in
+//   the air behind the first part, before the entry in the air in front of it;
 // - a hit: the segment from the last point to this one crosses this texel's exit distance from
 //   behind (the last point farther from the light than the exit, this one nearer), this texel
 //   holds a part (entry before exit), and the segment reaches the part (this point no farther in
 //   front of the entry than the segment is long: a segment that crosses the whole slab in one
-//   step still met its exit face first). Only after the ray has been in the air (a point off the
-//   stone by a texel): P's own surface, quantised by the layer, is not a hit;
+//   step still met its exit face first). In the first quarter only after the ray has been in the
+//   air (a point off the stone by a texel): P's own surface, quantised by the layers, is not a hit;
 // - the ray stops without a hit where it is in the stone without having crossed an exit (it
 //   entered through a face toward the light or the part's side in the light's view: the bounce's
 //   mirrored part, from the light's map, holds the lit faces), where it leaves the light's map (the
@@ -57,47 +63,77 @@
 // light_distance_of, light_irradiance, light_entry_at, slab_transport, principled_entry,
 // u_mm_per_unit, u_translucency.
 
-layout(binding = UNIT_LIGHTING_LIGHT_EXIT) uniform sampler2D u_light_exit;
+layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_light_layers;  // entry, exit
 
-const int HIDDEN_MIRROR_STEPS = 20;
-const float HIDDEN_MIRROR_GROWTH = 1.1;
+const int HIDDEN_MIRROR_STEPS = 12;     // 3 per texel of the quad
+const float HIDDEN_MIRROR_FIRST = 2.0;  // layer texels
+const float HIDDEN_MIRROR_GROWTH = 1.15;
 
-// The light P's mirror ray (direction R) meets on an exit face hidden from the camera (.rgb:
-// light leaving it as light entering the stone, before the albedo; .a = 1), or vec4(0) where it
-// meets none.
-vec4 hidden_mirror(vec3 P, vec3 R) {
-  ivec2 exitSize = textureSize(u_light_exit, 0), mapSize = textureSize(u_light_distance, 0);
-  float texel = u_light_texel_world * float(mapSize.x) / float(exitSize.x);  // the layer's texel
+// What quarter k of P's mirror ray (direction R) meets (hidden_mirror_shared): .a 1 an exit face
+// (.rgb its light, as light entering the stone before the albedo), 2 the stone otherwise (a
+// face toward the light, or a part's side), 0 nothing.
+vec4 hidden_mirror_quarter(vec3 P, vec3 R, int k) {
+  ivec2 size = textureSize(u_light_layers, 0);
+  float texel = u_light_texel_world * float(textureSize(u_light_distance, 0).x) / float(size.x);
   vec4 clipP = u_light_view_proj * vec4(P, 1.0), clipR = u_light_view_proj * vec4(R, 0.0);
-  float t = texel, step = texel;
-  float lastT = 0.0, lastL = light_distance_of(P);
-  bool aired = false;  // the ray has been off the stone by a texel
-  for (int i = 0; i < HIDDEN_MIRROR_STEPS; ++i) {
+  const int PER = HIDDEN_MIRROR_STEPS / 4;
+  // Point i at t_i = first (g^(i+1) - 1) / (g - 1); this quarter's points are k PER ... k PER + PER - 1,
+  // and the one before (P itself for the first quarter).
+  float first = HIDDEN_MIRROR_FIRST * texel, g = HIDDEN_MIRROR_GROWTH;
+  float step = first * pow(g, float(k * PER));
+  float lastT = (step - first) / (g - 1.0);
+  float t = lastT + step;
+  float lastL = light_distance_of(P + lastT * R);
+  bool aired = k > 0;  // beyond the first quarter, the ray has left P's surface
+  for (int i = 0; i < PER; ++i) {
     vec4 clip = clipP + t * clipR;
     if (clip.w <= 0.0) break;  // behind the light
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) break;  // off the map
-    float exitD = texelFetch(u_light_exit, ivec2(uv * vec2(exitSize)), 0).r;
-    float entryD = texelFetch(u_light_distance, ivec2(uv * vec2(mapSize)), 0).r;
+    vec2 layers = texelFetch(u_light_layers, ivec2(uv * vec2(size)), 0).xy;
     float l = light_distance_of(P + t * R);
-    bool part = entryD < exitD;  // kNoExit and the map's "nothing hit" both read as no part
-    if (aired && part && lastL > exitD && l <= exitD && l >= entryD - (lastL - l)) {
+    bool part = layers.x < layers.y;  // LightDepthPass::kNoLayer in either: no part
+    if (aired && part && lastL > layers.y && l <= layers.y && l >= layers.x - (lastL - l)) {
       // The exit face, where the segment crosses its distance.
-      vec3 X = P + mix(lastT, t, (lastL - exitD) / max(lastL - l, 1e-9)) * R;
+      vec3 X = P + mix(lastT, t, (lastL - layers.y) / max(lastL - l, 1e-9)) * R;
       vec3 e = light_entry_at(X);
-      float s = max(exitD - e.x, 0.0);
+      float s = max(layers.y - e.x, 0.0);
       vec3 light = e.z > 0.0 ? light_irradiance(e.x) / PI * (e.y * principled_entry(e.y)) *
                                    slab_transport(s * u_mm_per_unit) * u_translucency
                              : vec3(0.0);
       return vec4(light, 1.0);
     }
-    bool stone = part && l > entryD + texel && l < exitD - texel;
-    if (aired && stone) break;  // in the stone, not through an exit face
-    aired = aired || !(part && l > entryD - texel && l < exitD + texel);
+    bool stone = part && l > layers.x + texel && l < layers.y - texel;
+    if (aired && stone) return vec4(0.0, 0.0, 0.0, 2.0);  // in the stone, not through an exit face
+    aired = aired || !(part && l > layers.x - texel && l < layers.y + texel);
     lastT = t;
     lastL = l;
-    step *= HIDDEN_MIRROR_GROWTH;
+    step *= g;
     t += step;
   }
   return vec4(0.0);
+}
+
+// The light P's mirror ray meets on an exit face hidden from the camera, shared across the 2 x 2
+// quad (.rgb: light leaving it as light entering the stone, before the albedo; .a = 1), or vec4(0)
+// where it meets none. `marches`: this texel is on the object and its screen march found nothing
+// (the quad marches where any texel of it does). Must run in uniform control flow (derivatives,
+// lighting.frag.glsl's quad_across_x/y): main() calls it before any texel returns.
+vec4 hidden_mirror_shared(bool stone, bool marches, vec3 P, vec3 R) {
+  vec4 any_ = vec4(marches ? 1.0 : 0.0);
+  any_ = max(any_, quad_across_x(any_));
+  any_ = max(any_, quad_across_y(any_));
+  int lane = (int(gl_FragCoord.x) & 1) + 2 * (int(gl_FragCoord.y) & 1);
+  vec4 mine = vec4(0.0);
+  if (any_.x > 0.0) mine = hidden_mirror_quarter(P, R, lane);  // a branch the quad takes together
+  mine = stone && !any(isnan(mine)) ? mine : vec4(0.0);
+  vec4 x = quad_across_x(mine), y = quad_across_y(mine), xy = quad_across_y(x);
+  // By quarter: quarter q is lane q's; lane ^ 1 is across x, lane ^ 2 across y, lane ^ 3 both.
+  vec4 byQuarter[4] = vec4[4](mine, x, y, xy);
+  vec4 found = vec4(0.0);
+  for (int q = 3; q >= 0; --q) {
+    vec4 v = byQuarter[q ^ lane];
+    found = v.a > 0.5 ? v : found;  // the earliest quarter that meets something wins
+  }
+  return found.a > 0.5 && found.a < 1.5 ? found : vec4(0.0);
 }

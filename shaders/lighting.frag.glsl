@@ -529,6 +529,16 @@ void main() {
     // Before any texel returns: the quad shares it (derivatives need all four in step).
     glow_rings = glow_rings_shared(stone, P_in, s_cos, N);
   }
+  // The mirror ray: on screen (self_reflection.glsl; the post pass adds the light there), else
+  // against the light's layers (hidden_mirror.glsl; its light added here), shared by the quad, so
+  // before any texel returns.
+  ivec2 hit = ivec2(-1);
+  vec4 hidden = vec4(0.0);
+  if (u_mode == MODE_MARBLE) {
+    vec3 V = normalize(u_camera_pos - P);
+    if (stone) hit = self_reflection_hit(px, depth, P, N, V);
+    hidden = hidden_mirror_shared(stone, stone && hit.x < 0, P, reflect(-V, N));
+  }
   if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass
     // paints the background colour.
@@ -543,12 +553,10 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     // Alpha: the view depth, which tells the blur's taps on this surface from others (0, the
     // cleared background, is no stone).
-    // The mirror ray: on screen (self_reflection.glsl; the post pass adds the light there), else
-    // against the light's exit layer (hidden_mirror.glsl; its light added here). Either way the
-    // bounce's mirrored part is left out where the ray met a surface (no light mirrored twice),
-    // and so is the environment's reflection (o_mirror_hit -2: a hidden surface, for the post pass).
-    ivec2 hit = self_reflection_hit(px, depth, P, N, V);
-    vec4 hidden = hit.x >= 0 ? vec4(0.0) : hidden_mirror(P, reflect(-V, N));
+    // Where the mirror ray met a surface, on screen or hidden, the bounce's mirrored part is left
+    // out (no light mirrored twice), and so is the environment's reflection (o_mirror_hit -2: a
+    // hidden surface, for the post pass).
+    if (hit.x >= 0) hidden = vec4(0.0);
     o_mirror_hit = vec4(hidden.a > 0.0 ? vec2(-2.0) : vec2(hit), 0.0, 0.0);
     vec3 mirrored = fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * hidden.rgb;
     o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0 || hidden.a > 0.0) + mirrored,

@@ -35,6 +35,7 @@ GpuMesh::GpuMesh(const Mesh& mesh)
       boundsMax_ = glm::max(boundsMax_, p);
     }
   }
+  woundInward_ = signedVolume(mesh) < 0.0;
 }
 
 void GpuMesh::draw() const {

@@ -16,6 +16,9 @@ public:
   // Object-space bounding box of the positions (for the screen passes' scissor rectangle).
   const glm::vec3& boundsMin() const { return boundsMin_; }
   const glm::vec3& boundsMax() const { return boundsMax_; }
+  // Whether the triangles enclose a negative signed volume (wound clockwise seen from outside, so
+  // their vertex normals point in): the light's layers take a surface's outside from it.
+  bool woundInward() const { return woundInward_; }
 
 private:
   gl::Buffer vertices_, indices_;
@@ -23,6 +26,7 @@ private:
   GLsizei indexCount_ = 0;
   size_t bytes_ = 0;
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
+  bool woundInward_ = false;
 };
 
 }  // namespace marble

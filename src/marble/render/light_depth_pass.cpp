@@ -28,7 +28,7 @@ gl::Texture makeMipmapped(GLenum internalFormat, int size) {
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
       program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
-      exitProgram_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_exit.frag.glsl"}}),
+      layersProgram_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}}),
       // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
       // distance with the "nothing hit" clear value would invent huge entry distances, hence
       // zero thickness and light leaking through past the terminator.
@@ -46,11 +46,14 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       bouncePosition_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceNormal_(makeMipmapped(GL_RGBA32F, bounceSize_)),
       bounceDepth_(gl::makeTexture2D(GL_DEPTH_COMPONENT32F, bounceSize_, bounceSize_, GL_NEAREST)),
-      // Nearest: a blend of an exit with "none" would be meaningless.
-      exit_(gl::makeTexture2D(GL_R32F, bounceSize_, bounceSize_, GL_NEAREST)),
+      // A quarter of the light map's size (1.35 mm texels for the reference scenes): at an eighth,
+      // the reflective shadow map's, the ten scenes' mean SSIM was 0.0002 lower (docs/quality.md,
+      // "Twenty-second session"). Nearest: a blend of an entry or exit with "none" is meaningless.
+      layersSize_(std::max(size / 4, 1)),
+      layers_(gl::makeTexture2D(GL_RG32F, layersSize_, layersSize_, GL_NEAREST)),
       fbo_(gl::Framebuffer::create()),
       bounceFbo_(gl::Framebuffer::create()),
-      exitFbo_(gl::Framebuffer::create()) {
+      layersFbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -62,7 +65,7 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
   const GLenum bounceBuffers[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(bounceFbo_.id(), 3, bounceBuffers);
   glNamedFramebufferTexture(bounceFbo_.id(), GL_DEPTH_ATTACHMENT, bounceDepth_.id(), 0);
-  glNamedFramebufferTexture(exitFbo_.id(), GL_COLOR_ATTACHMENT0, exit_.id(), 0);
+  glNamedFramebufferTexture(layersFbo_.id(), GL_COLOR_ATTACHMENT0, layers_.id(), 0);
 }
 
 void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
@@ -93,23 +96,25 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   mesh.draw();
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());
-  // The exit layer (light_exit.frag.glsl): every fragment of both faces, the nearest exit kept by
-  // MIN blending (no depth test: the nearest exit lies behind the nearest entry, which a depth test
-  // would keep instead). The blend state is put back as every other pass expects it.
-  glBindFramebuffer(GL_FRAMEBUFFER, exitFbo_.id());
+  // The entry and exit layers (light_layers.frag.glsl): every fragment of both faces, each channel
+  // keeping its nearest by MIN blending (no depth test: the nearest exit lies behind the nearest
+  // entry). The blend and depth state is put back as the mesh passes left it.
+  glBindFramebuffer(GL_FRAMEBUFFER, layersFbo_.id());
+  glViewport(0, 0, layersSize_, layersSize_);
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendEquation(GL_MIN);
-  const float none[4] = {kNoExit, 0.0f, 0.0f, 0.0f};
-  gl::clearFramebuffer(exitFbo_.id(), GL_COLOR, 0, none);
-  exitProgram_.set("u_model", model);
-  exitProgram_.set("u_view_proj", light.viewProj);
-  exitProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  exitProgram_.set("u_light_pos", light.position);
-  exitProgram_.set("u_light_dir", light.direction);
-  exitProgram_.set("u_light_directional", light.directional ? 1 : 0);
-  exitProgram_.set("u_none", kNoExit);
-  glUseProgram(exitProgram_.id());
+  const float none[4] = {kNoLayer, kNoLayer, 0.0f, 0.0f};
+  gl::clearFramebuffer(layersFbo_.id(), GL_COLOR, 0, none);
+  layersProgram_.set("u_model", model);
+  layersProgram_.set("u_view_proj", light.viewProj);
+  layersProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  layersProgram_.set("u_light_pos", light.position);
+  layersProgram_.set("u_light_dir", light.direction);
+  layersProgram_.set("u_light_directional", light.directional ? 1 : 0);
+  layersProgram_.set("u_none", kNoLayer);
+  layersProgram_.set("u_outward", mesh.woundInward() ? -1.0f : 1.0f);
+  glUseProgram(layersProgram_.id());
   mesh.draw();
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);

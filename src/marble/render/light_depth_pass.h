@@ -21,27 +21,31 @@ public:
   // texel is the w-weighted mean of the texels under it.
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
-  // At the same size, the distance from the light to the nearest surface facing away from it (R32F,
-  // nearest; kNoExit where there is none): where the light leaves the first part it meets
-  // (light_exit.frag.glsl), for the hidden mirror image (hidden_mirror.glsl).
-  GLuint exitTexture() const { return exit_.id(); }
-  static constexpr float kNoExit = 1e30f;
+  // At a quarter of the size, the distance from the light to the nearest surface facing it and to
+  // the nearest facing away (RG32F, nearest; kNoLayer where there is none): where the light enters
+  // and leaves the first part it meets (light_layers.frag.glsl), for the hidden mirror image
+  // (hidden_mirror.glsl).
+  GLuint layersTexture() const { return layers_.id(); }
+  static constexpr float kNoLayer = 1e30f;
   int size() const { return size_; }
   int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest width
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
-  // mipmaps a third more) + depth 4 and the exit 4 at its own size.
+  // mipmaps a third more) + depth 4 at its own size; the layers 8 at theirs.
   size_t bytes() const {
-    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (8 + 32 * 4 / 3);
+    return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3) +
+           static_cast<size_t>(layersSize_) * layersSize_ * 8;
   }
   PassTimer& timer() { return timer_; }
 
 private:
   int size_;
-  gl::Program program_, exitProgram_;
+  gl::Program program_, layersProgram_;
   gl::Texture distance_, depth_;
   int bounceSize_;
-  gl::Texture bouncePosition_, bounceNormal_, bounceDepth_, exit_;
-  gl::Framebuffer fbo_, bounceFbo_, exitFbo_;
+  gl::Texture bouncePosition_, bounceNormal_, bounceDepth_;
+  int layersSize_;
+  gl::Texture layers_;
+  gl::Framebuffer fbo_, bounceFbo_, layersFbo_;
   PassTimer timer_;
 };
 

@@ -77,7 +77,7 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   glBindTextures(shader::UNIT_LIGHTING_ALBEDO, 5, textures);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, in.bounce);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_ENTRY, in.bounceEntry);
-  glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_EXIT, in.lightExit);
+  glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_LAYERS, in.lightLayers);
   const int envKind = environmentKind(settings, environment);
   const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
     return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));

@@ -23,7 +23,7 @@ struct LightingInputs {
   GLuint bounce;    // `marble`: the bounce pass's gather, all bounces (BouncePass)
   BounceGridLayout bounceGrid;  // and where it holds its grids
   GLuint bounceEntry;  // `marble`: the first bounce at the light's entries (BouncePass)
-  GLuint lightExit;    // `marble`: where the light leaves the first part it meets (LightDepthPass)
+  GLuint lightLayers;  // `marble`: where the light enters and leaves the first part it meets (LightDepthPass)
 };
 
 class LightingPass {

@@ -330,7 +330,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
                             passes_->bounce.bounceTexture(),
                             passes_->bounce.gridLayout(),
                             passes_->bounce.entryTexture(),
-                            passes_->lightDepth.exitTexture()};
+                            passes_->lightDepth.layersTexture()};
     // The blur's depth only in `marble`: other modes do not resize it, so at scale 1 it may still
     // name the G-buffer depth of an earlier frame size, deleted since (0 detaches).
     passes_->lighting.resize(width, height, scale, passes_->geometry.depthTexture(),

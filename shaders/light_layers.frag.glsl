@@ -1,0 +1,35 @@
+#version 450 core
+// The light's entry and exit layers (LightDepthPass's third draw, at a quarter of the light map's
+// size): per texel, the distance from the light to the nearest surface facing it (x: where the
+// light's ray enters the first part it meets) and to the nearest facing away (y: where it leaves
+// that part). A point on the ray between the two lies in the stone, one beyond the exit in the
+// air behind the first part, which one depth layer cannot tell from stone (docs/quality.md,
+// "Nineteenth session"). Read by the hidden mirror image (hidden_mirror.glsl): the exit faces
+// are, for a light behind the object, the glowing sides of its parts that face the camera, which
+// a mirror ray meets behind the part in front of them. Both in one texture, so that each step of
+// its march reads one texel. Drawn with both faces, no depth test and MIN blending
+// (LightDepthPass), so each channel keeps its nearest.
+// Facing is the triangle's own, its outside the interpolated normal's (session 20's layers,
+// commit 435f961/c781c4b): the interpolated normal alone turns away from the light over the last
+// triangles before the light's silhouette, which then counted as exits right behind their own
+// entry. A mesh wound inward (the teapot of the reference scenes: its normals, computed from the
+// winding, point in) is turned by its signed volume's sign (GpuMesh::woundInward); without it its
+// exits lay before its entries and no stone was found anywhere. A mesh wound both ways is not.
+in vec3 v_world_pos;
+in vec3 v_world_normal;
+uniform vec3 u_light_pos;       // point light: its position
+uniform vec3 u_light_dir;       // directional light: unit vector the light travels along
+uniform int u_light_directional;
+uniform float u_none;           // "no such surface" (the clear value)
+uniform float u_outward;        // -1 where the mesh is wound inward (its normals point in), else 1
+layout(location = 0) out vec2 o_entry_exit;
+
+void main() {
+  vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
+  float d = u_light_directional == 1 ? dot(v_world_pos, u_light_dir) : distance(v_world_pos, u_light_pos);
+  // The triangle's own normal (its plane's derivatives), turned to the outside the interpolated
+  // normal points to.
+  vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));
+  bool facing = u_outward * dot(ng, v_world_normal) * dot(ng, toLight) >= 0.0;
+  o_entry_exit = vec2(d, facing ? u_none : d);
+}

@@ -26,7 +26,8 @@ uniform float u_ior;         // the emitters' Fresnel F0 (the mirrored part's Fr
 // normal N), before P's own albedo and entry; with it, over P's albedo, the bounce's light that P's
 // specular layer mirrors toward the camera (bounce.glsl, since session 10), times `mirrored`: 0
 // where P's mirror ray meets a surface the camera sees, whose light the post pass mirrors instead
-// (self_reflection.glsl; the same light counted once), else 1.
+// (self_reflection.glsl), or an exit face hidden from it (hidden_mirror.glsl; the same light counted
+// once), else 1.
 vec3 marble_bounce(vec3 P, vec3 N, ivec2 px, float mirrored) {
   // rgb: the emitters' albedo and Fresnel factors already applied (bounce_merge.glsl). From the
   // refined grid where its texel at or just before px (the first of the four the upsample reads)

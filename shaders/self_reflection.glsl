@@ -30,7 +30,9 @@
 //   the view's cosine (Smith's masking takes under 2 % off up to 85 degrees at that alpha,
 //   bounce.glsl). Rougher stones blur their reflection; this keeps it sharp;
 // - only what the camera sees (screen space): parts hidden behind others or facing away are not
-//   mirrored here (the bounce's mirrored part, from the light's map, stands in for them);
+//   mirrored here; where this march finds nothing, the lighting pass marches the ray again against
+//   the light's entry and exit layers for the glowing exit faces behind a part (hidden_mirror.glsl,
+//   since session 22), and the bounce's mirrored part, from the light's map, stands in for the rest;
 // - the radiance leaving the hit is its diffuse part, the blurred entering light there
 //   (its nearest blur texel), times P's albedo (applied with P's own light by the post pass), not the
 //   hit's: exact for a flat stone, off by the veins' contrast on a veined one (the bounce's

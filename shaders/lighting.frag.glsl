@@ -537,7 +537,11 @@ void main() {
   if (u_mode == MODE_MARBLE) {
     vec3 V = normalize(u_camera_pos - P);
     if (stone) hit = self_reflection_hit(px, depth, P, N, V);
-    hidden = hidden_mirror_shared(stone, stone && hit.x < 0, P, reflect(-V, N));
+    // Only a ray that comes nearer the light can cross an exit face from behind it: the distance
+    // to a point light along a ray is convex in t (along a directional light's travel, linear), so
+    // where it grows at P (R.L <= 0) it grows all the way, and the march is skipped, exactly.
+    vec3 R = reflect(-V, N);
+    hidden = hidden_mirror_shared(stone, stone && hit.x < 0 && dot(R, light_vector(P)) > 0.0, P, R);
   }
   if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass

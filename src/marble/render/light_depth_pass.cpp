@@ -28,7 +28,7 @@ gl::Texture makeMipmapped(GLenum internalFormat, int size) {
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
       program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
-      layersProgram_(shaders, {{GL_VERTEX_SHADER, "light_layers.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}}),
+      layersProgram_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}}),
       // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
       // distance with the "nothing hit" clear value would invent huge entry distances, hence
       // zero thickness and light leaking through past the terminator.

@@ -2,8 +2,8 @@
 // The light's entry and exit layers (LightDepthPass's third draw, at a quarter of the light map's
 // size): per texel, the distance from the light to the nearest surface (x: where the light's ray
 // enters the first part it meets; of either facing, as the light's distance map, so that a
-// grazing or wrongly wound triangle in front is never skipped: on the ten scenes the same to
-// 0.0001 as the nearest surface facing the light) and to the nearest facing away (y: where it
+// grazing or wrongly wound triangle in front is never skipped; dragon-back's and buddha-back's
+// SSIM the same to the digit as with the nearest surface facing the light) and to the nearest facing away (y: where it
 // leaves that part). A point on the ray between the two lies in the stone, one beyond the exit in the
 // air behind the first part, which one depth layer cannot tell from stone (docs/quality.md,
 // "Nineteenth session"). Read by the hidden mirror image (hidden_mirror.glsl): the exit faces

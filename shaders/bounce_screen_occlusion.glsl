@@ -1,0 +1,46 @@
+// The camera-side bounce's occlusion near the receiver (session 22): a sample of the one bounce
+// (bounce.glsl, bounce_sample) brings nothing where the first eighth of its way from the receiver
+// to the emitter passes just behind a surface the camera sees, i.e. runs into stone. One point of
+// the segment tested against the camera's depth buffer, as screen-space directional occlusion does
+// for its sample directions (Ritschel, Grosch & Seidel 2009, "Approximating dynamic global
+// illumination in image space"); the reflective shadow map itself has no visibility.
+// Why: in the side-lit statues' shade the bounce was 1.6-1.9 x Cycles' indirect light (buddha-side's
+// darkest band of Cycles' display luma, against the averaged references), light gathered from lit
+// surfaces whose way to the shaded side runs into the stone first (the robe's folds, the far side of
+// the body seen edge-on); docs/quality.md, "Twenty-second session: the side-lit shade against the
+// averaged references".
+// Approximations, each stated:
+// - one point, at BOUNCE_OCCLUSION_AT of the segment from the receiver: the stone next to the
+//   receiver (a fold's wall, the body beyond an edge) is caught, a wall halfway to the emitter is
+//   not (session 19's and 20's tests through the light's layers caught it, and removed the light
+//   through the back-lit dragon's coils that stands in for its missing glow: dragon-back -0.012 to
+//   -0.031). Measured over the ten reference scenes at 1/20, 1/10, 1/8, 3/20, 7/40, 1/5 of the
+//   segment and at fixed 3-12 % of the object's size: 1/8 the best (docs/quality.md);
+// - "just behind" is BOUNCE_OCCLUSION_DEPTH in world units (the object is normalized to 2 units
+//   across, so 4 % of its size): the surface the camera sees in front of the point is taken to be
+//   at least that thick (screen-space occlusion's usual thickness assumption). Further behind, the
+//   point is taken to be in the air behind a part in front (a coil before another), not in stone;
+// - a point the camera cannot place (off screen, or over the background) is not occluded;
+// - tolerance two light-map texels (u_light_texel_world) against the depth buffer's own error;
+// - view-dependent: only the camera-side gathers test it (bounce_gather.frag.glsl,
+//   bounce_refine_gather.comp.glsl); the light-side entries (bounce_entry.frag.glsl) have no
+//   camera and keep the bounce without it.
+// Needs from the includer: deferred_common.glsl (surface_point, u_view_proj, u_camera_pos,
+// u_light_texel_world) and the G-buffer's depth bound as u_depth.
+
+const float BOUNCE_OCCLUSION_AT = 0.125;    // of the receiver -> emitter segment
+const float BOUNCE_OCCLUSION_DEPTH = 0.08;  // world units behind the seen surface that count as stone
+
+// True where the point BOUNCE_OCCLUSION_AT of the way from the receiver P to the emitter xp lies
+// behind the surface the camera sees there by more than the tolerance and less than
+// BOUNCE_OCCLUSION_DEPTH.
+bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
+  vec3 Q = mix(P, xp, BOUNCE_OCCLUSION_AT);
+  vec4 clip = u_view_proj * vec4(Q, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
+  float depth = textureLod(u_depth, uv, 0.0).r;
+  if (depth >= 1.0) return false;
+  float behind = distance(Q, u_camera_pos) - distance(surface_point(uv, depth), u_camera_pos);
+  return behind > 2.0 * u_light_texel_world && behind < BOUNCE_OCCLUSION_DEPTH;
+}

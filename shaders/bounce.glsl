@@ -18,7 +18,9 @@
 // - no visibility between emitter and receiver (RSM's own): light can bounce through the stone
 //   between two parts that cannot see each other; the cosines already drop every emitter behind
 //   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
-//   receives none;
+//   receives none. Since session 22 the camera-side gathers (which define BOUNCE_SCREEN_OCCLUSION
+//   and include bounce_screen_occlusion.glsl first) drop a sample whose way runs into stone next to
+//   the receiver, one point tested against the camera's depth buffer;
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
@@ -116,6 +118,11 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   float cosP = dot(np, d);  // x |d|
   float cosX = -dot(N, d);  // x |d|
   if (cosP <= 0.0 || cosX <= 0.0) return vec4(0.0);
+#ifdef BOUNCE_SCREEN_OCCLUSION
+  // The camera-side gathers: no light whose way runs into the stone next to the receiver
+  // (bounce_screen_occlusion.glsl); after the cosines, so only samples that would bring light test it.
+  if (bounce_occluded_near_receiver(P, xp)) return vec4(0.0);
+#endif
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

@@ -51,6 +51,7 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
+#include "bounce_screen_occlusion.glsl"  // the first bounce's occlusion next to the receiver, for these samples too
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_bounce;  // the first bounce, evened out
 uniform int u_scale;         // full-resolution pixels per texel of this draw: twice the first bounce's
 uniform int u_bounce_scale;  // and of the first bounce's (u_bounce)
@@ -126,6 +127,9 @@ void main() {
       float cosS = dot(Ns, d);   // x |d|
       float cosP = -dot(N, d);   // x |d|
       if (cosS <= 0.0 || cosP <= 0.0) continue;  // first: most samples stop here, before two more reads
+      // No light (and no view factor for the series) whose way runs into the stone next to the
+      // receiver: the first bounce's test (bounce_screen_occlusion.glsl; session 22).
+      if (bounce_occluded_near_receiver(P, Ps)) continue;
       ivec2 ts = min((ps + u_bounce_scale / 2) / u_bounce_scale, size - 1);  // the nearest texel of the first bounce
       vec4 b = texelFetch(u_bounce, ts, 0);
       if (b.a < 0.0) continue;

@@ -11,10 +11,13 @@
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
 #include "rotation.glsl"
+layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
+// The bounce's occlusion near the receiver against this depth (camera-side gathers only).
+#define BOUNCE_SCREEN_OCCLUSION
+#include "bounce_screen_occlusion.glsl"
 #include "bounce.glsl"
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
-layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 uniform int u_scale;  // full-resolution pixels per texel of this pass
 // rgb: the gathered bounce per unit of the light's radiance (irradiance / PI: diffuse before the
 // emitters' albedo, glossy in two parts before the Fresnel factor; bounce.glsl); a: the radiance

@@ -9,11 +9,14 @@
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
 #include "rotation.glsl"
+layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
+// The bounce's occlusion near the receiver against this depth (camera-side gathers only).
+#define BOUNCE_SCREEN_OCCLUSION
+#include "bounce_screen_occlusion.glsl"
 #include "bounce.glsl"
 
 layout(local_size_x = BOUNCE_REFINE_GROUP) in;
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
-layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 #include "bounce_refine_list.glsl"
 layout(binding = IMAGE_BOUNCE_REFINED_FIRST, rgba16f) uniform writeonly image2D u_refined_first;
 uniform int u_scale;  // full-resolution pixels per texel of the refined grid

@@ -1,0 +1,62 @@
+// The camera-side bounce's occlusion near the receiver (session 22): a sample of the one bounce
+// (bounce.glsl, bounce_sample; and of the further bounces, bounce_further.frag.glsl) brings nothing where the first eighth of its way from the receiver
+// to the emitter passes just behind a surface the camera sees, i.e. runs into stone. One point of
+// the segment tested against the camera's depth buffer, as screen-space directional occlusion does
+// for its sample directions (Ritschel, Grosch & Seidel 2009, "Approximating dynamic global
+// illumination in image space"); the reflective shadow map itself has no visibility.
+// Why: in the side-lit statues' shade the bounce was 1.6-1.9 x Cycles' indirect light (buddha-side's
+// darkest band of Cycles' display luma, against the averaged references), light gathered from lit
+// surfaces whose way to the shaded side runs into the stone first (the robe's folds, the far side of
+// the body seen edge-on); docs/quality.md, "Twenty-second session: the side-lit shade against the
+// averaged references".
+// Approximations, each stated:
+// - one point, at BOUNCE_OCCLUSION_AT of the segment from the receiver: the stone next to the
+//   receiver (a fold's wall, the body beyond an edge) is caught, a wall halfway to the emitter is
+//   not (session 19's and 20's tests through the light's layers caught it, and removed the light
+//   through the back-lit dragon's coils that stands in for its missing glow: dragon-back -0.012 to
+//   -0.031). Measured on dragon-side, buddha-side, dragon-back and buddha-front at 1/20, 1/10, 1/8,
+//   3/20, 7/40 and 1/5 of the segment and at fixed 1.5-6 % of the object's size, then over all ten
+//   reference scenes: 1/8 the best (buddha-side +0.012, the ten scenes' mean +0.0019, none down by
+//   more than 0.0005; docs/quality.md);
+// - a point within BOUNCE_OCCLUSION_NEAR tolerances of the receiver is not tested (the inner rings'
+//   ways, whose eighth hardly leaves the receiver: the surface seen there is the receiver's own,
+//   and at a grazing view its slope across the pixel could pass for stone). At 2, 4 and 8 the four
+//   scenes above moved by at most 0.0006, 4 the best; it saves no instructions on llvmpipe (the
+//   lanes of a draw take both ways);
+// - "just behind" is BOUNCE_OCCLUSION_DEPTH in world units (the object is normalized to 2 units
+//   across, so 4 % of its size): the surface the camera sees in front of the point is taken to be
+//   at least that thick (screen-space occlusion's usual thickness assumption). Further behind, the
+//   point is taken to be in the air behind a part in front (a coil before another), not in stone;
+// - a point the camera cannot place (off screen, or over the background) is not occluded;
+// - tolerance two light-map texels (u_light_texel_world) against the depth buffer's own error;
+// - view-dependent: only the camera-side gathers test it (bounce_gather.frag.glsl,
+//   bounce_refine_gather.comp.glsl, and the further bounces' bounce_further.frag.glsl, whose
+//   emitters are surfaces the camera sees); the light-side entries (bounce_entry.frag.glsl) have no
+//   camera and keep the bounce without it.
+// Needs from the includer: deferred_common.glsl (surface_point, u_view_proj, u_camera_pos,
+// u_light_texel_world) and the G-buffer's depth bound as u_depth.
+
+const float BOUNCE_OCCLUSION_AT = 0.125;    // of the receiver -> emitter segment
+const float BOUNCE_OCCLUSION_DEPTH = 0.08;  // world units behind the seen surface that count as stone
+const float BOUNCE_OCCLUSION_NEAR = 4.0;    // tolerances: a point nearer the receiver is not tested
+
+// True where the point BOUNCE_OCCLUSION_AT of the way from the receiver P to the emitter xp lies
+// behind the surface the camera sees there by more than the tolerance and less than
+// BOUNCE_OCCLUSION_DEPTH.
+bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
+  vec3 Q = mix(P, xp, BOUNCE_OCCLUSION_AT);
+  float tol = 2.0 * u_light_texel_world;
+  vec3 PQ = Q - P;
+  if (dot(PQ, PQ) < BOUNCE_OCCLUSION_NEAR * BOUNCE_OCCLUSION_NEAR * tol * tol) return false;
+  vec4 clip = u_view_proj * vec4(Q, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
+  float depth = textureLod(u_depth, uv, 0.0).r;  // the nearest pixel: the G-buffer's depth is GL_NEAREST
+  if (depth >= 1.0) return false;
+  // Depths along the camera's axis (clip w), the seen surface's from the inverse's w row alone
+  // (surface_point's w: 1 / clip w): under 7 % off the distances along the ray at the frame's corners.
+  vec4 ndc = vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
+  float seenW = 1.0 / dot(vec4(u_inv_view_proj[0][3], u_inv_view_proj[1][3], u_inv_view_proj[2][3], u_inv_view_proj[3][3]), ndc);
+  float behind = clip.w - seenW;
+  return behind > tol && behind < BOUNCE_OCCLUSION_DEPTH;
+}

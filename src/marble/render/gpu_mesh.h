@@ -1,6 +1,7 @@
 #pragma once
 // A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer.
 #include "marble/gl/handles.h"
+#include "marble/mesh/closed_surface.h"
 #include "marble/mesh/mesh.h"
 
 namespace marble {
@@ -16,6 +17,8 @@ public:
   // Object-space bounding box of the positions (for the screen passes' scissor rectangle).
   const glm::vec3& boundsMin() const { return boundsMin_; }
   const glm::vec3& boundsMax() const { return boundsMax_; }
+  // Whether the triangles bound a solid, and their sense (for the camera's face culling).
+  SurfaceWinding winding() const { return winding_; }
 
 private:
   gl::Buffer vertices_, indices_;
@@ -23,6 +26,7 @@ private:
   GLsizei indexCount_ = 0;
   size_t bytes_ = 0;
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
+  SurfaceWinding winding_ = SurfaceWinding::Open;
 };
 
 }  // namespace marble

@@ -1,0 +1,30 @@
+#pragma once
+// Which faces of a mesh the camera's depth test would always discard, so that the geometry pass
+// need not draw them (GL face culling). On llvmpipe a triangle costs its setup and binning and a
+// 4x4 block of fragment shading per block it touches, whether or not the depth test keeps any
+// fragment: the dragon's 100,000 triangles are half turned away from any eye, and culling them
+// took 113 M instructions off the 252.5 M geometry pass of its 800^2 camera frame
+// (docs/performance.md, "Twenty-second session: ... s22-cost").
+//
+// Safe where the first surface along every camera ray is a face turned toward the eye: a closed
+// surface (mesh/closed_surface.h) and an eye outside it -- every corner of the mesh's bounding
+// box beyond the near plane, so the eye is outside the box and the near plane cuts nothing open
+// (through a cut, or a hole, the far side's inner faces are seen). Not exact in two corner cases,
+// both within the decimated scans' folds: a pixel whose two nearest fragments have the same depth
+// (GL_LESS keeps the one drawn first, which may be a turned-away face), and a fold turned inside
+// out, whose region of winding number -1 a ray can meet before any outward face.
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "marble/mesh/closed_surface.h"
+
+namespace marble {
+
+// GL_BACK or GL_FRONT: the faces no camera ray meets first, for the mesh drawn with modelViewProj
+// (its winding, its object-space bounding box); GL_NONE where both may be seen. The faces' sense on
+// screen follows the sign of modelViewProj's determinant (a projective map's Jacobian is
+// det(M) / w^4), so a mirroring model matrix or projection is allowed for.
+GLenum facesHiddenFromCamera(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
+                             const glm::vec3& boundsMax);
+
+}  // namespace marble

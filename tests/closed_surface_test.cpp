@@ -1,6 +1,9 @@
 // closedSurfaceWinding (mesh/closed_surface.h): what lets the camera's pass cull the faces turned
 // away from it (render/face_culling.h), so every way a mesh can fail to bound a solid one way
 // round must come out Open.
+// Negative controls (by hand, session 22): without the parts' volume-sign test,
+// PartsWoundDifferentWaysOpenIt fails; with an edge accepted where its reverse exists at all (not
+// exactly once each way), AnEdgeOfFourTrianglesOpensIt fails.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,6 +77,18 @@ TEST(ClosedSurface, AnEdgeOfThreeTrianglesOpensIt) {
   cube.positions.push_back(glm::vec3(3, 3, 3));
   const auto tip = static_cast<uint32_t>(cube.positions.size() - 1);
   cube.indices.insert(cube.indices.end(), {cube.indices[0], cube.indices[1], tip});
+  EXPECT_EQ(closedSurfaceWinding(cube), SurfaceWinding::Open);
+}
+
+TEST(ClosedSurface, AnEdgeOfFourTrianglesOpensIt) {
+  // A fin of two triangles wound against each other on an edge of the cube: every edge is used as
+  // often each way, but the cube's edge four times. Taken as Open (only two triangles an edge are
+  // accepted), though the fin alone, of no volume, would not break the culling's argument.
+  Mesh cube = builtinMesh("cube");
+  cube.positions.push_back(glm::vec3(3, 3, 3));
+  const auto tip = static_cast<uint32_t>(cube.positions.size() - 1);
+  const uint32_t a = cube.indices[0], b = cube.indices[1];
+  cube.indices.insert(cube.indices.end(), {a, b, tip, b, a, tip});
   EXPECT_EQ(closedSurfaceWinding(cube), SurfaceWinding::Open);
 }
 

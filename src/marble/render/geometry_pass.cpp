@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "marble/gl/checked_calls.h"
+#include "marble/render/face_culling.h"
 
 namespace marble {
 
@@ -48,7 +49,15 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   program_.set("u_camera_position", camera.position);
   program_.set("u_valid_reflection", validReflection ? 1 : 0);
   glUseProgram(program_.id());
+  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromCamera(mesh.winding(), camera.viewProj * model,
+                                                                  mesh.boundsMin(), mesh.boundsMax())
+                                          : GLenum{GL_NONE};
+  if (hidden != GL_NONE) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(hidden);  // glFrontFace stays GL's default, counter-clockwise
+  }
   mesh.draw();
+  glDisable(GL_CULL_FACE);  // the other passes' state (gl::set*PassState) assumes it off
   timer_.end();
 }
 

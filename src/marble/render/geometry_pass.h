@@ -19,7 +19,10 @@ public:
   void resize(int width, int height);
   // validReflection: also store the normal bent by Cycles' valid-reflection rule
   // (shaders/valid_reflection.glsl), for `marble` mode, whose Principled reference applies it.
+  // The faces no camera ray meets first are not drawn (render/face_culling.h) unless switched off.
   void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera, bool validReflection);
+  // For tests: whether hidden faces are culled (on by default).
+  void setCullsHiddenFaces(bool on) { cullsHiddenFaces_ = on; }
   GLuint normalTexture() const { return normal_.id(); }
   // The normal for the reflection terms: the bent one where the last run stored it, else the normal.
   GLuint specularNormalTexture() const { return validReflection_ ? specularNormal_.id() : normal_.id(); }
@@ -34,6 +37,7 @@ private:
   int width_ = 0, height_ = 0;
   bool validReflection_ = false;
   bool drawBuffersSet_ = false;  // fbo_'s draw buffers match validReflection_
+  bool cullsHiddenFaces_ = true;
   PassTimer timer_;
 };
 

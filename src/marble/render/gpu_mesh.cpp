@@ -28,6 +28,7 @@ GpuMesh::GpuMesh(const Mesh& mesh)
   glVertexArrayAttribBinding(vao_.id(), 0, 0);
   glVertexArrayAttribBinding(vao_.id(), 1, 0);
   indexCount_ = static_cast<GLsizei>(mesh.indices.size());
+  winding_ = closedSurfaceWinding(mesh);
   if (!mesh.positions.empty()) {
     boundsMin_ = boundsMax_ = mesh.positions.front();
     for (const glm::vec3& p : mesh.positions) {

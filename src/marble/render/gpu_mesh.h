@@ -1,6 +1,7 @@
 #pragma once
 // A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer.
 #include "marble/gl/handles.h"
+#include "marble/mesh/closed_surface.h"
 #include "marble/mesh/mesh.h"
 
 namespace marble {
@@ -17,8 +18,11 @@ public:
   const glm::vec3& boundsMin() const { return boundsMin_; }
   const glm::vec3& boundsMax() const { return boundsMax_; }
   // Whether the triangles enclose a negative signed volume (wound clockwise seen from outside, so
-  // their vertex normals point in): the light's layers take a surface's outside from it.
+  // their vertex normals point in): the light's layers take a surface's outside from it. Defined
+  // for open meshes too (the teapot), where winding() says Open.
   bool woundInward() const { return woundInward_; }
+  // Whether the triangles bound a solid, and their sense (for the camera's face culling).
+  SurfaceWinding winding() const { return winding_; }
 
 private:
   gl::Buffer vertices_, indices_;
@@ -27,6 +31,7 @@ private:
   size_t bytes_ = 0;
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
   bool woundInward_ = false;
+  SurfaceWinding winding_ = SurfaceWinding::Open;
 };
 
 }  // namespace marble

@@ -480,6 +480,10 @@ void Renderer::setBounceSkipsBackground(bool on) {
   passes_->bounce.setSkipsBackground(on);
   invalidate();
 }
+void Renderer::setGeometryCullsHiddenFaces(bool on) {
+  passes_->geometry.setCullsHiddenFaces(on);
+  invalidate();
+}
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +

@@ -130,6 +130,9 @@ public:
   // For tests: whether the `marble` bounce pass's draws skip the background by the depth test
   // (BouncePass::setSkipsBackground; on by default).
   void setBounceSkipsBackground(bool on);
+  // For tests: whether the geometry pass culls the faces no camera ray meets first
+  // (GeometryPass::setCullsHiddenFaces; on by default).
+  void setGeometryCullsHiddenFaces(bool on);
 
   // Whether a target that holds frame `shown` (render()'s token; the caller keeps it with its
   // target) still holds what render() would draw now: `shown` is the last frame drawn, of this

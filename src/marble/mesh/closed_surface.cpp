@@ -1,0 +1,77 @@
+#include "marble/mesh/closed_surface.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
+#include "marble/mesh/point_ids.h"
+
+namespace marble {
+namespace {
+
+// Union-find over points, for the mesh's connected parts.
+uint32_t root(std::vector<uint32_t>& parent, uint32_t p) {
+  while (parent[p] != p) p = parent[p] = parent[parent[p]];
+  return p;
+}
+
+}  // namespace
+
+SurfaceWinding closedSurfaceWinding(const Mesh& mesh) {
+  const size_t n = mesh.positions.size();
+  const size_t triangles = mesh.triangleCount();
+  if (triangles == 0) return SurfaceWinding::Open;
+  for (uint32_t v : mesh.indices)
+    if (v >= n) return SurfaceWinding::Open;
+  const std::vector<uint32_t> point = pointIds(mesh.positions);
+  // The edges leaving each point, grouped by point (a point has a handful: grouping by counts took
+  // half the time of sorting the edges, 10 ms on the dragon's 100,000 triangles).
+  std::vector<uint32_t> first(n + 1, 0);
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t* v = &mesh.indices[3 * t];
+    const uint32_t a = point[v[0]], b = point[v[1]], c = point[v[2]];
+    if (a == b || b == c || c == a) continue;  // no area: no fragment, no crossing
+    ++first[a + 1], ++first[b + 1], ++first[c + 1];
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<uint32_t> to(3 * triangles), fill(first.begin(), first.end() - 1);
+  std::vector<uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t* v = &mesh.indices[3 * t];
+    const uint32_t a = point[v[0]], b = point[v[1]], c = point[v[2]];
+    if (a == b || b == c || c == a) continue;
+    to[fill[a]++] = b, to[fill[b]++] = c, to[fill[c]++] = a;
+    parent[root(parent, b)] = root(parent, a);
+    parent[root(parent, c)] = root(parent, a);
+  }
+  // Each edge used as often one way as the other (a surface without boundary: its triangles'
+  // windings cancel along every edge). Two triangles an edge, wound against each other, is the
+  // common case; simplified copies also have edges of four where two parts touch (the dragon's
+  // light proxy: 98 of them), which leave the winding number as defined.
+  const auto uses = [&](uint32_t from, uint32_t target) {
+    return std::count(to.begin() + first[from], to.begin() + first[from + 1], target);
+  };
+  for (uint32_t a = 0; a < n; ++a)
+    for (uint32_t i = first[a]; i < first[a + 1]; ++i)
+      if (uses(a, to[i]) != uses(to[i], a)) return SurfaceWinding::Open;
+  // Each part's signed volume (the divergence theorem, as signedVolume), summed at its root point.
+  std::vector<double> volume(n, 0.0);
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t* v = &mesh.indices[3 * t];
+    if (point[v[0]] == point[v[1]] || point[v[1]] == point[v[2]] || point[v[2]] == point[v[0]]) continue;
+    const glm::dvec3 pa(mesh.positions[v[0]]), pb(mesh.positions[v[1]]), pc(mesh.positions[v[2]]);
+    volume[root(parent, point[v[0]])] += glm::dot(pa, glm::cross(pb, pc));
+  }
+  bool anyPositive = false, anyNegative = false, anyZero = false;
+  for (uint32_t p = 0; p < n; ++p) {
+    if (first[p] == first[p + 1] || root(parent, p) != p) continue;  // no edge leaves it, or not a part's root
+    anyPositive |= volume[p] > 0.0;
+    anyNegative |= volume[p] < 0.0;
+    anyZero |= volume[p] == 0.0;
+  }
+  if (anyZero || (anyPositive && anyNegative)) return SurfaceWinding::Open;
+  return anyPositive ? SurfaceWinding::Outward : SurfaceWinding::Inward;
+}
+
+}  // namespace marble

@@ -1,0 +1,31 @@
+#pragma once
+// Which faces of a mesh the camera's depth test would always discard, so that the geometry pass
+// need not draw them (GL face culling). On llvmpipe a triangle costs its setup and binning and a
+// 4x4 block of fragment shading per block it touches, whether or not the depth test keeps any
+// fragment: the dragon's 100,000 triangles are half turned away from any eye, and culling them
+// took 113 M instructions off the 252.5 M geometry pass of its 800^2 camera frame
+// (docs/performance.md, "Twenty-second session: ... s22-cost").
+//
+// Safe where the first surface along every camera ray is a face turned toward the eye: a closed
+// surface (mesh/closed_surface.h) and an eye outside it -- every corner of the mesh's bounding
+// box beyond the near plane, so the eye is outside the box and the near plane cuts nothing open
+// (through a cut, or a hole, the far side's inner faces are seen). Not exact in two corner cases:
+// a pixel whose two nearest fragments have the same depth (mostly on silhouettes, where a facing
+// and a turned-away face meet: GL_LESS kept the one drawn first, now the facing one; 4 of the
+// dragon's 146,704 pixels at 800^2), and a fold turned inside out, whose region of winding
+// number -1 a ray could meet before any outward face (none seen in the reference views).
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "marble/mesh/closed_surface.h"
+
+namespace marble {
+
+// GL_BACK or GL_FRONT: the faces no camera ray meets first, for the mesh drawn with modelViewProj
+// (its winding, its object-space bounding box); GL_NONE where both may be seen. The faces' sense on
+// screen follows the sign of modelViewProj's determinant (a projective map's Jacobian is
+// det(M) / w^4), so a mirroring model matrix or projection is allowed for.
+GLenum facesHiddenFromCamera(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
+                             const glm::vec3& boundsMax);
+
+}  // namespace marble

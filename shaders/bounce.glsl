@@ -45,7 +45,6 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
-#include "bounce_through_stone.glsl"
 
 // Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
 // width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
@@ -124,8 +123,6 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   // (bounce_screen_occlusion.glsl); after the cosines, so only samples that would bring light test it.
   if (bounce_occluded_near_receiver(P, xp)) return vec4(0.0);
 #endif
-  // No light through the first part the light meets (bounce_through_stone.glsl).
-  if (bounce_crosses_stone(P, xp)) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

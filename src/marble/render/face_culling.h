@@ -1,6 +1,8 @@
 #pragma once
 // Which faces of a mesh the camera's depth test would always discard, so that the geometry pass
-// need not draw them (GL face culling). On llvmpipe a triangle costs its setup and binning and a
+// need not draw them (GL face culling); the same for the light, whose depth map and reflective
+// shadow map keep the nearest surface too (LightDepthPass; the eye is then the light: a point
+// light's perspective, or a directional light's orthographic box, whose eye is at infinity). On llvmpipe a triangle costs its setup and binning and a
 // 4x4 block of fragment shading per block it touches, whether or not the depth test keeps any
 // fragment: the dragon's 100,000 triangles are half turned away from any eye, and culling them
 // took 113 M instructions off the 252.5 M geometry pass of its 800^2 camera frame
@@ -21,11 +23,11 @@
 
 namespace marble {
 
-// GL_BACK or GL_FRONT: the faces no camera ray meets first, for the mesh drawn with modelViewProj
+// GL_BACK or GL_FRONT: the faces no ray from the eye meets first, for the mesh drawn with modelViewProj
 // (its winding, its object-space bounding box); GL_NONE where both may be seen. The faces' sense on
 // screen follows the sign of modelViewProj's determinant (a projective map's Jacobian is
 // det(M) / w^4), so a mirroring model matrix or projection is allowed for.
-GLenum facesHiddenFromCamera(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
+GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
                              const glm::vec3& boundsMax);
 
 }  // namespace marble

@@ -5,7 +5,8 @@
 // cosine between that surface's normal and the direction to the light: how much of the light
 // enters the stone there (translucent shadow maps, Dachsbacher & Stamminger 2003, store the
 // entering irradiance with the depth; the lighting pass applies the Fresnel factor and the light's
-// falloff). |cos|: both faces are drawn, and files wound inward must still let light in.
+// falloff). |cos|: open meshes draw both faces, files wound inward must still let light in, and
+// an interpolated normal can turn from the light on a face that faces it.
 //
 // And a reflective shadow map (Dachsbacher & Stamminger 2005) for the `marble` mode's one
 // diffuse bounce (bounce.glsl): every texel's first surface is lit, so it re-emits, as a

@@ -96,6 +96,41 @@ TEST(ClosedSurface, TwoCubesSharingAnEdgeAreClosed) {
   EXPECT_EQ(closedSurfaceWinding(joined(cube, cube, glm::vec3(2, 2, 0))), SurfaceWinding::Outward);
 }
 
+Mesh scaled(Mesh m, float factor) {
+  for (glm::vec3& p : m.positions) p *= factor;
+  return m;
+}
+
+TEST(ClosedSurface, ASliverWoundTheOtherWayIsTurnedToTheLargestPartsSense) {
+  // The cube [-1, 1]^3 (volume 8) and a detached cube of half-size 0.01 (8e-6, the fraction's
+  // limit), then 0.0101, wound inward at x = 2.
+  const Mesh cube = builtinMesh("cube");
+  const glm::vec3 beside(2.0f, 0.0f, 0.0f);
+  Mesh m = joined(cube, reversed(scaled(cube, 0.0099f)), beside);
+  EXPECT_EQ(closedSurfaceWinding(m), SurfaceWinding::Open);
+  EXPECT_EQ(orientSlivers(m), 1u);
+  EXPECT_EQ(closedSurfaceWinding(m), SurfaceWinding::Outward);
+  EXPECT_EQ(m.indices, joined(cube, scaled(cube, 0.0099f), beside).indices);  // only the sliver's triangles turned
+  EXPECT_EQ(orientSlivers(m), 0u);
+  // The other way round; and the largest part decides wherever it is in the list.
+  Mesh inward = joined(reversed(cube), scaled(cube, 0.0099f), beside);
+  EXPECT_EQ(orientSlivers(inward), 1u);
+  EXPECT_EQ(closedSurfaceWinding(inward), SurfaceWinding::Inward);
+  Mesh first = joined(reversed(scaled(cube, 0.0099f)), cube, beside);
+  EXPECT_EQ(orientSlivers(first), 1u);
+  EXPECT_EQ(closedSurfaceWinding(first), SurfaceWinding::Outward);
+  // Larger than a sliver: a part wound against the rest on purpose (or a cavity) stays as it is.
+  Mesh part = joined(cube, reversed(scaled(cube, 0.0101f)), beside);
+  EXPECT_EQ(orientSlivers(part), 0u);
+  EXPECT_EQ(closedSurfaceWinding(part), SurfaceWinding::Open);
+  // Parts of the same sense, and a mesh of one part, are left alone.
+  Mesh same = joined(cube, scaled(cube, 0.0099f), beside);
+  EXPECT_EQ(orientSlivers(same), 0u);
+  Mesh one = reversed(cube);
+  EXPECT_EQ(orientSlivers(one), 0u);
+  EXPECT_EQ(closedSurfaceWinding(one), SurfaceWinding::Inward);
+}
+
 TEST(ClosedSurface, NoTrianglesIsOpen) { EXPECT_EQ(closedSurfaceWinding(Mesh{}), SurfaceWinding::Open); }
 
 }  // namespace

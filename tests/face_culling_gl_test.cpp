@@ -3,7 +3,7 @@
 // one drawn with both faces (Renderer::setGeometryCullsHiddenFaces(false)) -- from outside, with a
 // mirroring model matrix (the faces turn on screen), and with the eye inside a closed mesh, where
 // the inner faces are what it sees and nothing may be culled.
-// Negative controls (by hand, session 22): facesHiddenFromCamera without its bounding-box test
+// Negative controls (by hand, session 22): facesHiddenFromEye without its bounding-box test
 // (the eye inside the cube sees the background where its walls were culled: 76,800 values
 // differ), with the determinant's sign ignored (the mirrored sculpture loses its near side:
 // 13,575) and culling the other faces (both sculpture tests: 13,575) each fail their test.

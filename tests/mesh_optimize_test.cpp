@@ -1,6 +1,7 @@
 // optimizeDrawOrder changes only the order (the same triangles over the same points, each
 // triangle's winding kept); simplifiedMesh collapses towards its target within its error
-// bound, keeps only points of the original and keeps the winding outward.
+// bound, keeps only points of the original and keeps the winding outward, inside-out slivers
+// wound back.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "dense_mesh.h"
+#include "marble/mesh/closed_surface.h"
 #include "marble/mesh/mesh_optimize.h"
 
 using namespace marble;
@@ -90,4 +92,20 @@ TEST(SimplifiedMesh, ErrorCapBindsBeforeTheTarget) {
   const SimplifiedMesh loose = simplifiedMesh(dense, 100, 0.05f);
   EXPECT_LE(tight.errorUnits, 1e-4f);
   EXPECT_GT(tight.mesh.triangleCount(), 10 * loose.mesh.triangleCount());
+}
+
+TEST(SimplifiedMesh, AnInsideOutSliverIsWoundBack) {
+  // A cube beside one 1 % of its size wound inward, as a collapse can leave one: the copy (with
+  // nothing to collapse under a zero error bound) is closed one way round (orientSlivers).
+  Mesh m = builtinMesh("cube");
+  const Mesh small = builtinMesh("cube");
+  const auto base = static_cast<uint32_t>(m.positions.size());
+  for (const glm::vec3& p : small.positions) m.positions.push_back(p * 0.0099f + glm::vec3(2, 0, 0));
+  m.normals.insert(m.normals.end(), small.normals.begin(), small.normals.end());
+  for (size_t t = 0; t < small.triangleCount(); ++t)
+    m.indices.insert(m.indices.end(), {base + small.indices[3 * t], base + small.indices[3 * t + 2], base + small.indices[3 * t + 1]});
+  ASSERT_EQ(closedSurfaceWinding(m), SurfaceWinding::Open);
+  const SimplifiedMesh s = simplifiedMesh(m, m.triangleCount(), 0.0f);
+  EXPECT_EQ(s.mesh.triangleCount(), m.triangleCount());
+  EXPECT_EQ(closedSurfaceWinding(s.mesh), SurfaceWinding::Outward);
 }

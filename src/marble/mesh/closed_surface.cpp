@@ -1,6 +1,7 @@
 #include "marble/mesh/closed_surface.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 
@@ -72,6 +73,48 @@ SurfaceWinding closedSurfaceWinding(const Mesh& mesh) {
   }
   if (anyZero || (anyPositive && anyNegative)) return SurfaceWinding::Open;
   return anyPositive ? SurfaceWinding::Outward : SurfaceWinding::Inward;
+}
+
+size_t orientSlivers(Mesh& mesh) {
+  const size_t n = mesh.positions.size();
+  const size_t triangles = mesh.triangleCount();
+  for (uint32_t v : mesh.indices)
+    if (v >= n) return 0;
+  const std::vector<uint32_t> point = pointIds(mesh.positions);
+  const auto covers = [&](size_t t) {
+    const uint32_t* v = &mesh.indices[3 * t];
+    return point[v[0]] != point[v[1]] && point[v[1]] != point[v[2]] && point[v[2]] != point[v[0]];
+  };
+  std::vector<uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (size_t t = 0; t < triangles; ++t) {
+    if (!covers(t)) continue;
+    const uint32_t* v = &mesh.indices[3 * t];
+    parent[root(parent, point[v[1]])] = root(parent, point[v[0]]);
+    parent[root(parent, point[v[2]])] = root(parent, point[v[0]]);
+  }
+  std::vector<double> volume(n, 0.0);
+  for (size_t t = 0; t < triangles; ++t) {
+    if (!covers(t)) continue;
+    const uint32_t* v = &mesh.indices[3 * t];
+    const glm::dvec3 pa(mesh.positions[v[0]]), pb(mesh.positions[v[1]]), pc(mesh.positions[v[2]]);
+    volume[root(parent, point[v[0]])] += glm::dot(pa, glm::cross(pb, pc));
+  }
+  double largest = 0.0;
+  for (double v : volume)
+    if (std::abs(v) > std::abs(largest)) largest = v;
+  std::vector<char> turn(n, 0);
+  size_t turned = 0;
+  for (uint32_t p = 0; p < n; ++p) {
+    if (volume[p] * largest < 0.0 && std::abs(volume[p]) <= kSliverVolumeFraction * std::abs(largest)) {
+      turn[p] = 1;
+      ++turned;
+    }
+  }
+  if (turned == 0) return 0;
+  for (size_t t = 0; t < triangles; ++t)
+    if (covers(t) && turn[root(parent, point[mesh.indices[3 * t]])]) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+  return turned;
 }
 
 }  // namespace marble

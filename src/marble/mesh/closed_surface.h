@@ -24,4 +24,19 @@ enum class SurfaceWinding {
 // crease normals split vertices, not the surface.
 SurfaceWinding closedSurfaceWinding(const Mesh& mesh);
 
+// A simplifier can flatten a small detached part into a sliver wound the other way (the dragon's
+// light proxy: 20 triangles of volume -8.75e-9, 0.017 x 0.004 x 0.005 units, beside its main part's 0.444),
+// and a part wound against the rest makes the surface Open. Each connected part whose signed
+// volume has the other sign than the largest part's, and at most kSliverVolumeFraction of its
+// magnitude, has its triangles' winding reversed (the positions and normals stay): what the light
+// and the camera meet first, drawn with both faces, is the same either way (no depth test or
+// shader of a both-faced draw reads the winding but the geometry pass's gl_FrontFacing, which
+// then keeps the sliver's normal as stored on its side toward the eye), and the copy can be
+// culled. (Accepting such parts in closedSurfaceWinding instead would not be: culled, a ray
+// entering the sliver through its turned-away face would first meet a face past it, up to the
+// part's extent further -- along a grazing ray, the sheet's 0.017 units -- whatever its volume.)
+// Returns how many parts were turned.
+constexpr double kSliverVolumeFraction = 1e-6;  // a cube 1 % of the part's size
+size_t orientSlivers(Mesh& mesh);
+
 }  // namespace marble

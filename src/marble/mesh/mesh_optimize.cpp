@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "marble/mesh/closed_surface.h"
+
 namespace marble {
 
 namespace {
@@ -64,6 +66,7 @@ SimplifiedMesh simplifiedMesh(const Mesh& mesh, size_t targetTriangles, float ma
   result.mesh.normals = mesh.normals;
   result.mesh.texcoords = mesh.texcoords;
   result.mesh.indices = std::move(simplified);
+  orientSlivers(result.mesh);  // so that a closed copy stays closed one way round (closed_surface.h)
   optimizeDrawOrder(result.mesh);  // also drops the vertices no triangle uses any more
   return result;
 }

@@ -23,6 +23,7 @@ struct SimplifiedMesh {
 // quadric error), stopping earlier where a collapse would move the surface by more than
 // `maxErrorUnits`. Vertices are welded by position first, so seams of normals or texture
 // coordinates do not hold the simplifier back; the copy keeps each surviving vertex's normal.
+// Slivers the collapses turn inside out are wound back (orientSlivers, closed_surface.h).
 SimplifiedMesh simplifiedMesh(const Mesh& mesh, size_t targetTriangles, float maxErrorUnits);
 
 }  // namespace marble

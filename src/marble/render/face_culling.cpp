@@ -2,7 +2,7 @@
 
 namespace marble {
 
-GLenum facesHiddenFromCamera(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
+GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
                              const glm::vec3& boundsMax) {
   if (winding == SurfaceWinding::Open) return GL_NONE;
   // Beyond the near plane: z > -w in GL's clip space (depth range -1..1). The plane's test is

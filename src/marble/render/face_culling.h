@@ -1,6 +1,8 @@
 #pragma once
 // Which faces of a mesh the camera's depth test would always discard, so that the geometry pass
-// need not draw them (GL face culling). On llvmpipe a triangle costs its setup and binning and a
+// need not draw them (GL face culling); the same for the light, whose depth map and reflective
+// shadow map keep the nearest surface too (LightDepthPass; the eye is then the light: a point
+// light's perspective, or a directional light's orthographic box, whose eye is at infinity). On llvmpipe a triangle costs its setup and binning and a
 // 4x4 block of fragment shading per block it touches, whether or not the depth test keeps any
 // fragment: the dragon's 100,000 triangles are half turned away from any eye, and culling them
 // took 113 M instructions off the 252.5 M geometry pass of its 800^2 camera frame
@@ -13,7 +15,10 @@
 // a pixel whose two nearest fragments have the same depth (mostly on silhouettes, where a facing
 // and a turned-away face meet: GL_LESS kept the one drawn first, now the facing one; 4 of the
 // dragon's 146,704 pixels at 800^2), and a fold turned inside out, whose region of winding
-// number -1 a ray could meet before any outward face (none seen in the reference views).
+// number -1 a ray could meet before any outward face (none seen from the reference views' cameras
+// on the full meshes; from their lights, the simplified proxies show 2-10 texels of 1024^2, the
+// first hit moved by at most 6.6e-4 units, within the proxy's own half-texel error: docs/performance.md,
+// "... the light's passes cull ...").
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
@@ -21,11 +26,11 @@
 
 namespace marble {
 
-// GL_BACK or GL_FRONT: the faces no camera ray meets first, for the mesh drawn with modelViewProj
+// GL_BACK or GL_FRONT: the faces no ray from the eye meets first, for the mesh drawn with modelViewProj
 // (its winding, its object-space bounding box); GL_NONE where both may be seen. The faces' sense on
 // screen follows the sign of modelViewProj's determinant (a projective map's Jacobian is
 // det(M) / w^4), so a mirroring model matrix or projection is allowed for.
-GLenum facesHiddenFromCamera(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
+GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
                              const glm::vec3& boundsMax);
 
 }  // namespace marble

@@ -49,7 +49,7 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   program_.set("u_camera_position", camera.position);
   program_.set("u_valid_reflection", validReflection ? 1 : 0);
   glUseProgram(program_.id());
-  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromCamera(mesh.winding(), camera.viewProj * model,
+  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromEye(mesh.winding(), camera.viewProj * model,
                                                                   mesh.boundsMin(), mesh.boundsMax())
                                           : GLenum{GL_NONE};
   if (hidden != GL_NONE) {

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "marble/gl/checked_calls.h"
+#include "marble/render/face_culling.h"
 
 namespace marble {
 namespace {
@@ -72,7 +73,16 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   timer_.begin();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size_, size_);
-  gl::setMeshPassState();  // both faces: meshes with holes must still block the light
+  // Both faces where the mesh may show either to the light (a mesh with holes must still block
+  // it); else only those facing it: the nearest surface is the same (face_culling.h).
+  gl::setMeshPassState();
+  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromEye(mesh.winding(), light.viewProj * model,
+                                                               mesh.boundsMin(), mesh.boundsMax())
+                                          : GLenum{GL_NONE};
+  if (hidden != GL_NONE) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(hidden);  // glFrontFace stays GL's default, counter-clockwise
+  }
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, farValue);
@@ -94,6 +104,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   gl::clearFramebuffer(bounceFbo_.id(), GL_COLOR, 2, zero);
   gl::clearFramebuffer(bounceFbo_.id(), GL_DEPTH, 0, &one);
   mesh.draw();
+  glDisable(GL_CULL_FACE);  // the layers draw both faces, and the other passes assume it off
   glGenerateTextureMipmap(bouncePosition_.id());
   glGenerateTextureMipmap(bounceNormal_.id());
   // The entry and exit layers (light_layers.frag.glsl): every fragment of both faces, each channel

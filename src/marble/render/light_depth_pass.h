@@ -13,7 +13,12 @@ namespace marble {
 class LightDepthPass {
 public:
   LightDepthPass(const ShaderLibrary& shaders, int size = 1024);
+  // The depth map and the reflective shadow map keep the nearest surface, so they do not draw the
+  // faces no ray from the light meets first (render/face_culling.h) unless switched off; the
+  // entry and exit layers need both faces and draw them.
   void run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light);
+  // For tests: whether hidden faces are culled (on by default).
+  void setCullsHiddenFaces(bool on) { cullsHiddenFaces_ = on; }
   GLuint distanceTexture() const { return distance_.id(); }
   GLuint depthTexture() const { return depth_.id(); }  // compare mode on, for sampler2DShadow
   // The reflective shadow map: world position x w, w (RGBA32F) and the unit normal with the
@@ -46,6 +51,7 @@ private:
   int layersSize_;
   gl::Texture layers_;
   gl::Framebuffer fbo_, bounceFbo_, layersFbo_;
+  bool cullsHiddenFaces_ = true;
   PassTimer timer_;
 };
 

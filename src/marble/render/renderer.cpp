@@ -484,6 +484,10 @@ void Renderer::setGeometryCullsHiddenFaces(bool on) {
   passes_->geometry.setCullsHiddenFaces(on);
   invalidate();
 }
+void Renderer::setLightCullsHiddenFaces(bool on) {
+  passes_->lightDepth.setCullsHiddenFaces(on);
+  invalidate();
+}
 
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +

@@ -133,6 +133,9 @@ public:
   // For tests: whether the geometry pass culls the faces no camera ray meets first
   // (GeometryPass::setCullsHiddenFaces; on by default).
   void setGeometryCullsHiddenFaces(bool on);
+  // For tests: whether the light-depth pass's depth map and reflective shadow map cull the faces
+  // no ray from the light meets first (LightDepthPass::setCullsHiddenFaces; on by default).
+  void setLightCullsHiddenFaces(bool on);
 
   // Whether a target that holds frame `shown` (render()'s token; the caller keeps it with its
   // target) still holds what render() would draw now: `shown` is the last frame drawn, of this

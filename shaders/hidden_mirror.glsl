@@ -73,15 +73,6 @@ const int HIDDEN_MIRROR_STEPS = 12;     // 3 per texel of the quad
 const float HIDDEN_MIRROR_FIRST = 2.0;  // layer texels
 const float HIDDEN_MIRROR_GROWTH = 1.15;
 
-// The light carried through the first part's chord s and then the second's s2 (scene units; s2 0
-// for the first part's own exit): the slab transport of each, multiplied -- the light leaving the
-// first part's exit taken to enter the second part whole, as if its exit face lay against the
-// second's entry (an upper bound: the gap's spread and the second entry's reflection are left out).
-vec3 second_part_transport(float s, float s2) {
-  vec3 t = slab_transport(s * u_mm_per_unit);
-  return s2 > 0.0 ? t * slab_transport(s2 * u_mm_per_unit) : t;
-}
-
 // What quarter k of P's mirror ray (direction R) meets (hidden_mirror_shared): .a 1 an exit face
 // (.rgb its light, as light entering the stone before the albedo), 2 the stone otherwise (a
 // face toward the light, or a part's side), 0 nothing.
@@ -103,31 +94,22 @@ vec4 hidden_mirror_quarter(vec3 P, vec3 R, int k) {
     if (clip.w <= 0.0) break;  // behind the light
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) break;  // off the map
-    vec4 layers = texelFetch(u_light_layers, ivec2(uv * vec2(size)), 0);
+    vec2 layers = texelFetch(u_light_layers, ivec2(uv * vec2(size)), 0).xy;
     float l = light_distance_of(P + t * R);
-    float reach = lastL - l;  // how far this segment comes toward the light
-    // LightDepthPass::kNoLayer in either of a pair: no such part.
-    bool part = layers.x < layers.y, second = layers.z < layers.w;
-    // The second part's exit first: behind the first part's, the ray meets it first.
-    bool exit2 = second && lastL > layers.w && l <= layers.w && l >= layers.z - reach;
-    bool exit1 = part && lastL > layers.y && l <= layers.y && l >= layers.x - reach;
-    if (aired && (exit2 || exit1)) {
-      float exitL = exit2 ? layers.w : layers.y;
+    bool part = layers.x < layers.y;  // LightDepthPass::kNoLayer in either: no part
+    if (aired && part && lastL > layers.y && l <= layers.y && l >= layers.x - (lastL - l)) {
       // The exit face, where the segment crosses its distance.
-      vec3 X = P + mix(lastT, t, (lastL - exitL) / max(reach, 1e-9)) * R;
+      vec3 X = P + mix(lastT, t, (lastL - layers.y) / max(lastL - l, 1e-9)) * R;
       vec3 e = light_entry_at(X);
-      // The chord through the first part, and through the second (0 for the first's exit).
-      float s = max(layers.y - e.x, 0.0), s2 = exit2 ? layers.w - layers.z : 0.0;
+      float s = max(layers.y - e.x, 0.0);
       vec3 light = e.z > 0.0 ? light_irradiance(e.x) / PI * (e.y * principled_entry(e.y)) *
-                                   second_part_transport(s, s2) * u_translucency
+                                   slab_transport(s * u_mm_per_unit) * u_translucency
                              : vec3(0.0);
       return vec4(light, 1.0);
     }
-    bool stone = (part && l > layers.x + texel && l < layers.y - texel) ||
-                 (second && l > layers.z + texel && l < layers.w - texel);
+    bool stone = part && l > layers.x + texel && l < layers.y - texel;
     if (aired && stone) return vec4(0.0, 0.0, 0.0, 2.0);  // in the stone, not through an exit face
-    aired = aired || !((part && l > layers.x - texel && l < layers.y + texel) ||
-                       (second && l > layers.z - texel && l < layers.w + texel));
+    aired = aired || !(part && l > layers.x - texel && l < layers.y + texel);
     lastT = t;
     lastL = l;
     step *= g;

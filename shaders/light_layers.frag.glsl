@@ -24,20 +24,7 @@ uniform vec3 u_light_dir;       // directional light: unit vector the light trav
 uniform int u_light_directional;
 uniform float u_none;           // "no such surface" (the clear value)
 uniform float u_outward;        // -1 where the mesh is wound inward (its normals point in), else 1
-#ifdef SECOND_PART
-// The second pair (LightDepthPass's fourth draw, SECOND_PART): z, w the entry and exit of the
-// second part along each light ray -- the nearest surface and the nearest facing away beyond the
-// first pair's exit (read here, at the same texel: the same rasterization, so every texel this draw
-// covers was covered by the first) -- depth peeling (Everitt 2001) by one layer. x, y repeat the
-// first pair, so that the hidden mirror's march reads all four in one texel. A fragment counts as
-// beyond the first exit by more than its own surface's change across a texel (fwidth: the first
-// exit's surface at the same texel centre is at exactly the same distance; a neighbouring
-// triangle of it differs by up to its slope), so an air gap thinner than that merges two parts.
-layout(binding = UNIT_LIGHT_LAYERS_FIRST) uniform sampler2D u_first_layers;
-layout(location = 0) out vec4 o_layers;
-#else
 layout(location = 0) out vec2 o_entry_exit;
-#endif
 
 void main() {
   vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
@@ -46,11 +33,5 @@ void main() {
   // normal points to.
   vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));
   bool facing = u_outward * dot(ng, v_world_normal) * dot(ng, toLight) >= 0.0;
-#ifdef SECOND_PART
-  vec2 first = texelFetch(u_first_layers, ivec2(gl_FragCoord.xy), 0).xy;
-  bool beyond = first.y < u_none && d > first.y + max(fwidth(d), 1e-6 * d);
-  o_layers = vec4(first, beyond ? d : u_none, beyond && !facing ? d : u_none);
-#else
   o_entry_exit = vec2(d, facing ? u_none : d);
-#endif
 }

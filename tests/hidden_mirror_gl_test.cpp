@@ -40,7 +40,6 @@ using thin_plate::kWall;
 constexpr float kD = 0.45f;       // p's distance from the wall's face
 constexpr float kCosView = 0.45f;  // N.V at p
 constexpr float kThinWall = 0.04f;  // 4 mm at 100 mm per unit
-constexpr float kShieldGap = 0.4f;  // the air between the shield and the wall: beyond the march's reach
 
 glm::vec3 pointP() { return {kWall + kD, kPlateTop, 0.0f}; }
 glm::vec3 cameraPosition() {
@@ -56,16 +55,9 @@ glm::vec3 pointW() {
 // The plate, the thin wall on its end (its face toward the plate at x = kWall), and, where
 // `hidden`, a bar across the middle of the camera's line of sight to the wall's face at w, in the
 // wall's shadow (beyond the first part along the light).
-// Where `shielded`, a second 4 mm wall between the light and the wall (kShieldGap of air between
-// them, higher than the wall so that every light ray reaching the wall crosses it first): the wall
-// is then the second part along the light.
-Mesh scene(bool hidden, bool woundInward = false, bool shielded = false) {
+Mesh scene(bool hidden, bool woundInward = false) {
   Mesh m;
   addBox(m, {kWall - kThinWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  if (shielded) {
-    const float x = kWall - kThinWall - kShieldGap;
-    addBox(m, {x - kThinWall, kPlateTop, -1.0f}, {x, 1.3f, 1.0f});
-  }
   addBox(m, {kWall, kPlateTop - kPlate, -1.0f}, {1.0f, kPlateTop, 1.0f});
   if (hidden) {
     const glm::vec3 mid = 0.5f * (cameraPosition() + pointW());
@@ -126,26 +118,4 @@ TEST(HiddenMirror, AMeshWoundInwardMirrorsTheSameFace) {
   std::cout << "[          ] p hidden, wound outward " << outward << ", inward " << inward << "\n";
   ASSERT_GT(outward, 0.0f);
   EXPECT_NEAR(inward / outward, 1.0f, 0.05f);
-}
-
-// The wall behind a second wall along the light (a shield 40 mm before it): the wall is the
-// second part each light ray meets, whose exit the first pair of the light's layers does not hold,
-// so only the second pair (light_layers.frag.glsl, SECOND_PART) lets the march find the face
-// (hidden_mirror.glsl). Its light is the wall's, times the shield's transport (the product of the
-// two parts' slab transports): a fraction of the unshielded wall's mirror image, not none.
-// The shield's own exit face lies beyond the march's reach from p (kShieldGap), so the face found
-// is the wall's. Measured: hidden and shielded / hidden 0.XX. Control, rebuilt by hand (the
-// march without the second pair's exit, as main): 0, failing.
-TEST(HiddenMirror, AFaceBehindAnotherPartAlongTheLightIsMirroredToo) {
-  HeadlessContext& context = glContext();
-  (void)context;
-  const Scene s = view();
-  const HdrPair img = renderHdrPair(s, scene(true), scene(true, false, true));
-  const float unshielded = linearRgbAround(img.first, s, pointP()).g;
-  const float shielded = linearRgbAround(img.second, s, pointP()).g;
-  std::cout << "[          ] p hidden, unshielded " << unshielded << ", shielded " << shielded << ": ratio "
-            << shielded / unshielded << "\n";
-  ASSERT_GT(unshielded, 0.0f);
-  EXPECT_GT(shielded / unshielded, 0.1f);
-  EXPECT_LT(shielded / unshielded, 1.0f);
 }

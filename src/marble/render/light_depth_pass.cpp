@@ -5,7 +5,6 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "marble/gl/checked_calls.h"
-#include "marble/render/shader_constants.h"
 
 namespace marble {
 namespace {
@@ -30,9 +29,6 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
     : size_(size),
       program_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_depth.frag.glsl"}}),
       layersProgram_(shaders, {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}}),
-      secondLayersProgram_(shaders,
-                           {{GL_VERTEX_SHADER, "mesh.vert.glsl"}, {GL_FRAGMENT_SHADER, "light_layers.frag.glsl"}},
-                           {"SECOND_PART"}),
       // Nearest, not linear: at the object's silhouette seen from the light, blending a surface
       // distance with the "nothing hit" clear value would invent huge entry distances, hence
       // zero thickness and light leaking through past the terminator.
@@ -54,12 +50,9 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
       // the reflective shadow map's, the ten scenes' mean SSIM was 0.0002 lower (docs/quality.md,
       // "Twenty-second session"). Nearest: a blend of an entry or exit with "none" is meaningless.
       layersSize_(std::max(size / 4, 1)),
-      firstLayers_(gl::makeTexture2D(GL_RG32F, layersSize_, layersSize_, GL_NEAREST)),
-      // Both parts' pairs (light_layers.frag.glsl, SECOND_PART), the one the hidden mirror reads.
-      layers_(gl::makeTexture2D(GL_RGBA32F, layersSize_, layersSize_, GL_NEAREST)),
+      layers_(gl::makeTexture2D(GL_RG32F, layersSize_, layersSize_, GL_NEAREST)),
       fbo_(gl::Framebuffer::create()),
       bounceFbo_(gl::Framebuffer::create()),
-      firstLayersFbo_(gl::Framebuffer::create()),
       layersFbo_(gl::Framebuffer::create()) {
   // Shadows read the depth with hardware comparison and bilinear filtering (PCF).
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
@@ -72,25 +65,7 @@ LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
   const GLenum bounceBuffers[] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(bounceFbo_.id(), 3, bounceBuffers);
   glNamedFramebufferTexture(bounceFbo_.id(), GL_DEPTH_ATTACHMENT, bounceDepth_.id(), 0);
-  glNamedFramebufferTexture(firstLayersFbo_.id(), GL_COLOR_ATTACHMENT0, firstLayers_.id(), 0);
   glNamedFramebufferTexture(layersFbo_.id(), GL_COLOR_ATTACHMENT0, layers_.id(), 0);
-}
-
-void LightDepthPass::drawLayers(const gl::Program& program, const gl::Framebuffer& fbo, const GpuMesh& mesh,
-                                const glm::mat4& model, const LightMatrices& light) {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-  const float none[4] = {kNoLayer, kNoLayer, kNoLayer, kNoLayer};
-  gl::clearFramebuffer(fbo.id(), GL_COLOR, 0, none);
-  program.set("u_model", model);
-  program.set("u_view_proj", light.viewProj);
-  program.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  program.set("u_light_pos", light.position);
-  program.set("u_light_dir", light.direction);
-  program.set("u_light_directional", light.directional ? 1 : 0);
-  program.set("u_none", kNoLayer);
-  program.set("u_outward", mesh.woundInward() ? -1.0f : 1.0f);
-  glUseProgram(program.id());
-  mesh.draw();
 }
 
 void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const LightMatrices& light) {
@@ -123,15 +98,24 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glGenerateTextureMipmap(bounceNormal_.id());
   // The entry and exit layers (light_layers.frag.glsl): every fragment of both faces, each channel
   // keeping its nearest by MIN blending (no depth test: the nearest exit lies behind the nearest
-  // entry); then the second part's pair beyond the first's exit, read from the first draw's
-  // texture. The blend and depth state is put back as the mesh passes left it.
+  // entry). The blend and depth state is put back as the mesh passes left it.
+  glBindFramebuffer(GL_FRAMEBUFFER, layersFbo_.id());
   glViewport(0, 0, layersSize_, layersSize_);
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendEquation(GL_MIN);
-  drawLayers(layersProgram_, firstLayersFbo_, mesh, model, light);
-  glBindTextureUnit(shader::UNIT_LIGHT_LAYERS_FIRST, firstLayers_.id());
-  drawLayers(secondLayersProgram_, layersFbo_, mesh, model, light);
+  const float none[4] = {kNoLayer, kNoLayer, 0.0f, 0.0f};
+  gl::clearFramebuffer(layersFbo_.id(), GL_COLOR, 0, none);
+  layersProgram_.set("u_model", model);
+  layersProgram_.set("u_view_proj", light.viewProj);
+  layersProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  layersProgram_.set("u_light_pos", light.position);
+  layersProgram_.set("u_light_dir", light.direction);
+  layersProgram_.set("u_light_directional", light.directional ? 1 : 0);
+  layersProgram_.set("u_none", kNoLayer);
+  layersProgram_.set("u_outward", mesh.woundInward() ? -1.0f : 1.0f);
+  glUseProgram(layersProgram_.id());
+  mesh.draw();
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);

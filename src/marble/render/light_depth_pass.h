@@ -21,35 +21,31 @@ public:
   // texel is the w-weighted mean of the texels under it.
   GLuint bouncePositionTexture() const { return bouncePosition_.id(); }
   GLuint bounceNormalTexture() const { return bounceNormal_.id(); }
-  // At a quarter of the size, the distance from the light to the nearest surface and to the
-  // nearest facing away (x, y), and the same beyond that exit (z, w) (RGBA32F, nearest; kNoLayer
-  // where there is none): where the light enters and leaves the first and the second part it
-  // meets (light_layers.frag.glsl), for the hidden mirror image (hidden_mirror.glsl).
+  // At a quarter of the size, the distance from the light to the nearest surface facing it and to
+  // the nearest facing away (RG32F, nearest; kNoLayer where there is none): where the light enters
+  // and leaves the first part it meets (light_layers.frag.glsl), for the hidden mirror image
+  // (hidden_mirror.glsl).
   GLuint layersTexture() const { return layers_.id(); }
   static constexpr float kNoLayer = 1e30f;
   int size() const { return size_; }
   int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest width
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
-  // mipmaps a third more) + depth 4 at its own size; the layers 8 + 16 at theirs.
+  // mipmaps a third more) + depth 4 at its own size; the layers 8 at theirs.
   size_t bytes() const {
     return static_cast<size_t>(size_) * size_ * 12 + static_cast<size_t>(bounceSize_) * bounceSize_ * (4 + 32 * 4 / 3) +
-           static_cast<size_t>(layersSize_) * layersSize_ * 24;
+           static_cast<size_t>(layersSize_) * layersSize_ * 8;
   }
   PassTimer& timer() { return timer_; }
 
 private:
-  // One draw of the layers' program into fbo (cleared to kNoLayer), with the blend state set.
-  void drawLayers(const gl::Program& program, const gl::Framebuffer& fbo, const GpuMesh& mesh, const glm::mat4& model,
-                  const LightMatrices& light);
-
   int size_;
-  gl::Program program_, layersProgram_, secondLayersProgram_;
+  gl::Program program_, layersProgram_;
   gl::Texture distance_, depth_;
   int bounceSize_;
   gl::Texture bouncePosition_, bounceNormal_, bounceDepth_;
   int layersSize_;
-  gl::Texture firstLayers_, layers_;
-  gl::Framebuffer fbo_, bounceFbo_, firstLayersFbo_, layersFbo_;
+  gl::Texture layers_;
+  gl::Framebuffer fbo_, bounceFbo_, layersFbo_;
   PassTimer timer_;
 };
 

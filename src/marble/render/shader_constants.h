@@ -25,8 +25,6 @@
   /* albedo.frag.glsl */                                                                                \
   X(UNIT_ALBEDO_DEPTH, 0)                                                                               \
   X(UNIT_ALBEDO_NORMAL, 1)                                                                              \
-  /* light_layers.frag.glsl, SECOND_PART: the first part's pair */                                    \
-  X(UNIT_LIGHT_LAYERS_FIRST, 0)                                                                         \
   /* lighting.frag.glsl */                                                                              \
   X(UNIT_LIGHTING_ALBEDO, 0)                                                                            \
   X(UNIT_LIGHTING_NORMAL, 1)                                                                            \

@@ -38,16 +38,30 @@
 //   front of the entry than the segment is long: a segment that crosses the whole slab in one
 //   step still met its exit face first). In the first quarter only after the ray has been in the
 //   air (a point off the stone by a texel): P's own surface, quantised by the layers, is not a hit;
-// - the ray stops without a hit where it is in the stone without having crossed an exit (it
-//   entered through a face toward the light or the part's side in the light's view: the bounce's
-//   mirrored part, from the light's map, holds the lit faces), where it leaves the light's map (the
+// - a side hit: the ray is in the stone without having crossed an exit, and the last point was
+//   already deeper along the light than this texel's entry (so it lay beside the part in the
+//   light's view): it entered through the part's side, edge-on to the light -- most of the
+//   dragon's coils seen from the camera behind them, where dragon-back's missing rim lines are
+//   (docs/quality.md, "Twenty-second session: a second pair of light layers"). That face glows
+//   with the light carried from the entry down to the point's depth (the chord s = l - entry);
+// - the ray stops without a hit where it is in the stone through a face toward the light (the
+//   last point no deeper than the entry: the bounce's mirrored part, from the light's map, holds
+//   the lit faces), where it leaves the light's map (the
 //   map spans the object's bounding sphere: nothing of the object lies beyond) or goes behind the
 //   light, and after its last point;
 // - only the first part along each light ray: a second part behind it (the body behind a coil,
 //   seen from the light) neither glows here nor blocks the ray, nor does P's own part where the
-//   first part is another (its concave side re-met by the ray).
+//   first part is another (its concave side re-met by the ray). A second pair of layers (the
+//   second part's entry and exit, depth-peeled) was measured and not kept: light carried through
+//   two parts is negligible in the reference scenes (0.0000 of dragon-back's picture), for a new
+//   draw costing the light frame +55 M instructions (docs/quality.md, "Twenty-second session: a
+//   second pair of light layers").
 // The radiance leaving the exit face X (where the segment crosses the exit distance, linearly
-// between the two points): the transmission's straight model there (lighting.frag.glsl,
+// between the two points; for a side hit, the point in the stone at its own depth, the chord to
+// it: an approximation -- a side point at depth s taken to glow as a slab's exit after s, so
+// light that leaves through the side nearer the entry is not counted; the point is up to a
+// step beyond the face, so s up to a step long -- against the ten scenes the depth half a
+// step nearer lost 0.0002 mean SSIM): the transmission's straight model there (lighting.frag.glsl,
 // marble_entering: the light entering at the distance map's bilinear entry, at its stored cosine
 // with the Principled coupling, carried the chord s = exit - entry by the random walk's slab
 // transport, per channel: T's hue; its falloff at the entry), as light entering the stone, before
@@ -62,7 +76,9 @@
 // (self_reflection_hit's -1) and its ray comes nearer the light (lighting.frag.glsl, main), each
 // texel a quarter of the points, one read of the layers a point; the layers are drawn with the
 // light's map, only when the light's map is (LightDepthPass). Camera frame of the dragon at 800^2
-// +4 % (docs/performance.md, "Twenty-second session: the hidden mirror image").
+// +4 % (docs/performance.md, "Twenty-second session: the hidden mirror image"); with the side hit
+// and the glow computed at one call site after the loop, the lighting pass 103.09 -> 94.93 M
+// instructions (docs/performance.md, "Twenty-second session: a second pair of light layers").
 // Needs from the includer: u_light_distance, u_light_view_proj, u_light_texel_world,
 // light_distance_of, light_irradiance, light_entry_at, slab_transport, principled_entry,
 // u_mm_per_unit, u_translucency, quad_across_x, quad_across_y.
@@ -72,6 +88,14 @@ layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_light_layers;  
 const int HIDDEN_MIRROR_STEPS = 12;     // 3 per texel of the quad
 const float HIDDEN_MIRROR_FIRST = 2.0;  // layer texels
 const float HIDDEN_MIRROR_GROWTH = 1.15;
+
+// The light leaving the stone after the chord s (scene units) from the entry e (light_entry_at:
+// distance, cosine, found), as light entering the stone before the albedo: the transmission's
+// straight model (below).
+vec3 exit_glow(vec3 e, float s) {
+  return light_irradiance(e.x) / PI * (e.y * principled_entry(e.y)) * slab_transport(s * u_mm_per_unit) *
+         u_translucency;
+}
 
 // What quarter k of P's mirror ray (direction R) meets (hidden_mirror_shared): .a 1 an exit face
 // (.rgb its light, as light entering the stone before the albedo), 2 the stone otherwise (a
@@ -89,6 +113,11 @@ vec4 hidden_mirror_quarter(vec3 P, vec3 R, int k) {
   float t = lastT + step;
   float lastL = light_distance_of(P + lastT * R);
   bool aired = k > 0;  // beyond the first quarter, the ray has left P's surface
+  // What the march met (.a of the result) and, for a face, the point X on it and its depth along
+  // the light: the glow is computed once, after the loop, for both kinds of face (llvmpipe runs a
+  // branch for the whole block of lanes where any lane takes it: one call site, not two in the loop).
+  float met = 0.0, depth = 0.0;
+  vec3 X = P;
   for (int i = 0; i < PER; ++i) {
     vec4 clip = clipP + t * clipR;
     if (clip.w <= 0.0) break;  // behind the light
@@ -99,23 +128,31 @@ vec4 hidden_mirror_quarter(vec3 P, vec3 R, int k) {
     bool part = layers.x < layers.y;  // LightDepthPass::kNoLayer in either: no part
     if (aired && part && lastL > layers.y && l <= layers.y && l >= layers.x - (lastL - l)) {
       // The exit face, where the segment crosses its distance.
-      vec3 X = P + mix(lastT, t, (lastL - layers.y) / max(lastL - l, 1e-9)) * R;
-      vec3 e = light_entry_at(X);
-      float s = max(layers.y - e.x, 0.0);
-      vec3 light = e.z > 0.0 ? light_irradiance(e.x) / PI * (e.y * principled_entry(e.y)) *
-                                   slab_transport(s * u_mm_per_unit) * u_translucency
-                             : vec3(0.0);
-      return vec4(light, 1.0);
+      X = P + mix(lastT, t, (lastL - layers.y) / max(lastL - l, 1e-9)) * R;
+      depth = layers.y;
+      met = 1.0;
+      break;
     }
     bool stone = part && l > layers.x + texel && l < layers.y - texel;
-    if (aired && stone) return vec4(0.0, 0.0, 0.0, 2.0);  // in the stone, not through an exit face
+    if (aired && stone) {
+      // In the stone, not through an exit face. Through a face toward the light (the last point
+      // no deeper than this texel's entry): nothing here. Through the part's side (the last point
+      // already deeper: it was beside the part in the light's view): the side's glow, at the
+      // point's own depth.
+      X = P + t * R;
+      depth = l;
+      met = lastL <= layers.x + texel ? 2.0 : 1.0;
+      break;
+    }
     aired = aired || !(part && l > layers.x - texel && l < layers.y + texel);
     lastT = t;
     lastL = l;
     step *= g;
     t += step;
   }
-  return vec4(0.0);
+  if (met != 1.0) return vec4(0.0, 0.0, 0.0, met);
+  vec3 e = light_entry_at(X);
+  return vec4(e.z > 0.0 ? exit_glow(e, max(depth - e.x, 0.0)) : vec3(0.0), 1.0);
 }
 
 // The light P's mirror ray meets on an exit face hidden from the camera, shared across the 2 x 2

@@ -5,9 +5,7 @@ uniform mat4 u_inv_view_proj;
 uniform mat4 u_view_proj;  // world to the camera's clip space (the inverse of the above)
 uniform vec3 u_camera_pos;
 uniform mat4 u_light_view_proj;
-uniform vec3 u_light_pos;
-uniform vec3 u_light_dir;
-uniform int u_light_directional;
+#include "light_geometry.glsl"
 uniform vec3 u_light_radiance;      // colour x intensity
 uniform float u_light_texel_world;  // world size of one light-map texel at the object
 uniform float u_light_ref_distance; // d0: the point light's distance to the scene centre
@@ -16,16 +14,6 @@ uniform float u_light_ref_distance; // d0: the point light's distance to the sce
 vec3 surface_point(vec2 uv, float depth) {
   vec4 world = u_inv_view_proj * vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
   return world.xyz / world.w;
-}
-
-// Unit vector from P toward the light.
-vec3 light_vector(vec3 P) {
-  return u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - P);
-}
-
-// Distance along the light's path: from a point light, or along a directional light.
-float light_distance_of(vec3 p) {
-  return u_light_directional == 1 ? dot(p, u_light_dir) : distance(p, u_light_pos);
 }
 
 // The `marble` mode's irradiance at normal incidence, at distance d from the light (needs PI).

@@ -22,16 +22,14 @@
 #include "principled_entry.glsl"
 in vec3 v_world_pos;
 in vec3 v_world_normal;
-uniform vec3 u_light_pos;       // point light: its position
-uniform vec3 u_light_dir;       // directional light: unit vector the light travels along
-uniform int u_light_directional;
+#include "light_geometry.glsl"
 layout(location = 0) out vec2 o_distance_cos;  // distance, entry cosine
 layout(location = 1) out vec4 o_bounce_position;  // world position x w, w (scene units^2)
 layout(location = 2) out vec4 o_bounce_normal;    // unit normal toward the light, a (scene units^2)
 
 void main() {
-  vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
-  float d = u_light_directional == 1 ? dot(v_world_pos, u_light_dir) : distance(v_world_pos, u_light_pos);
+  vec3 toLight = light_vector(v_world_pos);
+  float d = light_distance_of(v_world_pos);
   vec3 n = normalize(v_world_normal);
   float c = dot(n, toLight);
   o_distance_cos = vec2(d, abs(c));

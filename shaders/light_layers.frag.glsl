@@ -19,16 +19,14 @@
 // exits lay before its entries and no stone was found anywhere. A mesh wound both ways is not.
 in vec3 v_world_pos;
 in vec3 v_world_normal;
-uniform vec3 u_light_pos;       // point light: its position
-uniform vec3 u_light_dir;       // directional light: unit vector the light travels along
-uniform int u_light_directional;
+#include "light_geometry.glsl"
 uniform float u_none;           // "no such surface" (the clear value)
 uniform float u_outward;        // -1 where the mesh is wound inward (its normals point in), else 1
 layout(location = 0) out vec2 o_entry_exit;
 
 void main() {
-  vec3 toLight = u_light_directional == 1 ? -u_light_dir : normalize(u_light_pos - v_world_pos);
-  float d = u_light_directional == 1 ? dot(v_world_pos, u_light_dir) : distance(v_world_pos, u_light_pos);
+  vec3 toLight = light_vector(v_world_pos);
+  float d = light_distance_of(v_world_pos);
   // The triangle's own normal (its plane's derivatives), turned to the outside the interpolated
   // normal points to.
   vec3 ng = cross(dFdx(v_world_pos), dFdy(v_world_pos));

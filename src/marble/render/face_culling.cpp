@@ -23,4 +23,12 @@ GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj
   return outward == screenKeepsSense ? GL_BACK : GL_FRONT;
 }
 
+void cullFacesHiddenFromEye(bool enabled, const GpuMesh& mesh, const glm::mat4& modelViewProj) {
+  const GLenum hidden =
+      enabled ? facesHiddenFromEye(mesh.winding(), modelViewProj, mesh.boundsMin(), mesh.boundsMax()) : GLenum{GL_NONE};
+  if (hidden == GL_NONE) return;
+  glEnable(GL_CULL_FACE);
+  glCullFace(hidden);
+}
+
 }  // namespace marble

@@ -23,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include "marble/mesh/closed_surface.h"
+#include "marble/render/gpu_mesh.h"
 
 namespace marble {
 
@@ -32,5 +33,11 @@ namespace marble {
 // det(M) / w^4), so a mirroring model matrix or projection is allowed for.
 GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
                              const glm::vec3& boundsMax);
+
+// For a mesh pass about to draw `mesh` with modelViewProj: where `enabled` and facesHiddenFromEye
+// names a face, turns GL face culling on for it (glFrontFace stays GL's default,
+// counter-clockwise); else leaves culling as it is (off, as every pass's state set leaves it). The
+// caller turns it off after its draws, since the other passes' state assumes it off.
+void cullFacesHiddenFromEye(bool enabled, const GpuMesh& mesh, const glm::mat4& modelViewProj);
 
 }  // namespace marble

@@ -49,13 +49,7 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   program_.set("u_camera_position", camera.position);
   program_.set("u_valid_reflection", validReflection ? 1 : 0);
   glUseProgram(program_.id());
-  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromEye(mesh.winding(), camera.viewProj * model,
-                                                                  mesh.boundsMin(), mesh.boundsMax())
-                                          : GLenum{GL_NONE};
-  if (hidden != GL_NONE) {
-    glEnable(GL_CULL_FACE);
-    glCullFace(hidden);  // glFrontFace stays GL's default, counter-clockwise
-  }
+  cullFacesHiddenFromEye(cullsHiddenFaces_, mesh, camera.viewProj * model);
   mesh.draw();
   glDisable(GL_CULL_FACE);  // the other passes' state (gl::set*PassState) assumes it off
   timer_.end();

@@ -24,6 +24,17 @@ gl::Texture makeMipmapped(GLenum internalFormat, int size) {
   return t;
 }
 
+// The uniforms both of the pass's programs (light_depth and light_layers) take to place the mesh
+// in the light's view.
+void setLightViewUniforms(gl::Program& program, const glm::mat4& model, const LightMatrices& light) {
+  program.set("u_model", model);
+  program.set("u_view_proj", light.viewProj);
+  program.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
+  program.set("u_light_pos", light.position);
+  program.set("u_light_dir", light.direction);
+  program.set("u_light_directional", light.directional ? 1 : 0);
+}
+
 }  // namespace
 
 LightDepthPass::LightDepthPass(const ShaderLibrary& shaders, int size)
@@ -76,24 +87,13 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   // Both faces where the mesh may show either to the light (a mesh with holes must still block
   // it); else only those facing it: the nearest surface is the same (face_culling.h).
   gl::setMeshPassState();
-  const GLenum hidden = cullsHiddenFaces_ ? facesHiddenFromEye(mesh.winding(), light.viewProj * model,
-                                                               mesh.boundsMin(), mesh.boundsMax())
-                                          : GLenum{GL_NONE};
-  if (hidden != GL_NONE) {
-    glEnable(GL_CULL_FACE);
-    glCullFace(hidden);  // glFrontFace stays GL's default, counter-clockwise
-  }
+  cullFacesHiddenFromEye(cullsHiddenFaces_, mesh, light.viewProj * model);
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, farValue);
   const float one = 1.0f;
   gl::clearFramebuffer(fbo_.id(), GL_DEPTH, 0, &one);
-  program_.set("u_model", model);
-  program_.set("u_view_proj", light.viewProj);
-  program_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  program_.set("u_light_pos", light.position);
-  program_.set("u_light_dir", light.direction);
-  program_.set("u_light_directional", light.directional ? 1 : 0);
+  setLightViewUniforms(program_, model, light);
   glUseProgram(program_.id());
   mesh.draw();
   // The reflective shadow map: nothing there, nothing re-emitted (w = 0).
@@ -117,12 +117,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   glBlendEquation(GL_MIN);
   const float none[4] = {kNoLayer, kNoLayer, 0.0f, 0.0f};
   gl::clearFramebuffer(layersFbo_.id(), GL_COLOR, 0, none);
-  layersProgram_.set("u_model", model);
-  layersProgram_.set("u_view_proj", light.viewProj);
-  layersProgram_.set("u_normal_matrix", glm::mat3(glm::inverseTranspose(model)));
-  layersProgram_.set("u_light_pos", light.position);
-  layersProgram_.set("u_light_dir", light.direction);
-  layersProgram_.set("u_light_directional", light.directional ? 1 : 0);
+  setLightViewUniforms(layersProgram_, model, light);
   layersProgram_.set("u_none", kNoLayer);
   layersProgram_.set("u_outward", mesh.woundInward() ? -1.0f : 1.0f);
   glUseProgram(layersProgram_.id());

@@ -32,6 +32,7 @@ struct BenchResult {
   size_t interactionTriangles = 0;      // --interaction-detail on: what the camera's passes draw
   double interactionMs = 0;             // making that copy
   float resolutionScale = 1.0f;         // --interaction-resolution: the passes' share of width and height
+  int lightMapSize = 0;                 // the light's depth map's width (--interaction-light-maps)
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)
   double uploadMs = 0;      // copying it into GL buffers
   std::string glRenderer, glVersion;

@@ -94,6 +94,11 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                  "target (Renderer::setResolutionScale), as the viewer does while the view or the light moves; "
                  "1 (default): full resolution")
       ->check(CLI::Range(static_cast<double>(Renderer::kMinResolutionScale), 1.0));
+  cmd.add_option("--interaction-light-maps", o.interactionLightMaps,
+                 "on: the light's maps drawn at the --interaction-resolution share of their size "
+                 "(Renderer::LightMapDetail::Interaction), as the viewer does while the object or the light moves; "
+                 "off (default): full size")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -144,6 +149,8 @@ int runBenchCommand(const BenchOptions& o) {
     }
     renderer.setResolutionScale(o.interactionResolution);
     r.resolutionScale = renderer.resolutionScale();
+    if (o.interactionLightMaps == "on") renderer.setLightMapDetail(Renderer::LightMapDetail::Interaction);
+    r.lightMapSize = renderer.lightMapSize();
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     Renderer::FrameToken shown;  // the frame `target` holds

@@ -92,7 +92,7 @@ void Renderer::makeLightProxy() {
   if (!lightProxyEnabled_ || triangles <= kLightProxyMinTriangles) return;
   const auto target = std::min(kLightProxyMaxTriangles,
                                static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction));
-  const float maxError = lightProxyMaxErrorUnits(passes_->lightDepth.size());
+  const float maxError = lightProxyMaxErrorUnits(passes_->lightDepth.fullSize());
   if (lightProxyInBackground_) {
     lightProxyJob_.emplace(cpuMesh_, target, maxError);
     return;
@@ -195,11 +195,31 @@ void Renderer::reloadShaders() {
   fresh->post.compileAll();
   fresh->blur.compileAll();
   passes_ = std::move(fresh);
+  passes_->lightDepth.setMapSize(lightMapSize());
   invalidate();  // new passes: nothing they stored survives
 }
 
 void Renderer::setResolutionScale(float scale) {
   resolutionScale_ = std::clamp(scale, kMinResolutionScale, 1.0f);
+  updateLightMapSize();
+}
+
+void Renderer::setLightMapDetail(LightMapDetail detail) {
+  lightMapDetail_ = detail;
+  updateLightMapSize();
+}
+
+int Renderer::lightMapSize() const {
+  const int full = passes_->lightDepth.fullSize();
+  if (lightMapDetail_ == LightMapDetail::Full) return full;
+  return std::max(1, static_cast<int>(std::lround(static_cast<float>(full) * resolutionScale_)));
+}
+
+void Renderer::updateLightMapSize() {
+  const int size = lightMapSize();
+  if (size == passes_->lightDepth.size()) return;
+  passes_->lightDepth.setMapSize(size);
+  cache_.changed(PassInput::LightMesh);  // the light's pass draws other maps: it and its readers re-run
 }
 
 Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
@@ -502,7 +522,10 @@ ImageRGBF Renderer::readHdr() {
   const int w = lastFrame_ ? lastFrame_->width : 0, h = lastFrame_ ? lastFrame_->height : 0;
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   // Nothing to read when the G-buffer no longer holds the last frame's view (a new mesh, shaders).
-  if (!lastFrame_ || !cache_.current(Pass::Geometry, *lastFrame_) || w <= 0 || h <= 0) return img;
+  // Nor when the light's maps were redrawn or swapped since (a new mesh, setLightMapDetail).
+  if (!lastFrame_ || !cache_.current(Pass::Geometry, *lastFrame_) || !cache_.current(Pass::LightDepth, *lastFrame_) ||
+      w <= 0 || h <= 0)
+    return img;
   const FrameInputs& last = *lastFrame_;
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   // The last frame once more, through the same post pass, into a float target, linear.

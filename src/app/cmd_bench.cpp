@@ -6,6 +6,7 @@
 #include "bench_motion.h"
 #include "bench_report.h"
 #include "marble/core/error.h"
+#include "marble/core/image.h"
 #include "marble/core/memory_usage.h"
 #include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
@@ -69,6 +70,9 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
   cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");
   cmd.add_flag("--json", o.json, "Print one JSON object instead of the table");
+  cmd.add_option("--screenshot", o.screenshot,
+                 "After the last frame, save it as PNG (a moving frame with --motion: what the interaction "
+                 "settings draw)");
   cmd.add_flag("--serial-passes", o.serialPasses,
                "Finish each pass before the next and time it by the wall clock (whole cost of each pass, "
                "vertex work included; frames get slower)");
@@ -178,6 +182,7 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (GLenum err = glGetError(); err != GL_NO_ERROR)
       throw EnvironmentError("OpenGL error " + std::to_string(err) + " while benchmarking");
+    if (!o.screenshot.empty()) writePng(o.screenshot, target.read());  // after the measured frames
 
     r.rssBytes = residentBytes();
     // The two counters are sampled differently by the kernel; a peak below the current

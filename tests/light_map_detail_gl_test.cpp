@@ -3,6 +3,8 @@
 // at the resolution scale's share of their size.
 // - a frame drawn with the reduced maps is what a fresh renderer with the same settings draws
 //   (nothing of the full-size maps is read), and another picture than one from the full maps;
+// - with a light proxy (a mesh above kLightProxyMinTriangles), the reduced maps draw a coarser
+//   copy of the proxy, and the still frame is still a fresh renderer's;
 // - the first still frame after such frames -- the object turning, the light turning on a stage
 //   -- equals a fresh full render bit for bit, though its model and light are the last moving
 //   frame's (the light's pass must re-run for the size alone).
@@ -12,6 +14,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "dense_mesh.h"
 #include "gl_support.h"
 
 using namespace marble;
@@ -20,6 +23,15 @@ using namespace marble::test;
 namespace {
 
 constexpr int kSize = 192;
+
+const Mesh& sculpture() {
+  static const Mesh m = builtinMesh("sculpture");  // 25,600 triangles: no proxy
+  return m;
+}
+const Mesh& denseSculpture() {
+  static const Mesh m = subdividedSmoothed(builtinMesh("sculpture"), 1);  // 102,400: a proxy
+  return m;
+}
 
 Scene marbleScene() {
   Scene s;
@@ -44,9 +56,9 @@ ImageRGBA8 render(Renderer& r, const Scene& s, const glm::mat4& model) {
 
 // Frames while the object (or the light) turns at half resolution with the light's maps at
 // interaction detail, arriving at `model` and s's light; then the first still frame.
-ImageRGBA8 movingThenStill(const Scene& s, const glm::mat4& model, bool turnLight) {
+ImageRGBA8 movingThenStill(const Scene& s, const glm::mat4& model, bool turnLight, const Mesh& mesh = sculpture()) {
   Renderer r;
-  r.setMesh(builtinMesh("sculpture"));
+  r.setMesh(mesh);
   OffscreenTarget target(kSize, kSize);
   for (int i = 3; i >= 0; --i) {
     r.setResolutionScale(0.5f);
@@ -66,9 +78,10 @@ ImageRGBA8 movingThenStill(const Scene& s, const glm::mat4& model, bool turnLigh
   return render(r, s, model);
 }
 
-ImageRGBA8 fresh(const Scene& s, const glm::mat4& model, float scale, Renderer::LightMapDetail maps) {
+ImageRGBA8 fresh(const Scene& s, const glm::mat4& model, float scale, Renderer::LightMapDetail maps,
+                 const Mesh& mesh = sculpture()) {
   Renderer r;
-  r.setMesh(builtinMesh("sculpture"));
+  r.setMesh(mesh);
   r.setResolutionScale(scale);
   r.setLightMapDetail(maps);
   return render(r, s, model);
@@ -127,5 +140,27 @@ TEST(LightMapDetail, StillFrameAfterTheLightTurnedOnAStageEqualsAFreshRender) {
   s.render.backdrop = true;
   const ImageRGBA8 still = movingThenStill(s, glm::mat4(1.0f), true);
   const ImageRGBA8 reference = fresh(s, glm::mat4(1.0f), 1.0f, Renderer::LightMapDetail::Full);
+  EXPECT_TRUE(still.pixels == reference.pixels) << "mean difference " << meanAbsDiff(still, reference);
+}
+
+TEST(LightMapDetail, WithAProxyTheReducedMapsDrawACoarserCopyAndTheStillFrameIsFresh) {
+  glContext();
+  const Scene s = marbleScene();
+  Renderer r;
+  r.setMesh(denseSculpture());
+  ASSERT_LT(r.lightTriangleCount(), r.triangleCount()) << "the mesh has a light proxy";
+  EXPECT_EQ(r.lightMapTriangleCount(), r.lightTriangleCount()) << "full-size maps: the proxy";
+  r.setResolutionScale(0.5f);
+  r.setLightMapDetail(Renderer::LightMapDetail::Interaction);
+  EXPECT_LT(r.lightMapTriangleCount(), r.lightTriangleCount()) << "512² maps: a coarser copy";
+  EXPECT_GT(r.lightMapTriangleCount(), 0u);
+  // A frame from the coarser copy is a fresh renderer's with the same settings.
+  const glm::mat4 model = turnedModel(20.0f);
+  const ImageRGBA8 got = render(r, s, model);
+  const ImageRGBA8 expected = fresh(s, model, 0.5f, Renderer::LightMapDetail::Interaction, denseSculpture());
+  EXPECT_TRUE(got.pixels == expected.pixels) << "mean difference " << meanAbsDiff(got, expected);
+  // The still frame after the object turned: the full proxy into full-size maps again.
+  const ImageRGBA8 still = movingThenStill(s, model, false, denseSculpture());
+  const ImageRGBA8 reference = fresh(s, model, 1.0f, Renderer::LightMapDetail::Full, denseSculpture());
   EXPECT_TRUE(still.pixels == reference.pixels) << "mean difference " << meanAbsDiff(still, reference);
 }

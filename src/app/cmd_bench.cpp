@@ -155,6 +155,9 @@ int runBenchCommand(const BenchOptions& o) {
     r.resolutionScale = renderer.resolutionScale();
     if (o.interactionLightMaps == "on") renderer.setLightMapDetail(Renderer::LightMapDetail::Interaction);
     r.lightMapSize = renderer.lightMapSize();
+    t0 = wallMs();
+    r.lightMapTriangles = renderer.lightMapTriangleCount();  // a reduced maps' copy made here, outside the frames
+    r.lightMapMeshMs = wallMs() - t0;
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     Renderer::FrameToken shown;  // the frame `target` holds

@@ -85,6 +85,7 @@ void Renderer::setMesh(const Mesh& mesh) {
 
 void Renderer::makeLightProxy() {
   lightMesh_.reset();
+  reducedLightMesh_.reset();
   lightProxyMesh_ = Mesh();
   lightProxyErrorUnits_ = 0.0f;
   lightProxyJob_.reset();  // a copy still being made for an earlier mesh is abandoned
@@ -104,6 +105,7 @@ void Renderer::useLightProxy(SimplifiedMesh proxy) {
   if (proxy.mesh.triangleCount() >= cpuMesh_.triangleCount()) return;  // nothing could be collapsed
   lightProxyErrorUnits_ = proxy.errorUnits;
   lightMesh_.emplace(proxy.mesh);
+  reducedLightMesh_.reset();
   lightProxyMesh_ = std::move(proxy.mesh);
 }
 
@@ -130,6 +132,24 @@ void Renderer::setLightProxyEnabled(bool enabled) {
   interactionIsLightProxy_ = false;
   cache_.changed(PassInput::LightMesh);
   interactionCopyRemade();
+}
+
+const GpuMesh& Renderer::lightMeshFor(int mapSize) {
+  if (mapSize >= passes_->lightDepth.fullSize() || !lightMesh_) return lightMesh();
+  if (!reducedLightMesh_ || reducedLightMeshSize_ != mapSize) {
+    // As many triangles as the map has fewer texels at most; the error bound binds first on the
+    // dragon (docs/performance.md, "Twenty-third session").
+    const double texelShare = std::pow(static_cast<double>(mapSize) / passes_->lightDepth.fullSize(), 2.0);
+    const auto target = std::max<size_t>(1, static_cast<size_t>(static_cast<double>(lightProxyMesh_.triangleCount()) * texelShare));
+    reducedLightMesh_.emplace(simplifiedMesh(lightProxyMesh_, target, lightProxyMaxErrorUnits(mapSize)).mesh);
+    reducedLightMeshSize_ = mapSize;
+  }
+  return *reducedLightMesh_;
+}
+
+size_t Renderer::lightMapTriangleCount() {
+  if (!mesh_) return 0;
+  return lightMeshFor(lightMapSize()).triangleCount();
 }
 
 size_t Renderer::lightTriangleCount() const {
@@ -299,7 +319,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   };
   const LightMatrices& light = now.light;
   if (stale(Pass::LightDepth)) {
-    passes_->lightDepth.run(lightMesh(), model, light);
+    passes_->lightDepth.run(lightMeshFor(passes_->lightDepth.size()), model, light);
     passes_->bounce.markEntriesStale();
     ran(Pass::LightDepth);
   }
@@ -512,7 +532,7 @@ void Renderer::setLightCullsHiddenFaces(bool on) {
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
-         (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
+         (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) + (reducedLightMesh_ ? reducedLightMesh_->bytes() : 0) +
          (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes() +
          (reducedFrame_ ? reducedFrame_->bytes() : 0);
 }

@@ -104,6 +104,9 @@ public:
   void setLightMapDetail(LightMapDetail detail);
   LightMapDetail lightMapDetail() const { return lightMapDetail_; }
   int lightMapSize() const;  // the width of the light's depth map the next frame draws and reads
+  // Triangles the light's pass draws into maps of lightMapSize(): below the full size, where there
+  // is a proxy, a coarser copy of it within half of that size's texel (made here if needed).
+  size_t lightMapTriangleCount();
 
   // The environment map used when a scene says "environment": "map" (uploaded here, once; the
   // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
@@ -204,6 +207,12 @@ private:
   void adoptLightProxy(bool wait);  // takes a finished (or, with wait, the pending) proxy
   const GpuMesh& cameraMesh();
   const GpuMesh& lightMesh() const { return lightMesh_ ? *lightMesh_ : *mesh_; }
+  // What the light's pass draws into maps of `mapSize`: at the full size lightMesh(); smaller, where
+  // there is a proxy, a coarser copy of it (made at its first use for that size), whose collapses
+  // stay within half of that size's texel, as the proxy's within half of the full size's.
+  std::optional<GpuMesh> reducedLightMesh_;
+  int reducedLightMeshSize_ = 0;
+  const GpuMesh& lightMeshFor(int mapSize);
   OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)
   // FXAA's spans (the whole frame for views that are not of the mesh), made once per view
   // (model-view-projection and size).

@@ -402,6 +402,26 @@ vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   return mix(straight, rings, blend);
 }
 
+// The share of the first bounce entering at the transmission's entry (bounce_entry.glsl) that
+// leaves here: the transport the light's own entering light gets (gathered_transport's
+// `transport`: the rings' spread over the entries around the chord beyond GLOW_FROM_MM, the
+// straight model below it), per unit of light entering at the centre entry (its coupling
+// cos_in principled_entry(cos_in) divided out), capped at 1 of the straight model's T(s).
+// Until session 23 the bounce took the straight model alone, T(s), beside the light's rings:
+// over curved parts 5-20 mm thick the straight model is 1.2-2.8x the rings (docs/quality.md,
+// "Twentieth session: teapot-back's thin sheets"), so the bounce crossed the teapot's spout and
+// the shoulder beside it 1.2-2.8x as bright as the light that entered with it, red (T's hue)
+// where Cycles' indirect light there is grey. Approximation: the bounce enters over the same
+// ring of entries as the light, at the centre's cosine (it arrives diffusely, from the lit parts
+// around; the rings weigh each entry by the light's own cosine there); the cap keeps a grazing
+// centre entry (cos_in near 0, the rings finding steeper entries around it) from multiplying
+// the bounce by the rings' larger cosines. Docs/quality.md, "Twenty-third session".
+vec3 crossed_share(float s, float cos_in, vec3 transport) {
+  vec3 straight = slab_transport(s * u_mm_per_unit);
+  vec3 coupled = cos_in * principled_entry(cos_in) * straight;
+  return straight * min(transport / max(coupled, vec3(1e-30)), vec3(1.0));
+}
+
 #include "hidden_mirror.glsl"
 
 // How much the camera sees of `entry` (where the transmitted light entered the stone): 1 where
@@ -476,6 +496,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
+  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);
   vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
@@ -486,13 +507,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
     float hidden = (1.0 - entry_seen(P_in + light_vector(P_in) * s, tol)) * (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
     // The first bounce entering at the same entry (bounce_entry.glsl), carried through the chord
-    // as light entering at normal incidence is (slab_transport: the straight model alone, without
-    // the rings' spread, which matters only where the chord is too long for it to be seen). Only
-    // where the camera does not see the entry: where it does, the camera-side gather already
-    // holds that light (marble_bounce) and the blur spreads it.
-    crossed = bounce_entering_at(P_in) * slab_transport(s * u_mm_per_unit) * hidden;
+    // by the same transport as the light's own (crossed_share). Only where the camera does not
+    // see the entry: where it does, the camera-side gather already holds that light
+    // (marble_bounce) and the blur spreads it.
+    crossed = bounce_entering_at(P_in) * crossed_share(s, cos_in, transport) * hidden;
   }
-  return entering + (light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight +
+  return entering + (light_irradiance(light_distance_of(P_in) - s) / PI * transport * weight +
                      u_light_radiance * crossed) * u_translucency;
 }
 

@@ -103,7 +103,7 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
 // light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
 // (bounce_sample_lod; bilinear within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, bool behindAPart) {
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
   if (pw.w <= 0.0) return vec4(0.0);
@@ -126,7 +126,7 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, boo
   if (bounce_occluded_near_receiver(P, xp)) return vec4(0.0);
 #endif
   // A receiver in another part's shadow: no light through that part's stone (bounce_through_stone.glsl).
-  if (behindAPart && bounce_crosses_stone(P, xp)) return vec4(0.0);
+  if (stone.behind && bounce_crosses_stone(P, stone, xp)) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
@@ -157,8 +157,8 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
   float centreTexels = PI * inner * inner * size * size;
-  bool behindAPart = bounce_behind_first_part(P);  // once per receiver (bounce_through_stone.glsl)
-  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod), behindAPart);
+  BounceStoneReceiver stone = bounce_stone_receiver(P, clip);  // once per receiver (bounce_through_stone.glsl)
+  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod), stone);
   // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
   // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
   // outer four rings keep the angles they had when there were four (session 11): the new inner two
@@ -176,7 +176,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     vec2 dir = ringDir;
     ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, behindAPart);
+      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, stone);
       dir = rotate2(dir, byStep);
     }
   }

@@ -36,29 +36,43 @@ uniform float u_light_layer_texel_world;
 const int BOUNCE_STONE_POINTS = 3;
 const float BOUNCE_BEHIND_TEXELS = 2.0;
 
-// The layers (entry, exit light distances) at q's texel, and q's own light distance in z; entry
-// kNoLayer (no part) off the map.
-vec3 bounce_layers_at(vec3 q) {
-  vec4 clip = u_light_view_proj * vec4(q, 1.0);
+// What the test needs of the receiver, computed once per gather (bounce_gather): whether it lies
+// behind the first part, and its light-clip position, which the way's points interpolate (clip
+// coordinates are linear in the position: one projection per sample, the emitter's).
+struct BounceStoneReceiver {
+  bool behind;
+  vec4 clip;  // u_light_view_proj * P
+};
+
+// The layers' texel under a light-clip position (-1 off the map).
+ivec2 bounce_layers_texel(vec4 clip) {
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return vec3(1e30, 1e30, 0.0);
-  return vec3(texelFetch(u_bounce_layers, ivec2(uv * vec2(textureSize(u_bounce_layers, 0))), 0).xy, light_distance_of(q));
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return ivec2(-1);
+  return ivec2(uv * vec2(textureSize(u_bounce_layers, 0)));
 }
 
-// True where the receiver P lies behind the first part the light meets along its ray (layers.y
-// 1e30: LightDepthPass::kNoLayer, no exit: no part).
-bool bounce_behind_first_part(vec3 P) {
-  vec3 l = bounce_layers_at(P);
-  return l.y < 1e20 && l.z > l.y + BOUNCE_BEHIND_TEXELS * u_light_layer_texel_world;
+// P behind the first part the light meets along its ray (layers.y 1e30: LightDepthPass::kNoLayer,
+// no exit: no part)?
+BounceStoneReceiver bounce_stone_receiver(vec3 P, vec4 clipP) {
+  ivec2 t = bounce_layers_texel(clipP);
+  float exitDistance = t.x < 0 ? 1e30 : texelFetch(u_bounce_layers, t, 0).y;
+  return BounceStoneReceiver(exitDistance < 1e20 && light_distance_of(P) > exitDistance + BOUNCE_BEHIND_TEXELS * u_light_layer_texel_world, clipP);
 }
 
 // True where a point of the segment from the receiver P to the emitter xp lies in the stone of the
 // first part the light meets there.
-bool bounce_crosses_stone(vec3 P, vec3 xp) {
+bool bounce_crosses_stone(vec3 P, BounceStoneReceiver receiver, vec3 xp) {
   float tol = u_light_layer_texel_world;
+  vec4 clipX = u_light_view_proj * vec4(xp, 1.0);
+  vec2 size = vec2(textureSize(u_bounce_layers, 0));
   for (int i = 1; i <= BOUNCE_STONE_POINTS; ++i) {
-    vec3 l = bounce_layers_at(mix(P, xp, float(i) / float(BOUNCE_STONE_POINTS + 1)));
-    if (l.y < 1e20 && l.z > l.x + tol && l.z < l.y - tol) return true;
+    float f = float(i) / float(BOUNCE_STONE_POINTS + 1);
+    vec4 clip = mix(receiver.clip, clipX, f);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;  // off the map: air
+    vec2 layers = texelFetch(u_bounce_layers, ivec2(uv * size), 0).xy;
+    float d = light_distance_of(mix(P, xp, f));
+    if (layers.y < 1e20 && d > layers.x + tol && d < layers.y - tol) return true;
   }
   return false;
 }

@@ -12,15 +12,19 @@
 // statues' thick parts it is nothing (T(20 mm) / R_inf = 0.006, session 10's slab fit). A receiver
 // on the first part itself (its own exit side) keeps the light through its own stone: there it
 // stands in for the part's own glow, which marble's transmission leaves short on the back-lit
-// dragon's thin coils; testing every receiver (s22-cross) took that and cost dragon-back 0.020
-// (docs/quality.md, "Twenty-second session: the bounce through the stone against the light's entry
-// and exit layers"; this rule: "Twenty-third session: ...").
+// dragon's thin coils; testing every receiver (s22-cross) took that and cost dragon-back 0.016 on
+// session 22's main, where testing only the receivers behind a part costs it 0.0019 and keeps all of
+// buddha-side's gain (+0.0040; docs/quality.md, "Twenty-third session: the bounce through another
+// part's stone, for receivers in that part's light shadow").
+// Cost: on llvmpipe the gate saves nothing (a draw's lanes take both ways), so every receiver pays
+// the per-sample test: +12.5 M instructions of the dragon's 800² camera frame (docs/performance.md).
 // Approximations, each stated:
 // - "behind" is more than BOUNCE_BEHIND_TEXELS layer texels beyond the exit of the first part at
 //   the receiver's own texel (nearest read); a receiver on that part's exit face is on it, not
 //   behind it. Measured 2, 6, 15: 2 the best for buddha-side, 15 loses most of it;
 // - BOUNCE_STONE_POINTS points evenly spaced strictly inside the segment: a part thinner than the
-//   spacing between two points is stepped over (5 points measured no better than 3);
+//   spacing between two points is stepped over (5 points measured no better than 3; the midpoint
+//   alone keeps half buddha-side's gain and all of dragon-back, for the same mean);
 // - the layers hold the first part along each light ray only: a second part behind it is not
 //   stone to this test, nor is the air between two parts (the shade between dragon-side's coils
 //   keeps its bounce, which a test against the light's one depth map removed: s22-side, -0.05);

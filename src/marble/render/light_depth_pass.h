@@ -29,11 +29,12 @@ public:
   // At a quarter of the size, the distance from the light to the nearest surface facing it and to
   // the nearest facing away (RG32F, nearest; kNoLayer where there is none): where the light enters
   // and leaves the first part it meets (light_layers.frag.glsl), for the hidden mirror image
-  // (hidden_mirror.glsl).
+  // (hidden_mirror.glsl), and for the bounce's visibility through the stone (bounce_through_stone.glsl).
   GLuint layersTexture() const { return layers_.id(); }
   static constexpr float kNoLayer = 1e30f;
   int size() const { return size_; }
   int bounceSize() const { return bounceSize_; }  // the reflective shadow map's finest width
+  int layersSize() const { return layersSize_; }  // the layers' width
   // distance 8 + depth 4 bytes a texel; the reflective shadow map's position 16 + normal 16 (its
   // mipmaps a third more) + depth 4 at its own size; the layers 8 at theirs.
   size_t bytes() const {

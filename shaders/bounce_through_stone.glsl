@@ -24,7 +24,7 @@
 //   behind it. Measured 2, 6, 15: 2 the best for buddha-side, 15 loses most of it;
 // - BOUNCE_STONE_POINTS points evenly spaced strictly inside the segment: a part thinner than the
 //   spacing between two points is stepped over (5 points measured no better than 3; the midpoint
-//   alone keeps half buddha-side's gain and all of dragon-back, for the same mean);
+//   alone keeps half buddha-side's gain and all of dragon-back, for the same mean: kept);
 // - the layers hold the first part along each light ray only: a second part behind it is not
 //   stone to this test, nor is the air between two parts (the shade between dragon-side's coils
 //   keeps its bounce, which a test against the light's one depth map removed: s22-side, -0.05);
@@ -37,7 +37,7 @@
 layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit
 uniform float u_light_layer_texel_world;
 
-const int BOUNCE_STONE_POINTS = 3;
+const int BOUNCE_STONE_POINTS = 1;  // the midpoint: the lead chose it at the merge (same mean as 3, no scene down)
 const float BOUNCE_BEHIND_TEXELS = 2.0;
 
 // What the test needs of the receiver, computed once per gather (bounce_gather): whether it lies

@@ -20,7 +20,8 @@
 //   the receiver's tangent plane and every receiver behind the emitter's, so a convex surface
 //   receives none. Since session 22 the camera-side gathers (which define BOUNCE_SCREEN_OCCLUSION
 //   and include bounce_screen_occlusion.glsl first) drop a sample whose way runs into stone next to
-//   the receiver, one point tested against the camera's depth buffer;
+//   the receiver, one point tested against the camera's depth buffer, and since session 23 a receiver in another
+//   part's light shadow takes no sample whose way crosses that part's stone (bounce_through_stone.glsl);
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
@@ -45,6 +46,7 @@
 
 layout(binding = UNIT_LIGHTING_BOUNCE_POSITION) uniform sampler2D u_bounce_position;
 layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
+#include "bounce_through_stone.glsl"
 
 // Six rings: the innermost disk's radius (BOUNCE_RADIUS / 2^BOUNCE_RINGS = 1/128 of the map's
 // width) is one texel of the map's finest level (LightDepthPass: 1024 / 8 = 128 texels across).
@@ -101,7 +103,7 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
 // light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
 // (bounce_sample_lod; bilinear within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
   vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
   if (pw.w <= 0.0) return vec4(0.0);
@@ -123,6 +125,8 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod) {
   // (bounce_screen_occlusion.glsl); after the cosines, so only samples that would bring light test it.
   if (bounce_occluded_near_receiver(P, xp)) return vec4(0.0);
 #endif
+  // A receiver in another part's shadow: no light through that part's stone (bounce_through_stone.glsl).
+  if (stone.behind && bounce_crosses_stone(P, stone, xp)) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the
@@ -153,7 +157,8 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec4 sum = vec4(0.0);
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
   float centreTexels = PI * inner * inner * size * size;
-  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod));
+  BounceStoneReceiver stone = bounce_stone_receiver(P, clip);  // once per receiver (bounce_through_stone.glsl)
+  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod), stone);
   // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
   // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
   // outer four rings keep the angles they had when there were four (session 11): the new inner two
@@ -171,7 +176,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     vec2 dir = ringDir;
     ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod);
+      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, stone);
       dir = rotate2(dir, byStep);
     }
   }

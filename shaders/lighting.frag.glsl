@@ -402,6 +402,28 @@ vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   return mix(straight, rings, blend);
 }
 
+// The share of the first bounce entering at the transmission's entry (bounce_entry.glsl) that
+// leaves here: the transport the light's own entering light gets (`transport`,
+// gathered_transport: the rings' spread over the entries around the chord beyond GLOW_FROM_MM,
+// the straight model below it) per unit of light entering at the centre entry, i.e. with the
+// light's coupling there, cos_in principled_entry(cos_in), divided out. Until session 23 the
+// bounce crossed by the straight model alone, slab_transport at the chord along the light,
+// beside the light's rings: on a flat plate 12 mm thick lit at 45 degrees that carried 0.10-0.41
+// of the light's own share (tests/bounce_entry_gl_test.cpp; 0.65-0.80 now), too little, and over
+// curved parts 5-20 mm thick up to 1.2-2.8x too much (the straight model against the rings there,
+// hidden_mirror.glsl, "Eleventh session": teapot-back's spout and shoulder, red where Cycles'
+// indirect light is grey). Approximation: the bounce enters over the same ring of entries
+// as the light, weighted by the light's cosine at each (it arrives diffusely, from the lit parts
+// around, not along the light); exact where the entries' cosines are the centre's (a flat part).
+// CROSSED_MIN_COS keeps a grazing centre entry from dividing the rings' steeper entries by a
+// vanishing cosine (the ten reference scenes the same to 4 digits with 1e-30 in its place).
+// Docs/quality.md, "Twenty-third session: teapot-back".
+const float CROSSED_MIN_COS = 0.1;
+vec3 crossed_share(float cos_in, vec3 transport) {
+  float c = max(cos_in, CROSSED_MIN_COS);
+  return transport / (c * principled_entry(c));
+}
+
 #include "hidden_mirror.glsl"
 
 // How much the camera sees of `entry` (where the transmitted light entered the stone): 1 where
@@ -476,6 +498,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
   float cos_in = s_cos.y;
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
+  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);
   vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
@@ -486,13 +509,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s
     float hidden = (1.0 - entry_seen(P_in + light_vector(P_in) * s, tol)) * (1.0 - smoothstep(-0.1, 0.0, NoL));
     weight = mix(weight, 1.0, hidden);
     // The first bounce entering at the same entry (bounce_entry.glsl), carried through the chord
-    // as light entering at normal incidence is (slab_transport: the straight model alone, without
-    // the rings' spread, which matters only where the chord is too long for it to be seen). Only
-    // where the camera does not see the entry: where it does, the camera-side gather already
-    // holds that light (marble_bounce) and the blur spreads it.
-    crossed = bounce_entering_at(P_in) * slab_transport(s * u_mm_per_unit) * hidden;
+    // by the same transport as the light's own (crossed_share). Only where the camera does not
+    // see the entry: where it does, the camera-side gather already holds that light
+    // (marble_bounce) and the blur spreads it.
+    crossed = bounce_entering_at(P_in) * crossed_share(cos_in, transport) * hidden;
   }
-  return entering + (light_irradiance(light_distance_of(P_in) - s) / PI * gathered_transport(P_in, s, cos_in, glow_rings) * weight +
+  return entering + (light_irradiance(light_distance_of(P_in) - s) / PI * transport * weight +
                      u_light_radiance * crossed) * u_translucency;
 }
 

@@ -1,27 +1,30 @@
-// The first bounce that enters a thin part on its lit side and crosses it (shaders/bounce_entry.
+// The first bounce that enters a part on its lit side and crosses it (shaders/bounce_entry.
 // frag.glsl, bounce_entry.glsl; docs/quality.md, "Fifteenth session: teapot-back's indirect light
-// is the parts' lit rims lighting each other"). A thin plate (5 mm at 100 mm per unit) with a wall
-// standing on it, the light from above at 45 degrees on the wall's side: the wall's face and the
-// plate's top are lit, and the wall's face sends light onto the plate's top. Seen from above, the
-// plate's top gains that bounce (the camera-side gather); seen from below, its underside gains the
-// same light carried through the plate's chord along the light (5 mm / cos 45), which the
-// camera-side gather cannot give (the underside faces away from the wall). The gain below over the
-// gain above is the slab's transport at that chord, T(s) (marble::slabTransportAt, the shader's
-// own table), to within what the top's gain holds beside the first bounce: the further bounces
-// (the plate and the wall seeing each other again) and the bounce the top's specular layer
-// mirrors, both absent from the transmitted light.
-// Measured: 0.84 and 0.97 of T(s) at 0.2 and 0.35 from the wall; allowed 0.6-1.25. Control (the
-// crossing term removed from lighting.frag.glsl, rebuilt): 0.005 (fails).
+// is the parts' lit rims lighting each other"). A plate with a wall standing on it, the light from
+// above at 45 degrees on the wall's side: the wall's face and the plate's top are lit, and the
+// wall's face sends light onto the plate's top. Seen from above, the plate's top gains that bounce
+// (the camera-side gather); seen from below, its underside gains the same light carried through
+// the plate, which the camera-side gather cannot give (the underside faces away from the wall).
+// That light enters where the light's own enters and crosses the plate by the same transport
+// (lighting.frag.glsl, crossed_share; docs/quality.md, "Twenty-third session: teapot-back"), so
+// the share of the wall's bounce that reaches the underside (gain below / gain above) equals the
+// share of the light's own (below / above, without the wall), to within what the top's light holds
+// beside what enters it: in the wall's gain the further bounces (the plate and the wall seeing
+// each other again) and the bounce the top's specular layer mirrors, in the light's the specular
+// layer; both make the ratio below 1.
+// Until session 23 the bounce crossed by the straight model at the chord along the light,
+// slab_transport(s), and the thin plate's test compared with that: 0.84 and 0.97 of T(s) at 0.2
+// and 0.35 from the wall; control (the crossing term removed): 0.005.
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <utility>
 
 #include "box_mesh.h"
 #include "gl_support.h"
 #include "image_probe.h"
 #include "principled_stone.h"
 #include "marble/mesh/vertex_normals.h"
-#include "marble/scene/slab_transport.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -30,14 +33,14 @@ namespace {
 
 using namespace marble::test::thin_plate;
 
-Scene plateScene(bool fromBelow) {
+Scene plateScene(bool fromBelow, float plate = kPlate) {
   Scene s;
   s.mesh = "test:plate-with-wall";
   s.mm_per_unit = 100.0f;
   s.render.width = s.render.height = 256;
   s.render.mode = RenderMode::Marble;
   s.render.environment = Environment::None;
-  const float y = fromBelow ? kPlateTop - kPlate : kPlateTop;
+  const float y = fromBelow ? kPlateTop - plate : kPlateTop;
   s.camera.position = {kWall + 1.2f, y + (fromBelow ? -1.6f : 1.6f), 0.0f};
   s.camera.target = {kWall + 0.3f, y, 0.0f};
   s.camera.fov_y_deg = 40;
@@ -48,31 +51,59 @@ Scene plateScene(bool fromBelow) {
   return s;
 }
 
-// Radiance with the wall less without it at the plate's point d from the wall, on its top or its
-// underside.
-glm::vec3 gainFromTheWall(bool fromBelow, float d) {
-  const Scene s = plateScene(fromBelow);
-  const HdrPair img = renderHdrPair(s, plateWithWall(true), plateWithWall(false));
-  const glm::vec3 p{kWall + d, fromBelow ? kPlateTop - kPlate : kPlateTop, 0.0f};
-  return linearRgbAround(img.first, s, p) - linearRgbAround(img.second, s, p);
+// The plate `plate` thick (scene units), with the wall standing on its end or without it.
+Mesh plateOfThickness(float plate, bool withWall) {
+  Mesh m;
+  if (withWall) addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  addBox(m, {kWall, kPlateTop - plate, -1.0f}, {1.0f, kPlateTop, 1.0f});
+  computeVertexNormals(m, 60.0f);  // flat faces
+  return m;
+}
+
+// Radiance at the plate's point d from the wall, on its top or its underside: .first with the
+// wall less without it (the wall's bounce), .second without the wall (the light's own).
+std::pair<glm::vec3, glm::vec3> bounceAndOwnLight(float plate, bool fromBelow, float d) {
+  const Scene s = plateScene(fromBelow, plate);
+  const HdrPair img = renderHdrPair(s, plateOfThickness(plate, true), plateOfThickness(plate, false));
+  const glm::vec3 p{kWall + d, fromBelow ? kPlateTop - plate : kPlateTop, 0.0f};
+  const glm::vec3 without = linearRgbAround(img.second, s, p);
+  return {linearRgbAround(img.first, s, p) - without, without};
+}
+
+// The share of the wall's bounce that crosses a plate `plate` thick over the share of the light's
+// own, per channel, at 0.2 and 0.35 from the wall; each must lie in [0.6, 1.25].
+void expectBounceCrossesAsTheLight(float plate) {
+  for (float d : {0.2f, 0.35f}) {
+    const auto above = bounceAndOwnLight(plate, false, d), below = bounceAndOwnLight(plate, true, d);
+    ASSERT_GT(above.first.g, 0.0f) << "the wall lights the plate's top";
+    ASSERT_GT(below.second.g, 0.0f) << "the light crosses the plate";
+    for (int c = 0; c < 3; ++c) {
+      const float bounceShare = below.first[c] / above.first[c], lightShare = below.second[c] / above.second[c];
+      std::cout << "[          ] plate " << plate << ", d " << d << ", channel " << c << ": the bounce's share "
+                << bounceShare << ", the light's " << lightShare << ", ratio " << bounceShare / lightShare << "\n";
+      EXPECT_GT(bounceShare / lightShare, 0.6f) << "d " << d << " channel " << c;
+      EXPECT_LT(bounceShare / lightShare, 1.25f) << "d " << d << " channel " << c;
+    }
+  }
 }
 
 }  // namespace
 
+// 5 mm (the chord along the light 7 mm). Measured: 0.68-0.82. Controls (lighting.frag.glsl
+// changed by hand, rebuilt): the crossing term removed 0-0.002, the straight model alone (as
+// before session 23) 0.37-0.56; both fail.
 TEST(BounceEntry, LightBouncedOntoAThinPartsLitSideCrossesIt) {
   HeadlessContext& context = glContext();
   (void)context;
-  const Scene s = plateScene(true);
-  const glm::vec3 T = slabTransportAt(slabTransportFor(s.material), kPlate * s.mm_per_unit / std::sqrt(0.5f));
-  for (float d : {0.2f, 0.35f}) {
-    const glm::vec3 above = gainFromTheWall(false, d), below = gainFromTheWall(true, d);
-    std::cout << "[          ] d " << d << ": gain above " << above.g << ", below " << below.g << ", T " << T.g
-              << ": below / (above T) " << below.g / (above.g * T.g) << "\n";
-    ASSERT_GT(above.g, 0.0f) << "the wall lights the plate's top";
-    for (int c = 0; c < 3; ++c) {
-      const float ratio = below[c] / (above[c] * T[c]);
-      EXPECT_GT(ratio, 0.6f) << "d " << d << " channel " << c;
-      EXPECT_LT(ratio, 1.25f) << "d " << d << " channel " << c;
-    }
-  }
+  expectBounceCrossesAsTheLight(kPlate);
+}
+
+// 12 mm (the chord 17 mm: the transmission's rings, not the straight model, carry the light).
+// Measured: 0.65-0.80. Control (the bounce by the straight model alone, slab_transport(s), as
+// before session 23; rebuilt): 0.10-0.41, fails: on a flat plate the straight model at the chord
+// along the light carries less than the rings, which cross it at about its thickness.
+TEST(BounceEntry, CrossesAThickPartAsTheLightEnteringWithItDoes) {
+  HeadlessContext& context = glContext();
+  (void)context;
+  expectBounceCrossesAsTheLight(0.12f);
 }

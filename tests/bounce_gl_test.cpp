@@ -88,28 +88,28 @@ Scene cornerScene(float albedo, float h = kHeight, float lightElevationDeg = 90.
   return s;
 }
 
-// The midpoint rule over the plate's top face (x from kWall to 1, z from -1 to 1) on a 400 x 800
-// grid: the sum of f(x, z) dA (converged to 0.1 % for the integrands below).
+// The midpoint rule over the plate's top face (x from x0 to x1, by default kWall to 1, z from -1
+// to 1) on a 400 x 800 grid: the sum of f(x, z) dA (converged to 0.1 % for the integrands below).
 template <class Integrand>
-double overThePlate(Integrand f) {
+double overThePlate(Integrand f, double x0 = kWall, double x1 = 1.0) {
   const int nx = 400, nz = 800;
-  const double dx = (1.0 - kWall) / nx, dz = 2.0 / nz;
+  const double dx = (x1 - x0) / nx, dz = 2.0 / nz;
   double sum = 0.0;
   for (int i = 0; i < nx; ++i)
-    for (int k = 0; k < nz; ++k) sum += f(kWall + (i + 0.5) * dx, -1.0 + (k + 0.5) * dz) * dx * dz;
+    for (int k = 0; k < nz; ++k) sum += f(x0 + (i + 0.5) * dx, -1.0 + (k + 0.5) * dz) * dx * dz;
   return sum;
 }
 
-// ∫ cosθ_p cosθ_x / (π r²) dA over the plate's top face (normal +y) seen from the probe (normal
-// +x) at height h.
-double viewFactorOfPlate(float h) {
+// ∫ cosθ_p cosθ_x / (π r²) dA over the plate's top face (normal +y; x from x0 to x1) seen from the
+// probe (normal +x) at height h.
+double viewFactorOfPlate(float h, double x0 = kWall, double x1 = 1.0) {
   const glm::vec3 q = probe(h);
   return overThePlate([&](double x, double z) {
     const double ux = x - q.x, uy = kPlateTop - q.y, uz = z - q.z;  // probe -> emitter
     const double r2 = ux * ux + uy * uy + uz * uz;
     const double cosX = ux / std::sqrt(r2), cosP = -uy / std::sqrt(r2);
     return cosP * cosX / (M_PI * r2);
-  });
+  }, x0, x1);
 }
 
 // The light the plate sends the probe per unit of the probe's albedo x 41/42, when the light (a
@@ -145,7 +145,8 @@ std::pair<double, double> grazingBounceOfPlate(float albedo, float h, float elev
 // albedo x E c principled_entry(c) / PI, times F(n.v) (Schlick, F0 0.04) and the receiver's lobe
 // ∫ (kGloss + 1) / (2π) cos^kGloss θ_r cosθ_p / r² dA over the plate's top face, θ_r from the
 // mirror direction of v about the face's normal (+x).
-double mirroredPlate(float albedo, float h, glm::dvec3 v, float elevationDeg = 90.0f) {
+double mirroredPlate(float albedo, float h, glm::dvec3 v, float elevationDeg = 90.0f, double x0 = kWall,
+                     double x1 = 1.0) {
   const glm::vec3 q = probe(h);
   const glm::dvec3 r(v.x, -v.y, -v.z);  // reflect(-v, +x)
   const double m = 1.0 - v.x, F = 0.04 + 0.96 * m * m * m * m * m;
@@ -155,7 +156,7 @@ double mirroredPlate(float albedo, float h, glm::dvec3 v, float elevationDeg = 9
     const double r2 = glm::dot(u, u), len = std::sqrt(r2);
     const double cosR = std::max(glm::dot(r, u) / len, 0.0), cosP = -u.y / len;
     return (kGloss + 1.0) / (2.0 * M_PI) * std::pow(cosR, kGloss) * cosP / r2;
-  });
+  }, x0, x1);
   return radiance * F * lobe;
 }
 // The corner scene's camera looks at the probe face head-on.
@@ -577,4 +578,74 @@ TEST_F(Bounce, NoneThroughAThinBlockBesideTheFace) {
   std::cout << "[          ] the plate's light unobstructed " << unobstructed.g << ", with the block in the way "
             << throughTheBlock.g << " (" << throughTheBlock.g / unobstructed.g << ")\n";
   for (int c = 0; c < 3; ++c) EXPECT_LT(throughTheBlock[c], 0.5f * unobstructed[c]) << "channel " << c;
+}
+
+namespace {
+// A receiver in another part's light shadow, with lit stone beyond a block: the corner's wall with
+// an eave over the probe (x from kWall to kEaveOut, y from kEaveLow to kEaveLow + 0.1), the light
+// from above and +x at kTiltDeg from straight down, so the eave shadows the probe's face (the light
+// ray to the probe crosses the eave, then the air under it); a block standing on the plate from
+// x = kFarBlockNear to kFarBlockFar, its top just above the probe, so every way from the plate's lit
+// top beyond the block to the probe passes through the block in the middle of the way (at 1/4, 1/2
+// or 3/4 of it, which bounce_through_stone.glsl tests; beyond the eighth of the way next to the
+// probe that bounce_screen_occlusion.glsl tests: x = 0.15-0.21). The plate beyond the block is
+// lit (the block's and eave's shadows fall toward the wall).
+constexpr float kFarBlockNear = 0.3f, kFarBlockFar = 0.5f, kFarBlockTop = kPlateTop + kHeight + 0.05f;
+constexpr float kEaveOut = 0.25f, kEaveLow = kPlateTop + kHeight + 0.1f, kTiltDeg = 20.0f;
+Mesh shadowedCorner(bool block, float plateEnd) {
+  Mesh m;
+  addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  addBox(m, {kWall, kEaveLow, -1.0f}, {kEaveOut, kEaveLow + 0.1f, 1.0f});
+  addBox(m, {kWall, kPlateTop - 0.2f, -1.0f}, {plateEnd, kPlateTop, 1.0f});
+  if (block) addBox(m, {kFarBlockNear, kPlateTop, -1.0f}, {kFarBlockFar, kFarBlockTop, 1.0f});
+  computeVertexNormals(m, 60.0f);
+  return m;
+}
+}  // namespace
+
+TEST_F(Bounce, NoneThroughAnotherPartsStoneInItsShadow) {
+  // The probe lies behind the eave in the light's view (its shadow). Light from the plate beyond the
+  // block would reach it only through the block's stone, where it is the block's transmission, not
+  // the bounce (bounce_through_stone.glsl). So the plate beyond the block (x from kFarBlockFar to
+  // 1), measured as the picture with it less the picture with the plate ending at kFarBlockFar,
+  // brings the probe (nearly) nothing with the block, where without the block the same plate brings
+  // it its unobstructed light. The camera looks at the probe between the eave and the block.
+  Scene s = cornerScene(0.8f);
+  const float t = glm::radians(kTiltDeg);
+  s.light.position = {std::sin(t), std::cos(t), 0.0f};
+  s.camera.position = {4.0f, probe(kHeight).y + 3.9f * 0.45f, 0.0f};
+  s.camera.target = probe(kHeight);
+  const glm::vec3 q = probe(kHeight);
+  const HdrPair blocked = renderHdrPair(s, shadowedCorner(true, 1.0f), shadowedCorner(true, kFarBlockFar));
+  const HdrPair open = renderHdrPair(s, shadowedCorner(false, 1.0f), shadowedCorner(false, kFarBlockFar));
+  const glm::vec3 throughTheBlock = linearRgbAround(blocked.first, s, q) - linearRgbAround(blocked.second, s, q);
+  const glm::vec3 unobstructed = linearRgbAround(open.first, s, q) - linearRgbAround(open.second, s, q);
+  std::cout << "[          ] the plate beyond the block brings " << throughTheBlock.g << " through it, "
+            << unobstructed.g << " without it (" << throughTheBlock.g / unobstructed.g << ")\n";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(unobstructed[c], 0.0f) << "channel " << c;
+    EXPECT_LT(throughTheBlock[c], 0.2f * unobstructed[c]) << "channel " << c;
+  }
+}
+
+TEST_F(Bounce, TheLightThroughItsOwnPartStays) {
+  // The same corner and block with the light straight down and no eave: the probe, on the wall's
+  // face edge-on to the light, is behind no part, so the light from the plate beyond the block
+  // through the block is kept (on the back-lit dragon it stands in for the thin coils' own glow:
+  // bounce_through_stone.glsl); the s22-cross test removed it (0.0750 against 0.1480).
+  Scene s = cornerScene(0.8f);
+  s.camera.position = {4.0f, 2.5f, 0.0f};
+  const glm::vec3 q = probe(kHeight);
+  Mesh withBlock, cut;
+  for (auto [mesh, end] : {std::pair<Mesh*, float>{&withBlock, 1.0f}, {&cut, kFarBlockFar}}) {
+    addBox(*mesh, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+    addBox(*mesh, {kWall, kPlateTop - 0.2f, -1.0f}, {end, kPlateTop, 1.0f});
+    addBox(*mesh, {kFarBlockNear, kPlateTop, -1.0f}, {kFarBlockFar, kFarBlockTop, 1.0f});
+    computeVertexNormals(*mesh, 60.0f);
+  }
+  const HdrPair img = renderHdrPair(s, withBlock, cut);
+  const glm::vec3 got = linearRgbAround(img.first, s, q) - linearRgbAround(img.second, s, q);
+  const double beyond = 0.8 * 0.8 * (41.0 / 42.0) * viewFactorOfPlate(kHeight, kFarBlockFar, 1.0);
+  std::cout << "[          ] the plate beyond the block brings " << got.g << ", its diffuse model " << beyond << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_GT(got[c], 0.5 * beyond) << "channel " << c;
 }

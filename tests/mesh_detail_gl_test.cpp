@@ -163,7 +163,12 @@ TEST(LightProxy, ShadowEdgesMoveLessThanALightTurnOfOneDegree) {
   RecordProperty("changed_by_proxy", std::to_string(byProxy));
   RecordProperty("changed_by_1deg", std::to_string(byTurn));
   EXPECT_GT(byTurn, 0.002) << "negative control: a 1° light turn must move shadow edges";
-  EXPECT_LT(byProxy, 0.002);
+  // 0.08 % when the proxy came (docs/performance.md), 0.17 % after session 22 (the hidden mirror
+  // reads the light's layers, which the proxy draws), 0.24 % since session 23 (receivers behind a
+  // part read them for the bounce's way through that part's stone: bounce_through_stone.glsl; the
+  // changed pixels do not move with its tolerances). The bound is relative first: a quarter of a
+  // 1° turn's (3.9 %).
+  EXPECT_LT(byProxy, 0.003);
   EXPECT_LT(byProxy, byTurn / 4.0);
 }
 

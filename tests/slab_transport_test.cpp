@@ -61,6 +61,31 @@ TEST(SlabTransport, FallsWithThicknessAndEndsAtTheTable) {
   EXPECT_EQ(slabTransportAt(t, 60.0f).r, 0.0f);
 }
 
+// Through the thickest stone the table holds (tau 50-64, the thick body's chords: red's 40-51 mm,
+// blue's 24-31 mm) too few of the table's sampled walks got through, and those nodes come from the
+// same capped walk solved without sampling (tools/slab_walk_table.py, capped_walk_transmission).
+// Under Cycles' cap of 256 flights a walk spreads only about 13 optical units in depth, so ln T
+// bends down ever faster there; the straight line in ln T that continued the resolved nodes before
+// (session 23) kept the slope constant and read 1.1-15x too much light at tau 49-64.
+TEST(SlabTransport, TheCappedWalksTailFallsFasterThanAnExponential) {
+  const SlabTransport t = slabTransportFor(issueStone());
+  const auto tauAt = [&](int i) {
+    const float f = static_cast<float>(i) / static_cast<float>(kSlabTransportNodes - 1);
+    return t.tauMax * f * f;
+  };
+  for (int c = 0; c < 3; ++c) {
+    float previousSlope = 0.0f;
+    for (int i = kSlabTransportNodes - 5; i + 1 < kSlabTransportNodes; ++i) {
+      const float slope = (t.lnT[static_cast<size_t>(i) + 1][c] - t.lnT[static_cast<size_t>(i)][c]) / (tauAt(i + 1) - tauAt(i));
+      EXPECT_LT(slope, -0.2f) << "node " << i << ", channel " << c;
+      if (i > kSlabTransportNodes - 5) {
+        EXPECT_LT(slope, previousSlope - 0.005f) << "the tail bends down: node " << i << ", channel " << c;
+      }
+      previousSlope = slope;
+    }
+  }
+}
+
 TEST(SlabTransport, MoreAbsorptionLetsLessThrough) {
   // The same extinction, a lower single-scattering albedo: less through, relative to what each
   // reflects, from a few mean free paths on (through a thin slab the walk is short and absorption

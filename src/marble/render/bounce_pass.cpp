@@ -89,6 +89,12 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   glBindTextureUnit(shader::UNIT_LIGHTING_DEPTH, in.depth);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_POSITION, in.bouncePosition);
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_NORMAL, in.bounceNormal);
+  // The first bounce's visibility through the stone (bounce_through_stone.glsl): the layers, and
+  // their texel at the object for its tolerance (they span the bounding sphere's diameter, as the
+  // light's map: view_setup.h).
+  glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_LAYERS, in.lightLayers);
+  const float layerTexel = 2.0f * kBoundingRadius / static_cast<float>(std::max(in.lightLayersSize, 1));
+  for (const gl::Program* p : {&program_, &refineProgram_, &entryProgram_}) p->set("u_light_layer_texel_world", layerTexel);
   // A run without the gather has the last gather's view (only the material changed since).
   if (gather || gridDepthsStale_) {
     fillGridDepths(rect);

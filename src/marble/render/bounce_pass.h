@@ -48,6 +48,8 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 struct BounceInputs {
   GLuint normal, depth, bouncePosition, bounceNormal;  // the G-buffer's; the reflective shadow map
   int bounceMapSize;                                   // the reflective shadow map's finest width
+  GLuint lightLayers;                                  // the light's entry and exit layers (LightDepthPass)
+  int lightLayersSize;                                 // their width
 };
 
 class BouncePass {

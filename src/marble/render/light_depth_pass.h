@@ -38,12 +38,13 @@ public:
   // At a quarter of the size, the distance from the light to the nearest surface facing it and to
   // the nearest facing away (RG32F, nearest; kNoLayer where there is none): where the light enters
   // and leaves the first part it meets (light_layers.frag.glsl), for the hidden mirror image
-  // (hidden_mirror.glsl).
+  // (hidden_mirror.glsl), and for the bounce's visibility through the stone (bounce_through_stone.glsl).
   GLuint layersTexture() const { return maps().layers.id(); }
   static constexpr float kNoLayer = 1e30f;
   int size() const { return maps().size; }  // the maps in use (setMapSize)
   int fullSize() const { return full_.size; }
   int bounceSize() const { return maps().bounceSize; }  // the reflective shadow map's finest width
+  int layersSize() const { return maps().layersSize; }  // the layers' width
   size_t bytes() const { return full_.bytes() + (reduced_ ? reduced_->bytes() : 0); }
   PassTimer& timer() { return timer_; }
 

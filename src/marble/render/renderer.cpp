@@ -355,7 +355,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     if (stale(Pass::Bounce)) {
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
                            passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
-                           passes_->lightDepth.bounceSize()},
+                           passes_->lightDepth.bounceSize(), passes_->lightDepth.layersTexture(),
+                           passes_->lightDepth.layersSize()},
                           camera, light, scene.light, scene.material, lightTexelWorld, rect,
                           !cache_.currentButMaterial(Pass::Bounce, now));
       ran(Pass::Bounce);

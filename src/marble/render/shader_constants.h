@@ -36,7 +36,7 @@
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
   X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_upsample.glsl: the pass's further bounces */            \
   X(UNIT_LIGHTING_BOUNCE_ENTRY, 11)   /* bounce_entry.glsl: the bounce at the light's entries */         \
-  X(UNIT_LIGHTING_LIGHT_LAYERS, 12)   /* hidden_mirror.glsl: the light's entry and exit layers */        \
+  X(UNIT_LIGHTING_LIGHT_LAYERS, 12)   /* hidden_mirror.glsl, bounce_through_stone.glsl: the light's layers */ \
   /* bounce_refine_*.comp.glsl: the refined texels' list, its images, the workgroups' sizes */          \
   X(BUFFER_BOUNCE_REFINE_LIST, 0)                                                                       \
   X(IMAGE_BOUNCE_REFINED, 0)       /* the lighting pass's bounce texture (the coarse grid and the fine) */ \

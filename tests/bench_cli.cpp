@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli_support.h"
+#include "marble/core/image.h"
 
 using namespace marble::test;
 
@@ -134,6 +135,21 @@ TEST(CliBench, InteractionResolutionIsReported) {
   EXPECT_EQ(half.value("width", 0), 64) << "the target keeps its size";
 }
 
+// The light's maps at interaction detail: their size is reported and follows the resolution
+// scale only when asked for; --screenshot saves the last frame at the target's size.
+TEST(CliBench, InteractionLightMapsAreReportedAndTheLastFrameSaved) {
+  EXPECT_EQ(benchJson("--interaction-resolution 0.5").value("light_map_size", 0), 1024);
+  const auto reduced = benchJson("--motion light --interaction-resolution 0.5 --interaction-light-maps on");
+  EXPECT_EQ(reduced.value("light_map_size", 0), 512);
+  EXPECT_EQ(reduced["pass_runs"].value("light_depth", 0), 3);
+  const auto dir = tempDir("bench-shot");
+  const auto shot = dir / "last.png";
+  ASSERT_EQ(runMarble(kSmall + " --screenshot " + shot.string()).exitCode, 0);
+  const marble::ImageRGBA8 img = marble::readPng(shot);
+  EXPECT_EQ(img.width, 64);
+  EXPECT_EQ(img.height, 64);
+}
+
 TEST(CliBench, OtherModesHaveAnAlbedoPass) {
   const auto j = benchJson("--mode paper --motion pattern");
   EXPECT_EQ(j["pass_runs"].value("albedo", -1), 3);
@@ -167,7 +183,8 @@ TEST(CliBench, TablePrintsSpreadPassesAndMemory) {
 TEST(CliBench, BadInputIsOneLineAndExitTwo) {
   for (const std::string& args : {kSmall + " --motion wobble", std::string("bench --width 64 --height 64 --frames 0"), std::string("bench --width 64 --height 64 --warmup -1"),
                                  kSmall + " --mode sparkly", kSmall + " /nonexistent/mesh.obj",
-                                 kSmall + " --turbulence-grid maybe", kSmall + " --interaction-resolution 0.1"}) {
+                                 kSmall + " --turbulence-grid maybe", kSmall + " --interaction-resolution 0.1",
+                                 kSmall + " --interaction-light-maps half"}) {
     const auto r = runMarble(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
     EXPECT_EQ(countLines(r.output), 1u) << args << "\n" << r.output;

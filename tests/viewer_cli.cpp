@@ -146,6 +146,11 @@ TEST(ViewerCli, InteractionDetailSettingIsCheckedAndRuns) {
   EXPECT_NE(badScale.output.find("--interaction-resolution"), std::string::npos) << badScale.output;
   const auto light = runMarble("view --frames 4 --width 320 --height 240 --interaction-resolution 0.25 --turntable light", xvfb());
   EXPECT_EQ(light.exitCode, 0) << light.output;
+  const auto badMaps = runMarble("view --frames 1 --interaction-light-maps half", xvfb());
+  EXPECT_EQ(badMaps.exitCode, 2) << badMaps.output;
+  EXPECT_NE(badMaps.output.find("--interaction-light-maps"), std::string::npos) << badMaps.output;
+  const auto mapsOff = runMarble("view --frames 4 --width 320 --height 240 --interaction-light-maps off --turntable object", xvfb());
+  EXPECT_EQ(mapsOff.exitCode, 0) << mapsOff.output;
 }
 
 TEST(ViewerCli, BadMeshOnTheCommandLineIsOneLineAndExitTwo) {

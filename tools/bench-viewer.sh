@@ -6,7 +6,8 @@
 #   tools/bench-viewer.sh [MESH[@UP]] [--turntable object|light|off] [--frames N] [--view WxH] [-- VIEW OPTIONS]
 #
 # Options after `--` go to `marble view` (e.g. `-- --interaction-detail off --interaction-resolution 1`
-# for the full picture in every frame).
+# for the full picture in every frame, `-- --interaction-light-maps off` for the light's maps at
+# full size while the object turns).
 # MESH defaults to ../shared/models/dragon.obj@z (not part of the repository). The window is the
 # view plus the panel (390 pixels at scale 1), so --view 800x800 opens a 1190x800 window.
 # `object` turns the model every frame: every pass re-runs, as the paper's program does each frame.

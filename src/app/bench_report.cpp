@@ -32,8 +32,8 @@ void printBenchTable(const BenchResult& r) {
   std::printf("GL: %s; %s\n", r.glRenderer.c_str(), r.glVersion.c_str());
   std::printf("triangles %zu (%s order), mesh load %.1f ms, upload %.1f ms\n", r.triangles, r.drawOrder.c_str(),
               r.loadMs, r.uploadMs);
-  std::printf("light's pass draws %zu triangles (proxy error bound %.5f units)\n", r.lightTriangles,
-              r.lightProxyErrorUnits);
+  std::printf("light's pass draws %zu triangles (proxy error bound %.5f units); into %dx%d maps: %zu\n",
+              r.lightTriangles, r.lightProxyErrorUnits, r.lightMapSize, r.lightMapSize, r.lightMapTriangles);
   if (r.interactionTriangles > 0)
     std::printf("camera's passes draw the interaction copy: %zu triangles (made in %.1f ms)\n",
                 r.interactionTriangles, r.interactionMs);
@@ -75,6 +75,9 @@ void printBenchJson(const BenchResult& r) {
   j["interaction_triangles"] = r.interactionTriangles;
   j["interaction_ms"] = rounded(r.interactionMs);
   j["resolution_scale"] = r.resolutionScale;
+  j["light_map_size"] = r.lightMapSize;
+  j["light_map_triangles"] = r.lightMapTriangles;
+  j["light_map_mesh_ms"] = r.lightMapMeshMs;
   j["frame_ms_median"] = rounded(frame.median);
   j["frame_ms_min"] = rounded(frame.min);
   j["frame_ms_max"] = rounded(frame.max);

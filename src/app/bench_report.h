@@ -32,6 +32,9 @@ struct BenchResult {
   size_t interactionTriangles = 0;      // --interaction-detail on: what the camera's passes draw
   double interactionMs = 0;             // making that copy
   float resolutionScale = 1.0f;         // --interaction-resolution: the passes' share of width and height
+  int lightMapSize = 0;                 // the light's depth map's width (--interaction-light-maps)
+  size_t lightMapTriangles = 0;         // what the light's pass draws into maps of that size
+  double lightMapMeshMs = 0.0;          // making its copy (reduced maps of a mesh with a proxy)
   double loadMs = 0;        // reading and preparing the mesh (parse, normals, normalization)
   double uploadMs = 0;      // copying it into GL buffers
   std::string glRenderer, glVersion;

@@ -6,6 +6,7 @@
 #include "bench_motion.h"
 #include "bench_report.h"
 #include "marble/core/error.h"
+#include "marble/core/image.h"
 #include "marble/core/memory_usage.h"
 #include "marble/environment/environment_lighting.h"
 #include "marble/gl/headless_context.h"
@@ -69,6 +70,9 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--warmup", o.warmup, "Frames to render first and not measure (default 3)");
   cmd.add_option("--motion", o.motion, "What changes every frame: none, camera, light, both, params (gloss), scattering, pattern (default none)");
   cmd.add_flag("--json", o.json, "Print one JSON object instead of the table");
+  cmd.add_option("--screenshot", o.screenshot,
+                 "After the last frame, save it as PNG (a moving frame with --motion: what the interaction "
+                 "settings draw)");
   cmd.add_flag("--serial-passes", o.serialPasses,
                "Finish each pass before the next and time it by the wall clock (whole cost of each pass, "
                "vertex work included; frames get slower)");
@@ -94,6 +98,11 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                  "target (Renderer::setResolutionScale), as the viewer does while the view or the light moves; "
                  "1 (default): full resolution")
       ->check(CLI::Range(static_cast<double>(Renderer::kMinResolutionScale), 1.0));
+  cmd.add_option("--interaction-light-maps", o.interactionLightMaps,
+                 "on: the light's maps drawn at the --interaction-resolution share of their size "
+                 "(Renderer::LightMapDetail::Interaction), as the viewer does while the object or the light moves; "
+                 "off (default): full size")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 int runBenchCommand(const BenchOptions& o) {
@@ -144,6 +153,11 @@ int runBenchCommand(const BenchOptions& o) {
     }
     renderer.setResolutionScale(o.interactionResolution);
     r.resolutionScale = renderer.resolutionScale();
+    if (o.interactionLightMaps == "on") renderer.setLightMapDetail(Renderer::LightMapDetail::Interaction);
+    r.lightMapSize = renderer.lightMapSize();
+    t0 = wallMs();
+    r.lightMapTriangles = renderer.lightMapTriangleCount();  // a reduced maps' copy made here, outside the frames
+    r.lightMapMeshMs = wallMs() - t0;
     if (environment) renderer.setEnvironmentMap(*environment);
     OffscreenTarget target(r.width, r.height);
     Renderer::FrameToken shown;  // the frame `target` holds
@@ -171,6 +185,7 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (GLenum err = glGetError(); err != GL_NO_ERROR)
       throw EnvironmentError("OpenGL error " + std::to_string(err) + " while benchmarking");
+    if (!o.screenshot.empty()) writePng(o.screenshot, target.read());  // after the measured frames
 
     r.rssBytes = residentBytes();
     // The two counters are sampled differently by the kernel; a peak below the current

@@ -21,6 +21,8 @@ struct BenchOptions {
   std::string lightProxy = "on";      // --light-proxy on|off
   std::string interactionDetail = "off";  // --interaction-detail on|off
   float interactionResolution = 1.0f;      // --interaction-resolution: every frame drawn at this scale
+  std::string screenshot;  // --screenshot: the last frame as PNG (to see what the settings draw)
+  std::string interactionLightMaps = "off";  // --interaction-light-maps on|off: the light's maps at that scale
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);

@@ -71,6 +71,11 @@ int run(int argc, char** argv) {
                       "and height, stretched to the view, and at the full resolution on the first still frame "
                       "(default " + helpNumber(kDefaultInteractionResolution) + "; 1: off; at least " +
                           helpNumber(Renderer::kMinResolutionScale) + ")");
+  viewCmd->add_option("--interaction-light-maps", view.interactionLightMaps,
+                      "While the object or light moves, draw the light's maps at the --interaction-resolution share "
+                      "of their size (512x512 of 1024x1024 at 0.5), and at the full size on the first still frame: "
+                      "on (default), off")
+      ->check(CLI::IsMember({"on", "off"}));
   viewCmd->add_option("--turntable-speed", view.turntableSpeed, "Turntable speed in degrees per second (default 15; negative turns the other way)");
 
   TextureOptions texture;

@@ -136,6 +136,7 @@ int runViewCommand(const ViewOptions& o) {
     s.turntableDegPerSec = o.turntableSpeed;
     s.interactionDetail = parseInteractionDetail(o.interactionDetail);
     s.interactionResolution = parseInteractionResolution(o.interactionResolution);
+    s.interactionLightMaps = o.interactionLightMaps == "on";  // checked by the CLI
     adoptScene(s, buildScene(o.scene));  // a bad scene file fails here, before any window
     s.devMode = o.dev;
     const Mesh firstMesh = loadSceneMesh(s.scene);  // a bad mesh: one line, exit 2, no window flashes up
@@ -222,9 +223,11 @@ int runViewCommand(const ViewOptions& o) {
         const Scene scene = frameScene(s);
         const glm::mat4 model = modelMatrix(s);
         const InteractionFrame moving =
-            detail.next(s.interactionDetail, s.interactionResolution, renderer.triangleCount(), scene.camera, scene.light, model);
+            detail.next(s.interactionDetail, s.interactionResolution, s.interactionLightMaps, renderer.triangleCount(),
+                        scene.camera, scene.light, model);
         renderer.setMeshDetail(moving.mesh);
         renderer.setResolutionScale(moving.resolutionScale);
+        renderer.setLightMapDetail(moving.lightMaps);
         // A scripted screenshot (--frames N --screenshot) shows the finished picture, light proxy
         // included, whatever the machine's speed.
         if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForLightProxy();

@@ -15,6 +15,7 @@ struct ViewOptions {
   float turntableSpeed = 15.0f;   // degrees per second
   std::string interactionDetail = "auto";  // auto, on, off (interaction_detail.h)
   float interactionResolution = kDefaultInteractionResolution;  // while moving; 1: off
+  std::string interactionLightMaps = "on";  // the light's maps reduced while the object or light moves
 };
 
 int runViewCommand(const ViewOptions& o);

@@ -40,10 +40,11 @@ float parseInteractionResolution(float scale) {
 }
 
 InteractionFrame InteractionDetailTracker::next(InteractionDetailSetting meshSetting, float movingResolution,
-                                                size_t triangles, const Camera& camera, const Light& light,
+                                                bool reducedLightMaps, size_t triangles, const Camera& camera, const Light& light,
                                                 const glm::mat4& model) {
   // The mesh only matters to the camera's passes; the resolution to every pass, the light's too.
-  const bool viewMoved = seen_ && (!(camera == lastCamera_) || model != lastModel_);
+  const bool objectMoved = seen_ && model != lastModel_;
+  const bool viewMoved = objectMoved || (seen_ && !(camera == lastCamera_));
   const bool lightMoved = seen_ && !(light == lastLight_);
   seen_ = true;
   lastCamera_ = camera;
@@ -52,6 +53,8 @@ InteractionFrame InteractionDetailTracker::next(InteractionDetailSetting meshSet
   InteractionFrame f;
   if (viewMoved && interactionDetailApplies(meshSetting, triangles)) f.mesh = Renderer::MeshDetail::Interaction;
   if (viewMoved || lightMoved) f.resolutionScale = movingResolution;
+  // The light's maps only where they are redrawn anyway: a camera-only move reuses them as they are.
+  if (reducedLightMaps && (objectMoved || lightMoved)) f.lightMaps = Renderer::LightMapDetail::Interaction;
   return f;
 }
 

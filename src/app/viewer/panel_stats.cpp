@@ -36,6 +36,7 @@ void drawInteractionDetailSetting(ViewerState& s) {
   ImGui::SameLine();
   ImGui::TextDisabled(interactionDetailApplies(s.interactionDetail, s.triangles) ? "(on)" : "(off)");
   ImGui::SliderFloat("resolution moving", &s.interactionResolution, Renderer::kMinResolutionScale, 1.0f, "%.2f");
+  ImGui::Checkbox("light maps at that resolution", &s.interactionLightMaps);
   tooltip("Dynamic resolution: while the camera, the object or the light moves, every pass draws at this fraction of "
           "the view's width and height and the picture is stretched to the view; the first still frame is drawn at "
           "full resolution, exactly the full picture. 1: off.");

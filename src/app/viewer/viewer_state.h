@@ -70,6 +70,7 @@ struct ViewerState {
   bool vsync = true;
   InteractionDetailSetting interactionDetail = InteractionDetailSetting::Auto;  // the Performance section
   float interactionResolution = kDefaultInteractionResolution;                 // the same; 1: off
+  bool interactionLightMaps = true;  // the same: the light's maps at that resolution while the object or light moves
   bool showPanel = true;
   bool showHelp = false;
   bool devMode = false;

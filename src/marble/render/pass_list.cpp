@@ -74,7 +74,7 @@ constexpr bool inEnumOrder() {
 static_assert(inEnumOrder(), "passList() is indexed by Pass");
 
 constexpr const char* kInputLabels[] = {
-    "the light's mesh", "the camera's mesh (full or interaction copy)", "the environment map",
+    "the light's mesh and maps' size", "the camera's mesh (full or interaction copy)", "the environment map",
     "the turbulence grid setting", "the model transform", "the light's matrices", "the camera's matrices",
     "the frame size", "the light", "the camera", "the render mode", "the environment", "the subsurface resolution",
     "the object's size (mm per unit)", "how the pattern is seen (marble: through the polish)", "the rest of the scene",

@@ -46,7 +46,7 @@ struct PerPass {
 // What a pass reads besides the material and other passes' outputs. The first four are the
 // renderer's own state (changed by its setters), the rest come with each frame.
 enum class PassInput : uint8_t {
-  LightMesh,             // the mesh the light's pass draws (setMesh; the proxy)
+  LightMesh,             // the mesh the light's pass draws (setMesh; the proxy) and its maps' size (setLightMapDetail)
   CameraMesh,            // the mesh the camera's passes draw (setMesh; setMeshDetail)
   EnvironmentMap,        // the loaded map (setEnvironmentMap, clearEnvironmentMap)
   TurbulenceGrid,        // the pattern's baked turbulence on or off (setTurbulenceGridEnabled)

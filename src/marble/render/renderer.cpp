@@ -85,6 +85,7 @@ void Renderer::setMesh(const Mesh& mesh) {
 
 void Renderer::makeLightProxy() {
   lightMesh_.reset();
+  reducedLightMesh_.reset();
   lightProxyMesh_ = Mesh();
   lightProxyErrorUnits_ = 0.0f;
   lightProxyJob_.reset();  // a copy still being made for an earlier mesh is abandoned
@@ -92,7 +93,7 @@ void Renderer::makeLightProxy() {
   if (!lightProxyEnabled_ || triangles <= kLightProxyMinTriangles) return;
   const auto target = std::min(kLightProxyMaxTriangles,
                                static_cast<size_t>(static_cast<double>(triangles) * kLightProxyTriangleFraction));
-  const float maxError = lightProxyMaxErrorUnits(passes_->lightDepth.size());
+  const float maxError = lightProxyMaxErrorUnits(passes_->lightDepth.fullSize());
   if (lightProxyInBackground_) {
     lightProxyJob_.emplace(cpuMesh_, target, maxError);
     return;
@@ -104,6 +105,7 @@ void Renderer::useLightProxy(SimplifiedMesh proxy) {
   if (proxy.mesh.triangleCount() >= cpuMesh_.triangleCount()) return;  // nothing could be collapsed
   lightProxyErrorUnits_ = proxy.errorUnits;
   lightMesh_.emplace(proxy.mesh);
+  reducedLightMesh_.reset();
   lightProxyMesh_ = std::move(proxy.mesh);
 }
 
@@ -130,6 +132,24 @@ void Renderer::setLightProxyEnabled(bool enabled) {
   interactionIsLightProxy_ = false;
   cache_.changed(PassInput::LightMesh);
   interactionCopyRemade();
+}
+
+const GpuMesh& Renderer::lightMeshFor(int mapSize) {
+  if (mapSize >= passes_->lightDepth.fullSize() || !lightMesh_) return lightMesh();
+  if (!reducedLightMesh_ || reducedLightMeshSize_ != mapSize) {
+    // As many triangles as the map has fewer texels at most; the error bound binds first on the
+    // dragon (docs/performance.md, "Twenty-third session").
+    const double texelShare = std::pow(static_cast<double>(mapSize) / passes_->lightDepth.fullSize(), 2.0);
+    const auto target = std::max<size_t>(1, static_cast<size_t>(static_cast<double>(lightProxyMesh_.triangleCount()) * texelShare));
+    reducedLightMesh_.emplace(simplifiedMesh(lightProxyMesh_, target, lightProxyMaxErrorUnits(mapSize)).mesh);
+    reducedLightMeshSize_ = mapSize;
+  }
+  return *reducedLightMesh_;
+}
+
+size_t Renderer::lightMapTriangleCount() {
+  if (!mesh_) return 0;
+  return lightMeshFor(lightMapSize()).triangleCount();
 }
 
 size_t Renderer::lightTriangleCount() const {
@@ -195,11 +215,31 @@ void Renderer::reloadShaders() {
   fresh->post.compileAll();
   fresh->blur.compileAll();
   passes_ = std::move(fresh);
+  passes_->lightDepth.setMapSize(lightMapSize());
   invalidate();  // new passes: nothing they stored survives
 }
 
 void Renderer::setResolutionScale(float scale) {
   resolutionScale_ = std::clamp(scale, kMinResolutionScale, 1.0f);
+  updateLightMapSize();
+}
+
+void Renderer::setLightMapDetail(LightMapDetail detail) {
+  lightMapDetail_ = detail;
+  updateLightMapSize();
+}
+
+int Renderer::lightMapSize() const {
+  const int full = passes_->lightDepth.fullSize();
+  if (lightMapDetail_ == LightMapDetail::Full) return full;
+  return std::max(1, static_cast<int>(std::lround(static_cast<float>(full) * resolutionScale_)));
+}
+
+void Renderer::updateLightMapSize() {
+  const int size = lightMapSize();
+  if (size == passes_->lightDepth.size()) return;
+  passes_->lightDepth.setMapSize(size);
+  cache_.changed(PassInput::LightMesh);  // the light's pass draws other maps: it and its readers re-run
 }
 
 Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model, GLuint targetFbo, int width,
@@ -279,7 +319,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   };
   const LightMatrices& light = now.light;
   if (stale(Pass::LightDepth)) {
-    passes_->lightDepth.run(lightMesh(), model, light);
+    passes_->lightDepth.run(lightMeshFor(passes_->lightDepth.size()), model, light);
     passes_->bounce.markEntriesStale();
     ran(Pass::LightDepth);
   }
@@ -493,7 +533,7 @@ void Renderer::setLightCullsHiddenFaces(bool on) {
 size_t Renderer::glBytes() const {
   return passes_->lightDepth.bytes() + passes_->geometry.bytes() + passes_->albedo.bytes() +
          passes_->lighting.bytes() + passes_->blur.bytes() + passes_->blurDepth.bytes() + passes_->bounce.bytes() + passes_->post.bytes() + passes_->stage.bytes() + (displayImage_ ? displayImage_->bytes() : 0) +
-         (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) +
+         (mesh_ ? mesh_->bytes() : 0) + (lightMesh_ ? lightMesh_->bytes() : 0) + (reducedLightMesh_ ? reducedLightMesh_->bytes() : 0) +
          (interactionMesh_ ? interactionMesh_->bytes() : 0) + (environment_ ? environment_->bytes() : 0) + turbulence_.bytes() +
          (reducedFrame_ ? reducedFrame_->bytes() : 0);
 }
@@ -503,7 +543,10 @@ ImageRGBF Renderer::readHdr() {
   const int w = lastFrame_ ? lastFrame_->width : 0, h = lastFrame_ ? lastFrame_->height : 0;
   ImageRGBF img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   // Nothing to read when the G-buffer no longer holds the last frame's view (a new mesh, shaders).
-  if (!lastFrame_ || !cache_.current(Pass::Geometry, *lastFrame_) || w <= 0 || h <= 0) return img;
+  // Nor when the light's maps were redrawn or swapped since (a new mesh, setLightMapDetail).
+  if (!lastFrame_ || !cache_.current(Pass::Geometry, *lastFrame_) || !cache_.current(Pass::LightDepth, *lastFrame_) ||
+      w <= 0 || h <= 0)
+    return img;
   const FrameInputs& last = *lastFrame_;
   const float lightTexelWorld = 2.0f * kBoundingRadius / static_cast<float>(passes_->lightDepth.size());
   // The last frame once more, through the same post pass, into a float target, linear.

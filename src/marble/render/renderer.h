@@ -73,7 +73,7 @@ public:
   // the light's proxy where that is small enough, else made at the first request for this mesh;
   // a mesh without a proxy and no larger than that is its own copy). Changing it
   // re-runs the camera's passes, so the first Full frame after Interaction ones is exactly
-  // what a fresh renderer draws. The light's pass is not affected.
+  // what a fresh renderer draws. The light's pass is not affected (its maps: setLightMapDetail).
   enum class MeshDetail { Full, Interaction };
   void setMeshDetail(MeshDetail detail);
   MeshDetail meshDetail() const { return detail_; }
@@ -89,6 +89,24 @@ public:
   void setResolutionScale(float scale);
   float resolutionScale() const { return resolutionScale_; }
   static constexpr float kMinResolutionScale = 0.25f;
+
+  // Interaction detail for the light's maps (LightDepthPass): Interaction -- while the object or
+  // the light moves, when the light's pass re-runs every frame anyway -- draws them at the
+  // resolution scale's share of their full width (512² of 1024² at 0.5), so that a light texel
+  // covers as many of the reduced frame's pixels as of the full frame's (shadow edges, the
+  // thickness's steps and the bounce's texels stay as coarse as the frame around them); at scale
+  // 1 it is the full size. Full (default): the full size always. A change of the size re-runs the
+  // light's pass and every pass that reads its maps, and the full-size maps are never drawn at
+  // another size: the first Full (or scale 1) frame after Interaction ones is exactly what a
+  // fresh renderer draws. The viewer keeps Full while only the camera moves: its light's maps
+  // are current then and are not redrawn at all.
+  enum class LightMapDetail { Full, Interaction };
+  void setLightMapDetail(LightMapDetail detail);
+  LightMapDetail lightMapDetail() const { return lightMapDetail_; }
+  int lightMapSize() const;  // the width of the light's depth map the next frame draws and reads
+  // Triangles the light's pass draws into maps of lightMapSize(): below the full size, where there
+  // is a proxy, a coarser copy of it within half of that size's texel (made here if needed).
+  size_t lightMapTriangleCount();
 
   // The environment map used when a scene says "environment": "map" (uploaded here, once; the
   // precomputation is the caller's, before any GL: see loadEnvironmentMap). Without one, such
@@ -180,11 +198,21 @@ private:
   bool interactionIsFull_ = false;          // the mesh is small enough to be its own copy
   bool interactionIsLightProxy_ = false;    // the light's proxy is small enough to be the copy
   MeshDetail detail_ = MeshDetail::Full;
+  LightMapDetail lightMapDetail_ = LightMapDetail::Full;
+  // Sets the light pass's map size from lightMapDetail_ and resolutionScale_; a change makes the
+  // light's pass stale (PassInput::LightMesh).
+  void updateLightMapSize();
   void makeLightProxy();
   void useLightProxy(SimplifiedMesh proxy);
   void adoptLightProxy(bool wait);  // takes a finished (or, with wait, the pending) proxy
   const GpuMesh& cameraMesh();
   const GpuMesh& lightMesh() const { return lightMesh_ ? *lightMesh_ : *mesh_; }
+  // What the light's pass draws into maps of `mapSize`: at the full size lightMesh(); smaller, where
+  // there is a proxy, a coarser copy of it (made at its first use for that size), whose collapses
+  // stay within half of that size's texel, as the proxy's within half of the full size's.
+  std::optional<GpuMesh> reducedLightMesh_;
+  int reducedLightMeshSize_ = 0;
+  const GpuMesh& lightMeshFor(int mapSize);
   OccupancyGrid meshCells_;  // for the spans FXAA draws (screen_tiles.h)
   // FXAA's spans (the whole frame for views that are not of the mesh), made once per view
   // (model-view-projection and size).

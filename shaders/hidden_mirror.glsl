@@ -69,7 +69,18 @@
 // and the bounce's mirrored part's choice; exact for a flat stone). Not the transmission's ring
 // gather, which reads 24 entries: over 3 mm chords the straight model is 1.2-2.8x the gather on
 // curved parts (teapot-back's 5-20 mm, "Eleventh session"), where T is small; nor the hit's own
-// bounce and direct light (an exit face faces away from the light). The result joins the light
+// direct light (an exit face faces away from the light).
+// The face's indirect light (since session 23): the face also sends what the bounces bring it,
+// which the layers cannot gather; it is taken as P's own diffuse bounce (marble_bounce without its
+// mirrored part; lighting.frag.glsl's main adds it to this light): the face lies across a crease or
+// behind a part from P, millimetres to a third of the object away, where the bounces' light changes
+// slowly (their emitters are the whole lit side). Against Cycles' mirror image (session 19's
+// camera-specular split) where the march meets an exit face, marble's light there was 0.45 / 0.69
+// of Cycles' on dragon-back / buddha-back without it; with it dragon-back +0.0009, buddha-back and
+// teapot-back +0.0004 SSIM, no scene down more than 0.0001 (docs/quality.md, "Twenty-third session:
+// the mirrored highlights ..."). Error: P's bounce for the face's, exact where the two receive
+// alike; low where P lies deep in a crease and the face in the open, high the other way round.
+// The result joins the light
 // entering at P, so the subsurface blur spreads it as it does the bounce's mirrored part (session
 // 19: the mirrored part unblurred moved SSIM by under 0.001).
 // Cost: a quad marches only where one of its texels' screen march found nothing

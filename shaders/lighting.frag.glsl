@@ -464,17 +464,14 @@ float entry_seen(vec3 entry, float tol) {
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
 // P_in and s_cos: the transmission's exit and transmission_thickness(P_in), computed once in main()
-// for this and glow_rings_shared.
-vec3 marble_entering(vec3 P, vec3 N, vec3 V, vec3 L, ivec2 px, vec3 P_in, vec2 s_cos, vec3 glow_rings,
-                     bool mirrorsVisible) {
+// for this and glow_rings_shared. bounce: light bounced off the object's other lit parts
+// (marble_bounce, bounce.glsl, gathered by the bounce pass), computed in main(), which also lends it
+// to the hidden mirror's face (hidden_mirror.glsl).
+vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_rings, vec3 bounce) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
   float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
-  // Light bounced off the object's other lit parts (bounce.glsl, gathered by the bounce pass).
-  // Its mirrored part only where the mirror ray meets no surface on screen, which the post pass
-  // mirrors instead (mirrorsVisible: self_reflection_hit, written to o_mirror_hit for it).
-  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) +
-                  marble_bounce(P, N, px, mirrorsVisible ? 0.0 : 1.0);
+  vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + bounce;
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and
   // with the Principled coupling (as the direct light), and crossed s millimetres of stone to leave
@@ -584,8 +581,15 @@ void main() {
     // hidden surface, for the post pass).
     if (hit.x >= 0) hidden = vec4(0.0);
     o_mirror_hit = vec4(hidden.a > 0.0 ? vec2(-2.0) : vec2(hit), 0.0, 0.0);
-    vec3 mirrored = fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * hidden.rgb;
-    o_diffuse = vec4(marble_entering(P, N, V, L, px, P_in, s_cos, glow_rings, hit.x >= 0 || hidden.a > 0.0) + mirrored,
+    // The bounce's mirrored part only where the mirror ray meets no surface, on screen (the post
+    // pass mirrors that one) or hidden.
+    bool mirrorsSurface = hit.x >= 0 || hidden.a > 0.0;
+    vec3 bounce = marble_bounce(P, N, px, mirrorsSurface ? 0.0 : 1.0);
+    // The hidden face's light: its glow (hidden.rgb) and its own indirect light, taken as P's
+    // diffuse bounce (hidden_mirror.glsl, "the face's indirect light"); without its mirrored part
+    // wherever hidden.a > 0, so `bounce` is that diffuse part there.
+    vec3 mirrored = fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * (hidden.a > 0.0 ? hidden.rgb + bounce : vec3(0.0));
+    o_diffuse = vec4(marble_entering(P, N, L, P_in, s_cos, glow_rings, bounce) + mirrored,
                      linear_depth(depth, u_camera_near_far));
     return;
   } else if (u_mode == MODE_PAPER) {

@@ -110,7 +110,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
   // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
     ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
-    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * texelFetch(u_blurred, texel, 0).rgb;
+    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * nearest_texel(u_blurred, texel).rgb;
   }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);

@@ -34,6 +34,8 @@
 // Needs from the includer: deferred_common.glsl (light_distance_of, u_light_view_proj),
 // u_light_layer_texel_world (BouncePass: a texel of the layers at the object).
 
+#include "nearest_texel.glsl"
+
 layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit
 uniform float u_light_layer_texel_world;
 
@@ -59,7 +61,7 @@ ivec2 bounce_layers_texel(vec4 clip) {
 // no exit: no part)?
 BounceStoneReceiver bounce_stone_receiver(vec3 P, vec4 clipP) {
   ivec2 t = bounce_layers_texel(clipP);
-  float exitDistance = t.x < 0 ? 1e30 : texelFetch(u_bounce_layers, t, 0).y;
+  float exitDistance = t.x < 0 ? 1e30 : nearest_texel(u_bounce_layers, t).y;
   return BounceStoneReceiver(exitDistance < 1e20 && light_distance_of(P) > exitDistance + BOUNCE_BEHIND_TEXELS * u_light_layer_texel_world, clipP);
 }
 

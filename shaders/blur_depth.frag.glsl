@@ -7,5 +7,5 @@ layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_depth;  // the G-buffer'
 uniform int u_scale;
 #include "blur_texel.glsl"
 void main() {
-  gl_FragDepth = texelFetch(u_depth, blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale), 0).r;
+  gl_FragDepth = nearest_texel(u_depth, blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale)).r;  // GL_NEAREST: nearest_texel.glsl
 }

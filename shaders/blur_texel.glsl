@@ -10,13 +10,16 @@
 // the full-resolution one. Of the alternatives measured there, the pixel nearest the camera left
 // the step at 1.13x the test's threshold and the farthest took the far side of the torus across
 // its occlusion edges; this one changes no texel that was already stone.
+// The depth is read through its sampler (GL_NEAREST: nearest_texel.glsl).
+#include "nearest_texel.glsl"
+
 ivec2 blur_texel_pixel(sampler2D depth, ivec2 h, int scale) {
   ivec2 last = textureSize(depth, 0) - 1;
   ivec2 first = min(h * scale, last);
-  if (texelFetch(depth, first, 0).r < 1.0) return first;  // 1: the cleared background
+  if (nearest_texel(depth, first).r < 1.0) return first;  // 1: the cleared background
   for (int k = 1; k < scale * scale; ++k) {
     ivec2 p = min(h * scale + ivec2(k % scale, k / scale), last);
-    if (texelFetch(depth, p, 0).r < 1.0) return p;
+    if (nearest_texel(depth, p).r < 1.0) return p;
   }
   return first;
 }

@@ -17,12 +17,14 @@
 // rather than none). Coarse texels with alpha < 0 are the background: left out.
 // Needs from the includer: u_depth, u_normal (the G-buffer's), gbuffer.glsl, deferred_common.glsl.
 
+#include "nearest_texel.glsl"
+
 const float BOUNCE_MIN_WEIGHT = 0.05;
 
 // How far apart two points of one surface can be, per pixel between them, at pixel px.
 float bounce_reach(vec3 P, vec3 N, ivec2 px, vec2 fullSize) {
   vec2 uv = (vec2(px) + 0.5) / fullSize;
-  float pixel = length(surface_point(uv + vec2(1.0 / fullSize.x, 0.0), texelFetch(u_depth, px, 0).r) - P);
+  float pixel = length(surface_point(uv + vec2(1.0 / fullSize.x, 0.0), textureLod(u_depth, uv, 0.0).r) - P);
   return pixel / max(abs(dot(N, normalize(u_camera_pos - P))), 0.2);
 }
 
@@ -38,11 +40,13 @@ float bounce_match_point(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec3 P
   return cn * cn * plane * near;
 }
 
-// The surface point and normal at pixel ps, as the matches read them.
+// The surface point and normal at pixel ps, as the matches read them (through the samplers: the
+// G-buffer is GL_NEAREST, nearest_texel.glsl; ps lies in the frame).
 vec3 bounce_point(ivec2 ps, vec2 fullSize) {
-  return surface_point((vec2(ps) + 0.5) / fullSize, texelFetch(u_depth, ps, 0).r);
+  vec2 uv = (vec2(ps) + 0.5) / fullSize;
+  return surface_point(uv, textureLod(u_depth, uv, 0.0).r);
 }
-vec3 bounce_normal(ivec2 ps) { return decode_normal(texelFetch(u_normal, ps, 0).xy); }
+vec3 bounce_normal(ivec2 ps) { return decode_normal(nearest_texel(u_normal, ps).xy); }
 
 float bounce_match(vec3 P, vec3 N, float reach, ivec2 px, ivec2 ps, vec2 fullSize) {
   return bounce_match_point(P, N, reach, px, ps, bounce_point(ps, fullSize), bounce_normal(ps));
@@ -76,7 +80,7 @@ vec4 bounce_bilateral_in(sampler2D grid, BounceGrid g, vec3 P, vec3 N, ivec2 px)
   for (int k = 0; k < 4; ++k) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 ic = min(i0 + c, g.last);
-    vec4 b = texelFetch(grid, bounce_grid_texel(g, ic), 0);
+    vec4 b = nearest_texel(grid, bounce_grid_texel(g, ic));  // the grids are GL_NEAREST
     if (b.a < 0.0) continue;  // the background
     any += b;
     anyCount += 1.0;

@@ -62,7 +62,7 @@ void main() {
     ivec2 o = ivec2(k % 3, k / 3) - 1;
     ivec2 n = t + o;
     if (any(lessThan(n, ivec2(0))) || any(greaterThan(n, last))) continue;
-    vec4 b = texelFetch(u_bounce, n, 0);
+    vec4 b = nearest_texel(u_bounce, n);  // GL_NEAREST (nearest_texel.glsl, by bounce_bilateral.glsl)
     if (b.a < 0.0) continue;  // the background (also every texel whose pixel lies outside the frame)
     float w = float((2 - abs(o.x)) * (2 - abs(o.y))) * bounce_match(P, N, reach, px, n * u_scale, fullSize);
     sum += w * b;

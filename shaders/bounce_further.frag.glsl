@@ -48,6 +48,7 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 #include "gbuffer.glsl"
 #include "deferred_common.glsl"
 #include "rotation.glsl"
+#include "nearest_texel.glsl"
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
@@ -118,10 +119,12 @@ void main() {
       next = rotate2(next, byStep);  // before any `continue`
       ivec2 ps = px + ivec2(round(r * dir));
       if (any(lessThan(ps, ivec2(0))) || any(greaterThanEqual(ps, fullSize))) continue;
-      float ds = texelFetch(u_depth, ps, 0).r;
+      // ps's depth and normal through the samplers at its centre (GL_NEAREST: nearest_texel.glsl).
+      vec2 uvs = (vec2(ps) + 0.5) / full;
+      float ds = textureLod(u_depth, uvs, 0.0).r;
       if (ds >= 1.0) continue;  // the background
-      vec3 Ps = surface_point((vec2(ps) + 0.5) / full, ds);
-      vec3 Ns = decode_normal(texelFetch(u_normal, ps, 0).xy);
+      vec3 Ps = surface_point(uvs, ds);
+      vec3 Ns = decode_normal(textureLod(u_normal, uvs, 0.0).xy);
       vec3 d = P - Ps;
       float r2 = max(dot(d, d), 1e-12);
       float cosS = dot(Ns, d);   // x |d|
@@ -131,14 +134,14 @@ void main() {
       // receiver: the first bounce's test (bounce_screen_occlusion.glsl; session 22).
       if (bounce_occluded_near_receiver(P, Ps)) continue;
       ivec2 ts = min((ps + u_bounce_scale / 2) / u_bounce_scale, size - 1);  // the nearest texel of the first bounce
-      vec4 b = texelFetch(u_bounce, ts, 0);
+      vec4 b = nearest_texel(u_bounce, ts);
       if (b.a < 0.0) continue;
       // That texel's first bounce is the emitter's only if it lies on the same surface: near a fold
       // or a part seen edge-on (a plate's top seen at grazing, a few pixels high) the nearest texel
       // can be the other face's, whose light the emitter does not have (the corner tests' wall face
       // then received its own first bounce back through the plate: +26 %). Normals over 37 degrees
       // apart: left out (too little rather than light that is not there).
-      if (dot(Ns, decode_normal(texelFetch(u_normal, ts * u_bounce_scale, 0).xy)) < 0.8) continue;
+      if (dot(Ns, decode_normal(nearest_texel(u_normal, ts * u_bounce_scale).xy)) < 0.8) continue;
       vec3 toCamera = u_camera_pos - Ps;
       float dist = length(toCamera);
       float w = width_per_distance * dist;

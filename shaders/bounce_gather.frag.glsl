@@ -32,13 +32,14 @@ void main() {
     o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
-  float depth = texelFetch(u_depth, px, 0).r;
+  vec2 uv = (vec2(px) + 0.5) / vec2(size);  // px's centre: its depth and normal through the samplers (GL_NEAREST: nearest_texel.glsl)
+  float depth = textureLod(u_depth, uv, 0.0).r;
   if (depth >= 1.0) {
     o_bounce = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
-  vec3 P = surface_point((vec2(px) + 0.5) / vec2(size), depth);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P = surface_point(uv, depth);
+  vec3 N = decode_normal(textureLod(u_normal, uv, 0.0).xy);
   // Interleaved sampling (bounce.glsl): each texel of a 2 x 2 block turns the pattern by another
   // quarter of its angular step; the four turns together sample the rings 4x as densely in angle.
   // The fixed pattern alone swung SSIM against Cycles by up to 0.03 with its turn (bunny-side

@@ -25,15 +25,16 @@ layout(location = 0) out vec4 o_bounce;
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
-  vec4 b = texelFetch(u_bounce, t, 0);
+  vec4 b = nearest_texel(u_bounce, t);  // GL_NEAREST, as the G-buffer (nearest_texel.glsl)
   if (b.a < 0.0) {
     o_bounce = b;
     return;
   }
   ivec2 px = t * u_scale;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point((vec2(px) + 0.5) / fullSize, texelFetch(u_depth, px, 0).r);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec2 uv = (vec2(px) + 0.5) / fullSize;
+  vec3 P = surface_point(uv, textureLod(u_depth, uv, 0.0).r);
+  vec3 N = decode_normal(textureLod(u_normal, uv, 0.0).xy);
   vec4 bF = bounce_bilateral(u_further, u_further_scale, P, N, px);
   o_bounce = bounce_merged(b, bF);
 }

@@ -41,7 +41,7 @@ void main() {
   for (int o = 1; o < 4; ++o) {
     ivec2 fi = 2 * cell + ivec2(o & 1, o >> 1), px = fi * fine.scale;
     bool inside = all(lessThanEqual(fi, fine.last)) && all(lessThan(px, size));
-    depth[o - 1] = inside ? texelFetch(u_depth, px, 0).r : 1.0;
+    depth[o - 1] = inside ? nearest_texel(u_depth, px).r : 1.0;  // GL_NEAREST (nearest_texel.glsl, by bounce_bilateral.glsl)
     anySurface = anySurface || depth[o - 1] < 1.0;
   }
   if (!anySurface) return;
@@ -51,7 +51,7 @@ void main() {
   ivec2 ps[4];
   for (int k = 0; k < 4; ++k) {
     ivec2 ic = min(cell + ivec2(k & 1, k >> 1), coarse.last);
-    present[k] = texelFetch(u_bounce, ic, 0).a >= 0.0;
+    present[k] = nearest_texel(u_bounce, ic).a >= 0.0;
     ps[k] = ic * coarse.scale;
     Ps[k] = bounce_point(ps[k], fullSize);
     Ns[k] = bounce_normal(ps[k]);

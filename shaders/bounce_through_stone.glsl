@@ -34,6 +34,8 @@
 // Needs from the includer: deferred_common.glsl (light_distance_of, u_light_view_proj),
 // u_light_layer_texel_world (BouncePass: a texel of the layers at the object).
 
+#include "nearest_texel.glsl"
+
 layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_bounce_layers;  // entry, exit
 uniform float u_light_layer_texel_world;
 
@@ -59,7 +61,7 @@ ivec2 bounce_layers_texel(vec4 clip) {
 // no exit: no part)?
 BounceStoneReceiver bounce_stone_receiver(vec3 P, vec4 clipP) {
   ivec2 t = bounce_layers_texel(clipP);
-  float exitDistance = t.x < 0 ? 1e30 : texelFetch(u_bounce_layers, t, 0).y;
+  float exitDistance = t.x < 0 ? 1e30 : nearest_texel(u_bounce_layers, t).y;
   return BounceStoneReceiver(exitDistance < 1e20 && light_distance_of(P) > exitDistance + BOUNCE_BEHIND_TEXELS * u_light_layer_texel_world, clipP);
 }
 
@@ -68,13 +70,15 @@ BounceStoneReceiver bounce_stone_receiver(vec3 P, vec4 clipP) {
 bool bounce_crosses_stone(vec3 P, BounceStoneReceiver receiver, vec3 xp) {
   float tol = u_light_layer_texel_world;
   vec4 clipX = u_light_view_proj * vec4(xp, 1.0);
-  vec2 size = vec2(textureSize(u_bounce_layers, 0));
   for (int i = 1; i <= BOUNCE_STONE_POINTS; ++i) {
     float f = float(i) / float(BOUNCE_STONE_POINTS + 1);
     vec4 clip = mix(receiver.clip, clipX, f);
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;  // off the map: air
-    vec2 layers = texelFetch(u_bounce_layers, ivec2(uv * size), 0).xy;
+    // The texel under uv by the sampler (the layers are GL_NEAREST, one level, clamped to the edge;
+    // uv lies in [0, 1)): llvmpipe takes floor(uv x size), the texel ivec2(uv x size) names, by
+    // fewer instructions than texelFetch's per-lane level and bounds checks (docs/performance.md).
+    vec2 layers = textureLod(u_bounce_layers, uv, 0.0).xy;
     float d = light_distance_of(mix(P, xp, f));
     if (layers.y < 1e20 && d > layers.x + tol && d < layers.y - tol) return true;
   }

@@ -134,7 +134,7 @@ vec4 hidden_mirror_quarter(vec3 P, vec3 R, int k) {
     if (clip.w <= 0.0) break;  // behind the light
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) break;  // off the map
-    vec2 layers = texelFetch(u_light_layers, ivec2(uv * vec2(size)), 0).xy;
+    vec2 layers = textureLod(u_light_layers, uv, 0.0).xy;  // the texel ivec2(uv x size): GL_NEAREST (nearest_texel.glsl)
     float l = light_distance_of(P + t * R);
     bool part = layers.x < layers.y;  // LightDepthPass::kNoLayer in either: no part
     if (aired && part && lastL > layers.y && l <= layers.y && l >= layers.x - (lastL - l)) {

@@ -449,13 +449,14 @@ float entry_seen(vec3 entry, float tol) {
   if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
   ivec2 size = textureSize(u_depth, 0);
   ivec2 pixel = min(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), size - 1);
-  float depth = texelFetch(u_depth, pixel, 0).r;
-  if (depth >= 1.0) return 0.0;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+  // The pixel's depth and normal through their samplers at its centre (GL_NEAREST: nearest_texel.glsl).
+  float depth = textureLod(u_depth, uv, 0.0).r;
+  if (depth >= 1.0) return 0.0;
   vec3 S = surface_point(uv, depth);
   float at_entry = 1.0 - smoothstep(tol, 3.0 * tol, distance(S, entry));
   if (at_entry <= 0.0) return 0.0;
-  vec3 N_seen = decode_normal(texelFetch(u_normal, pixel, 0).xy);
+  vec3 N_seen = decode_normal(textureLod(u_normal, uv, 0.0).xy);
   return at_entry * smoothstep(-0.1, 0.0, dot(N_seen, light_vector(S)));
 }
 
@@ -532,13 +533,13 @@ void main() {
   }
   ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
-  float depth = texelFetch(u_depth, px, 0).r;
+  float depth = textureLod(u_depth, uv, 0.0).r;  // px's, through the sampler (GL_NEAREST: nearest_texel.glsl)
   bool stone = depth < 1.0;
   // The surface point, normal and (marble) the transmission's exit and chord, once for the gather
   // and marble_entering; background texels get a point at mid depth (a select: no NaNs into the
   // quad's shared values).
   vec3 P = surface_point(uv, stone ? depth : 0.5);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 N = decode_normal(textureLod(u_normal, uv, 0.0).xy);
   vec3 P_in = vec3(0.0);
   vec2 s_cos = vec2(0.0);
   vec3 glow_rings = vec3(0.0);

@@ -29,6 +29,7 @@
 #include "paper_shading.glsl"
 #include "deferred_common.glsl"
 #include "subsurface_common.glsl"
+#include "nearest_texel.glsl"
 
 #ifndef SURFACE_REUSE
 #define SURFACE_REUSE 0
@@ -109,7 +110,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
   // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
     ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
-    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * texelFetch(u_blurred, texel, 0).rgb;
+    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * nearest_texel(u_blurred, texel).rgb;
   }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);
@@ -128,7 +129,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
 // light's resolution, half by default).
 ivec2 mirror_hit_at(ivec2 px) {
   ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
-  return ivec2(texelFetch(u_mirror_hit, t, 0).xy);
+  return ivec2(nearest_texel(u_mirror_hit, t).xy);
 }
 
 // The change of the half vector H (at P, normal N) from this pixel to its neighbour toward +axis
@@ -192,8 +193,8 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
 bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) {
   step = vec3(0.0);
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
-  if (texelFetch(u_depth, q, 0).r >= 1.0) return false;
-  vec4 stored = texelFetch(u_normal, q, 0);
+  if (nearest_texel(u_depth, q).r >= 1.0) return false;
+  vec4 stored = nearest_texel(u_normal, q);
   step = sign * (decode_normal(interpolated ? stored.zw : stored.xy) - N);
   return true;
 }
@@ -232,7 +233,7 @@ void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dnd
 }
 
 void main() {
-  float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+  float depth = nearest_texel(u_depth, ivec2(gl_FragCoord.xy)).r;
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) {
@@ -241,7 +242,7 @@ void main() {
     // xy: the normal for the reflection terms (bent by the valid-reflection rule in `marble`
     // mode); zw: the interpolated normal, the same bits where the rule kept it (a two-channel
     // texture, when the rule is off, reads (0, 1) there: counted as bent, the steps as before).
-    vec4 stored = surface ? texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0) : vec4(0.0);
+    vec4 stored = surface ? nearest_texel(u_normal, ivec2(gl_FragCoord.xy)) : vec4(0.0);
     vec3 N = surface ? decode_normal(stored.xy) : vec3(0.0);
     bool kept = stored.xy == stored.zw;
     float on = surface ? 1.0 : 0.0;

@@ -60,8 +60,12 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
     vec4 clip = clipP + t * clipR;
     vec3 ndc = clip.xyz / clip.w;
     if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return ivec2(-1);  // off screen
-    ivec2 q = ivec2((ndc.xy * 0.5 + 0.5) * vec2(size));
-    float d = texelFetch(u_depth, q, 0).r;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    ivec2 q = ivec2(uv * vec2(size));
+    // q's depth through the sampler (the G-buffer's depth is GL_NEAREST: floor(uv x size), q), for
+    // fewer instructions than texelFetch on llvmpipe (nearest_texel.glsl); uv = 1 exactly (the
+    // frame's last edge) reads the last texel, where texelFetch read 0 beyond it.
+    float d = textureLod(u_depth, uv, 0.0).r;
     if (q != px && d < 1.0 && ndc.z * 0.5 + 0.5 > d) {
       vec3 S = surface_point((vec2(q) + 0.5) / vec2(size), d);
       return distance(S, P + R * t) > (t - previous) + 2.0 * pixel ? ivec2(-1) : q;  // else: passed behind a part

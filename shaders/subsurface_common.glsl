@@ -8,6 +8,7 @@ uniform float u_mm_per_unit;
 uniform float u_pixels_per_mm_at_unit_depth;  // full-res pixels per mm at view distance 1 unit
 uniform float u_reach_mm;                     // how far the blur reaches
 uniform int u_scale;                          // 2: the blur runs at half resolution; 1: full
+#include "nearest_texel.glsl"
 
 float view_depth(float z) { return linear_depth(z, u_near_far); }  // scene units along the view axis
 
@@ -31,7 +32,7 @@ vec3 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
     ivec2 c = ivec2(k & 1, k >> 1);
     ivec2 h = min(i0 + c, last);
     float w = (c.x == 1 ? f.x : 1.0 - f.x) * (c.y == 1 ? f.y : 1.0 - f.y);
-    vec4 b = texelFetch(blurred, h, 0);
+    vec4 b = nearest_texel(blurred, h);  // the blur's result is GL_NEAREST (SubsurfaceBlurPass)
     float gap = b.a > 0.0 ? abs(b.a - depth) : 1e30;
     if (gap < nearestGap) {
       nearestGap = gap;

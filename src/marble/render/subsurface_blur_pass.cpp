@@ -53,7 +53,9 @@ void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTe
     width_ = w;
     height_ = h;
     horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
-    result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
+    // Nearest: its one reader, the post pass, takes whole texels (upsample_blurred), through the
+    // sampler, which llvmpipe does in fewer instructions than texelFetch (nearest_texel.glsl).
+    result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
     horizontalFbo_ = gl::Framebuffer::create();
     resultFbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(horizontalFbo_.id(), GL_COLOR_ATTACHMENT0, horizontal_.id(), 0);

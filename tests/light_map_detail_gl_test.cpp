@@ -16,6 +16,7 @@
 
 #include "dense_mesh.h"
 #include "gl_support.h"
+#include "turning_scene.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -33,19 +34,7 @@ const Mesh& denseSculpture() {
   return m;
 }
 
-Scene marbleScene() {
-  Scene s;
-  s.render.width = s.render.height = kSize;
-  s.render.mode = RenderMode::Marble;
-  return s;
-}
-
-glm::vec3 turnedAboutY(glm::vec3 p, float degrees) {
-  const float a = glm::radians(degrees);
-  return {std::cos(a) * p.x + std::sin(a) * p.z, p.y, -std::sin(a) * p.x + std::cos(a) * p.z};
-}
-
-glm::mat4 turnedModel(float degrees) { return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0)); }
+Scene marbleScene() { return marbleSceneOfSize(kSize); }
 
 ImageRGBA8 render(Renderer& r, const Scene& s, const glm::mat4& model) {
   OffscreenTarget target(kSize, kSize);

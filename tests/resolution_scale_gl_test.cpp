@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "gl_support.h"
+#include "turning_scene.h"
 
 using namespace marble;
 using namespace marble::test;
@@ -18,17 +19,7 @@ namespace {
 
 constexpr int kSize = 192;
 
-Scene marbleScene() {
-  Scene s;
-  s.render.width = s.render.height = kSize;
-  s.render.mode = RenderMode::Marble;
-  return s;
-}
-
-glm::vec3 turnedAboutY(glm::vec3 p, float degrees) {
-  const float a = glm::radians(degrees);
-  return {std::cos(a) * p.x + std::sin(a) * p.z, p.y, -std::sin(a) * p.x + std::cos(a) * p.z};
-}
+Scene marbleScene() { return marbleSceneOfSize(kSize); }
 
 ImageRGBA8 freshFull(const Scene& s) {
   Renderer fresh;

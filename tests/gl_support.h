@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,32 @@ inline HeadlessContext& glContext() {
     return c;
   }();
   return *ctx;
+}
+
+// A compute program from one source string, for the tests that wrap a library file in a shader
+// of their own (pattern_gl_test, nearest_texel_gl_test): the compiler's log as a test failure and
+// 0 where it does not compile; a link failure is a test failure too. The caller deletes it.
+inline GLuint compileComputeProgram(const std::string& source) {
+  const char* text = source.c_str();
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    ADD_FAILURE() << "compute shader: " << log;
+    glDeleteShader(shader);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  EXPECT_TRUE(ok) << "compute program did not link";
+  return program;
 }
 
 inline ImageRGBA8 renderImage(Renderer& renderer, const Scene& scene) {

@@ -41,34 +41,11 @@ void main() {
 
 class NearestTexelGlTest : public ::testing::Test {
 protected:
-  static void SetUpTestSuite() {
-    ctx_ = new HeadlessContext();
-    gl::enableDebugOutput(test::failOnSevereGlMessages);
-  }
-  static void TearDownTestSuite() {
-    delete ctx_;
-    ctx_ = nullptr;
-  }
-
   void SetUp() override {
+    test::glContext();  // the test binary's one context, debug output on
     const std::string src = "#version 450 core\n" + embeddedShaders().at("nearest_texel.glsl") + kComputeMain;
-    const char* text = src.c_str();
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      char log[4096];
-      glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-      FAIL() << "compute shader: " << log;
-    }
-    program_ = glCreateProgram();
-    glAttachShader(program_, shader);
-    glLinkProgram(program_);
-    glDeleteShader(shader);
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    ASSERT_TRUE(ok);
+    program_ = test::compileComputeProgram(src);
+    ASSERT_NE(program_, 0u);
   }
   void TearDown() override {
     gl::forgetProgramSamplers(program_);
@@ -94,10 +71,8 @@ protected:
     return bad;
   }
 
-  static HeadlessContext* ctx_;
   GLuint program_ = 0;
 };
-HeadlessContext* NearestTexelGlTest::ctx_ = nullptr;
 
 struct Format {
   GLenum internal, format, type;

@@ -126,26 +126,7 @@ protected:
     for (const auto& d : shader::sharedShaderDefines()) shared += "#define " + d + "\n";
     const std::string src = "#version 450 core\n" + shared + defines +
                             inlineIncludes(embeddedShaders().at("marble_pattern.glsl")) + main;
-    const char* text = src.c_str();
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      char log[4096];
-      glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-      ADD_FAILURE() << "compute shader: " << log;
-      glDeleteShader(shader);
-      return 0;
-    }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, shader);
-    glLinkProgram(program);
-    glDeleteShader(shader);
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    EXPECT_TRUE(ok);
-    return program;
+    return test::compileComputeProgram(src);
   }
 
   // Deletes a program built above; the draw state check's list of its samplers goes with it

@@ -44,15 +44,15 @@ layout(location = 0) out vec4 o_bounce;
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
-  vec4 own = texelFetch(u_bounce, t, 0);
+  vec4 own = nearest_texel(u_bounce, t);  // GL_NEAREST, t inside the grid (nearest_texel.glsl)
   if (own.a < 0.0) {
     o_bounce = own;  // the background stays the background
     return;
   }
   ivec2 px = t * u_scale;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point((vec2(px) + 0.5) / fullSize, texelFetch(u_depth, px, 0).r);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P = surface_point((vec2(px) + 0.5) / fullSize, nearest_texel(u_depth, px).r);  // px inside the frame (own.a >= 0)
+  vec3 N = decode_normal(nearest_texel(u_normal, px).xy);
   float reach = bounce_reach(P, N, px, fullSize);
   ivec2 last = textureSize(u_bounce, 0) - 1;
   vec4 sum = 4.0 * own;

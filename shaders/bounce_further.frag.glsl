@@ -84,14 +84,14 @@ void main() {
     o_further = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
-  float depth = texelFetch(u_depth, px, 0).r;
+  float depth = nearest_texel(u_depth, px).r;  // px inside the frame (above): the same bits as texelFetch
   if (depth >= 1.0) {
     o_further = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   vec2 full = vec2(fullSize);
   vec3 P = surface_point((vec2(px) + 0.5) / full, depth);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 N = decode_normal(nearest_texel(u_normal, px).xy);
   // A pixel's world width per unit of distance from the camera (at P; across the frame it changes
   // by the off-axis angle's cosine, under 6 % at 36 degrees of view: the emitters' areas by 12 %).
   float width_per_distance = length(surface_point((vec2(px) + vec2(1.5, 0.5)) / full, depth) - P) / distance(P, u_camera_pos);

@@ -5,8 +5,10 @@
 // bounce_merge.frag.glsl), so that the depth test against the far-plane triangle passes exactly
 // where they find depth < 1 and gather.
 // The grids are rounded up, so t * u_scale lies inside the frame for every texel of them.
-layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;  // the G-buffer's
+layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;  // the G-buffer's (GL_NEAREST)
+#include "nearest_texel.glsl"
 uniform int u_scale;  // full-resolution pixels per texel of the grid
 void main() {
-  gl_FragDepth = texelFetch(u_depth, ivec2(gl_FragCoord.xy) * u_scale, 0).r;
+  // Through the sampler: the same texel and bits as texelFetch, fewer instructions (nearest_texel.glsl).
+  gl_FragDepth = nearest_texel(u_depth, ivec2(gl_FragCoord.xy) * u_scale).r;
 }

@@ -27,8 +27,8 @@ void main() {
   ivec2 t = bounce_refine_texel(k);
   ivec2 px = t * u_scale;
   vec2 size = vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point((vec2(px) + 0.5) / size, texelFetch(u_depth, px, 0).r);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P = surface_point((vec2(px) + 0.5) / size, nearest_texel(u_depth, px).r);  // GL_NEAREST, px inside the frame (listed by the mark)
+  vec3 N = decode_normal(nearest_texel(u_normal, px).xy);
   // The interleaved pattern's turn as the coarse grid's (bounce_gather.frag.glsl) by the texel's
   // place in its 2 x 2 block, and another eighth of a step: the refined texels' pattern lies between
   // the coarse ones' turns, so where an upsample mixes the two grids it mixes eight turns. Not

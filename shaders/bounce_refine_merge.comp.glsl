@@ -28,8 +28,8 @@ void main() {
   BounceGrid fine = bounce_refined_grid();
   ivec2 px = t * fine.scale;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
-  vec3 P = surface_point((vec2(px) + 0.5) / fullSize, texelFetch(u_depth, px, 0).r);
-  vec3 N = decode_normal(texelFetch(u_normal, px, 0).xy);
+  vec3 P = surface_point((vec2(px) + 0.5) / fullSize, nearest_texel(u_depth, px).r);  // GL_NEAREST, px inside the frame (listed by the mark)
+  vec3 N = decode_normal(nearest_texel(u_normal, px).xy);
   vec4 bF = bounce_bilateral(u_further, u_further_scale, P, N, px);
-  imageStore(u_refined, fine.origin + t, bounce_merged(texelFetch(u_refined_first, t, 0), bF));
+  imageStore(u_refined, fine.origin + t, bounce_merged(nearest_texel(u_refined_first, t), bF));
 }

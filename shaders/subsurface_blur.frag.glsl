@@ -24,6 +24,10 @@ layout(location = 0) out vec4 o_color;
 // The lighting pass's entering light (first pass) or the first pass's result (second), at the
 // blur's resolution; alpha: view depth, 0 off the stone.
 layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_entering;
+// The same texture through a GL_NEAREST sampler object (SubsurfaceBlurPass): the centre's one
+// whole-texel read, for fewer instructions than texelFetch, the same bits (nearest_texel.glsl).
+layout(binding = UNIT_SCREEN_INPUT_TEXELS) uniform sampler2D u_entering_texels;
+#include "nearest_texel.glsl"
 uniform vec2 u_direction;          // (1,0) then (0,1)
 // Taps per side, 1..MAX_TAPS (as many as the reach spans in texels): a constant of the program
 // (BLUR_TAPS, defined by SubsurfaceBlurPass), so that the loop is unrolled and each tap reads its
@@ -39,7 +43,7 @@ uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed
 void main() {
   ivec2 h = ivec2(gl_FragCoord.xy);
   vec2 input_size = vec2(textureSize(u_entering, 0));
-  float depth = texelFetch(u_entering, h, 0).a;
+  float depth = nearest_texel(u_entering_texels, h).a;  // h inside: the output is the input's size
   // Blur texels per mm at this depth (the taps' distances grow quadratically, subsurfaceTaps). Each tap is read with bilinear filtering at its exact distance: rounded to
   // the nearest texel, narrow profiles lost their shape (SSIM against Cycles on dragon-front
   // 0.765 against 0.757; docs/quality.md).

@@ -82,7 +82,13 @@ struct ProgramTraits {
   }
 };
 
+struct SamplerTraits {
+  static GLuint create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
+
 using Buffer = Handle<BufferTraits>;
+using Sampler = Handle<SamplerTraits>;
 using VertexArray = Handle<VertexArrayTraits>;
 using Framebuffer = Handle<FramebufferTraits>;
 using TimerQuery = Handle<QueryTraits>;

@@ -22,6 +22,7 @@
   X(UNIT_TURBULENCE_GRID, 8)  /* marble_pattern.glsl */                                                 \
   X(UNIT_SURFACE_DEPTH, 1)    /* subsurface_common.glsl, post.frag.glsl, stage.frag.glsl: G-buffer's */ \
   X(UNIT_SCREEN_INPUT, 0)     /* the one input of blur_depth, fxaa, subsurface_blur */                  \
+  X(UNIT_SCREEN_INPUT_TEXELS, 2) /* subsurface_blur: the same input through a GL_NEAREST sampler */     \
   /* albedo.frag.glsl */                                                                                \
   X(UNIT_ALBEDO_DEPTH, 0)                                                                               \
   X(UNIT_ALBEDO_NORMAL, 1)                                                                              \

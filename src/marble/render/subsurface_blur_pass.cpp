@@ -30,7 +30,12 @@ constexpr float kTapsPerRootTexel = 1.0f;
 SubsurfaceBlurPass::SubsurfaceBlurPass(const ShaderLibrary& shaders)
     : programs_(shaders,
                 {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "subsurface_blur.frag.glsl"}}),
-      emptyVao_(gl::VertexArray::create()) {
+      emptyVao_(gl::VertexArray::create()),
+      nearestSampler_(gl::Sampler::create()) {
+  glSamplerParameteri(nearestSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearestSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearestSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(nearestSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   program(kMaxTaps);  // so a broken shader shows at once
 }
 
@@ -121,14 +126,18 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   gl::clearFramebuffer(resultFbo_.id(), GL_COLOR, 0, zero);
   scissorTo(scaledDown(rect, subsurfaceScale(scene.render)));
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, in.entering);
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT_TEXELS, in.entering);
+  glBindSampler(shader::UNIT_SCREEN_INPUT_TEXELS, nearestSampler_.id());
   p.set("u_direction", glm::vec2(1, 0));
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   gl::drawArrays(GL_TRIANGLES, 0, 3);
 
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, horizontal_.id());
+  glBindTextureUnit(shader::UNIT_SCREEN_INPUT_TEXELS, horizontal_.id());
   p.set("u_direction", glm::vec2(0, 1));
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   gl::drawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(shader::UNIT_SCREEN_INPUT_TEXELS, 0);  // the unit's textures' own filters again for other passes
   scissorOff();
   timer_.end();
 }

@@ -36,6 +36,10 @@ private:
   gl::ProgramVariants programs_;
   const gl::Program& program(int taps);
   gl::VertexArray emptyVao_;
+  // GL_NEAREST over the blur's GL_LINEAR input, for the centre's whole-texel read
+  // (subsurface_blur.frag.glsl): the sampler's nearest read costs fewer instructions than
+  // texelFetch on llvmpipe (nearest_texel.glsl), the same bits.
+  gl::Sampler nearestSampler_;
   gl::Texture horizontal_, result_;
   gl::Framebuffer horizontalFbo_, resultFbo_;
   int width_ = 0, height_ = 0;

@@ -4,7 +4,12 @@
 # side-by-side pictures (Cycles | marble) beside them (docs/quality.md).
 #
 #   tools/render-reference.sh [OUT_DIR] [--size N] [--samples N] [--skip-cycles] [--floor]
-#                             [--models DIR] [--only NAME]
+#                             [--models DIR] [--only NAME] [--refs DIR]
+#
+# --refs DIR takes the Cycles renders from DIR (NAME.cycles.exr, and NAME.cycles-seed1.exr for
+# --floor) instead of rendering them: tools/reference-renders/ holds the standing ones at 200 x 200
+# (its README says how they were made), so `tools/render-reference.sh out/q --refs
+# tools/reference-renders --floor` reproduces docs/quality.md's table in minutes, without Blender.
 #
 # Samples: --samples N for every scene, or by default each scene's own count (reference_samples
 # below), enough that two references differing only in seed score SSIM >= 0.97 against each other
@@ -30,6 +35,7 @@ SKIP_CYCLES=0
 FLOOR=0
 MODELS=""
 ONLY=""
+REFS=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --size) SIZE="$2"; shift 2 ;;
@@ -38,11 +44,13 @@ while [[ $# -gt 0 ]]; do
     --floor) FLOOR=1; shift ;;
     --models) MODELS="$(cd "$2" && pwd)"; shift 2 ;;
     --only) ONLY="$2"; shift 2 ;;
+    --refs) REFS="$(cd "$2" && pwd)"; shift 2 ;;
     *) OUT="$1"; shift ;;
   esac
 done
 MARBLE="${MARBLE:-$ROOT/build/marble}"
 
+[[ -n $REFS ]] && SKIP_CYCLES=1
 if [[ $SKIP_CYCLES == 0 ]] && ! command -v blender >/dev/null; then
   if [[ $(id -u) == 0 ]]; then
     apt-get install -y blender
@@ -69,6 +77,12 @@ reference_samples() {
 }
 
 cycles() {  # scene out.exr seed
+  if [[ -n $REFS ]]; then
+    local kept="$REFS/$(basename "$2")"
+    [[ -f $kept ]] || { echo "render-reference: no $kept (--refs)" >&2; exit 1; }
+    cp "$kept" "$2"
+    return 0
+  fi
   [[ $SKIP_CYCLES == 1 && -f "$2" ]] && return 0
   local samples="${SAMPLES:-$(reference_samples "$(basename "$1" .json)")}"
   nice -n 19 blender -b --factory-startup -P "$ROOT/tools/cycles_reference.py" -- "$1" "$2" --samples "$samples" \
@@ -98,6 +112,10 @@ for src in "$ROOT"/tools/reference-scenes/*.json; do
     sed "s#\"\\.\\./\\.\\./\\.\\./shared/models/#\"$ROOT/../shared/models/#" "$src" > "$scene"
   fi
   ref="$OUT/$name.cycles.exr"
+  if [[ -n $REFS && ! -f $REFS/$name.cycles.exr ]]; then
+    echo "$name: no reference in $REFS, skipped"
+    continue
+  fi
   cycles "$scene" "$ref" 0
   for mode in marble paper; do
     "$MARBLE" render "$scene" --mode "$mode" --width "$SIZE" --height "$SIZE" --supersample 4 \

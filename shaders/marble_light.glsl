@@ -26,6 +26,18 @@ vec3 marble_reflected(vec3 N, vec3 V, vec3 L, vec3 E, float visible, float ior, 
   return r;
 }
 
+// The light's retro-reflection (principled_retro: Cycles' Principled lobe beside the walk), per unit
+// of u_light_radiance and of the albedo, which the post pass multiplies it by; reflected at the
+// surface point, so not blurred. falloff: light_falloff at P (the irradiance at normal incidence per
+// unit radiance); visible: the light's visibility, as the highlight's. Not modelled: the lobe for
+// the environment's light and for the bounce (the light arriving from the stone's other parts),
+// which enter the stone as diffuse light only (references: no environment; the bounce under a
+// quarter of the shaded side's light, the lobe under 0.3 of it).
+float marble_retro_reflected(vec3 N, vec3 V, vec3 L, float falloff, float visible, float roughness) {
+  float nl = max(dot(N, L), 0.0);
+  return falloff * nl * visible * principled_retro(nl, dot(N, V), dot(L, V), roughness) / PI;
+}
+
 // Light that enters the stone through the surface here (irradiance / PI, before the albedo):
 // from the light and from the environment, with the Principled coupling (principled_entry.glsl).
 vec3 marble_surface_entering(vec3 N, vec3 L, vec3 E, float visible, float env_intensity) {

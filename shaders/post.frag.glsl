@@ -11,7 +11,8 @@
 //   0  the albedo changed (the view moved, or the pattern): the pattern is evaluated here, and
 //      the albedo and the diffuse part are also written out (o_albedo, o_diffuse) for later frames;
 //   1  the light changed, the albedo did not: the stored albedo, the diffuse part written out;
-//   2  neither changed (gloss, exposure, background): the stored diffuse part, one read.
+//   2  neither changed (gloss, exposure, background): the stored diffuse part, one read, and the
+//      stored albedo for the retro-reflection (which the gloss changes: not in the diffuse part).
 // On llvmpipe every texture read costs about as much over the frame as a simple pass's
 // arithmetic, and a pass of its own costs more: the albedo pass is not run for `marble`.
 //
@@ -19,7 +20,8 @@
 // which only the pattern changed, everything but the albedo is what the previous frame computed.
 //   0  nothing stored or read (the camera's and the light's frames: nothing to reuse);
 //   1  a frame that changed only the pattern: it also writes the upsampled blurred light and the
-//      reflected light (o_surface_light, o_surface_reflected, RGBA32F: the values exactly);
+//      reflected light (o_surface_light, o_surface_reflected, RGBA32F: the values exactly; the
+//      retro-reflection's factor in o_surface_reflected's alpha);
 //   2  the next such frames: they read those two back instead of the upsample, the shadow's
 //      taps, GGX and the environment (about a third of the contour presets' pattern frame).
 // The values are stored as 32-bit floats, the precision they are computed in, and combined with
@@ -88,16 +90,18 @@ vec3 as_stored_half(vec3 v) {
 
 // The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
 // mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
-// surface's mirror ray meets the object on screen (self_reflection_hit), or -1.
-vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit) {
+// surface's mirror ray meets the object on screen (self_reflection_hit), or -1. albedo: the
+// albedo it used (source 2: the stored one), for the retro-reflection (marble_compose).
+vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 albedo) {
 #if DIFFUSE_SOURCE == 2
+  albedo = texelFetch(u_albedo, px, 0).rgb;
   return texelFetch(u_diffuse, px, 0).rgb;
 #else
 #if DIFFUSE_SOURCE == 0
-  vec3 albedo = as_stored_unorm8(albedo_at_pixel(v_uv, depth, N));
+  albedo = as_stored_unorm8(albedo_at_pixel(v_uv, depth, N));
   o_albedo = vec4(albedo, 1.0);
 #else
-  vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
+  albedo = texelFetch(u_albedo, px, 0).rgb;
 #endif
 #if SURFACE_REUSE == 2
   vec3 light = texelFetch(u_surface_light, px, 0).rgb;
@@ -154,36 +158,44 @@ vec3 half_vector_step(vec3 P, vec3 N, vec3 H, vec2 axis) {
 // footprint_normal_steps). Where
 // the mirror ray meets the object itself, the object is what the surface mirrors (marble_diffuse,
 // or hidden_mirror.glsl's light in the entering light), not the environment behind it: the
-// environment's reflection is left out there.
+// environment's reflection is left out there. The light's retro-reflection (marble_retro_reflected,
+// Cycles' Principled lobe beside the walk) is reflected too, but by the albedo: added here, after
+// the diffuse part, which a gloss change reuses (DIFFUSE_SOURCE 2).
 vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 V = vec3(0.0);
   ivec2 hit = ivec2(-1);
 #if SURFACE_REUSE == 2
-  vec3 reflected = texelFetch(u_surface_reflected, px, 0).rgb;
+  vec4 stored = texelFetch(u_surface_reflected, px, 0);
+  vec3 reflected = stored.rgb;
+  float retro = stored.a;
 #else
   vec3 P = surface_point(v_uv, depth);
   V = normalize(u_camera_pos - P);
   hit = mirror_hit_at(px);
   vec3 L = light_vector(P);
-  vec3 E = light_irradiance(light_distance_of(P));
+  float falloff = light_falloff(light_distance_of(P));
+  vec3 E = u_light_radiance * falloff;  // light_irradiance
   float visible = bilinear_visibility(P, N, u_light_view_proj, u_light_texel_world);
   vec3 H = normalize(V + L);
   vec3 hx = half_vector_step(P, N, H, vec2(1.0, 0.0)), hy = half_vector_step(P, N, H, vec2(0.0, 1.0));
   precise vec3 reflected = marble_reflected(N, V, L, E, visible, u_ior, u_roughness, bx - hx, ax - hx, by - hy, ay - hy,
                                              hit.x == -1 ? u_env_intensity : 0.0);
+  precise float retro = marble_retro_reflected(N, V, L, falloff, visible, u_roughness);
 #if SURFACE_REUSE == 1
-  o_surface_reflected = vec4(reflected, 1.0);
+  o_surface_reflected = vec4(reflected, retro);
 #endif
 #endif
-  // Stored or computed, the same two values and the same sum (a multiply-add fused across this
+  // Stored or computed, the same values and the same sum (a multiply-add fused across this
   // sum in one program and not the other would break that: PassFixture.PatternOnlyFrames* checks).
   // `precise` (GLSL 4.50, 4.7.1) on the light, the diffuse part, the reflected light and the sum:
   // these are computed by several variants of this program (DIFFUSE_SOURCE, SURFACE_REUSE), and
   // a cached frame must equal a fresh one bit for bit; without it a compiler may fuse a multiply
   // with an add in one variant and not in another (NVIDIA's does, per program; llvmpipe's does
   // not), which GLSL allows. docs/performance.md, "Eighteenth session".
-  precise vec3 composed = marble_diffuse(px, depth, N, V, hit) + reflected;
+  vec3 albedo;
+  precise vec3 diffuse = marble_diffuse(px, depth, N, V, hit, albedo);
+  precise vec3 composed = diffuse + reflected + albedo * (u_light_radiance * retro);
   return composed;
 }
 

@@ -8,11 +8,29 @@
 // bsdf_principled_diffuse_compute_entry_fresnel, is never called), so nothing here depends on V.
 // Nor is the specular layer taken out: the Principled BSDF adds it on top. Measured against
 // Cycles, this moved the front- and side-lit exposure scale from 0.85-0.91 to 0.92-0.99
-// (docs/quality.md). The retro-reflection lobe (RR = roughness (1 + L.V)) is not modelled: it
-// would tie the light entering to the gloss (a roughness change would re-run the blur) and gained
-// under 0.003 in SSIM and relative RMSE on the reference scenes.
+// (docs/quality.md). The retro-reflection lobe Cycles adds beside the walk is not light entering
+// the stone: principled_retro below, reflected at the surface by the post pass.
 float principled_entry(float cos_in) {
   float m = 1.0 - clamp(cos_in, 0.0, 1.0);
   float m2 = m * m;
   return 1.0 - 0.5 * (m2 * m2 * m);
+}
+
+// The Principled BSDF's retro-reflection, which Cycles 3.4 adds beside the random walk as a diffuse
+// closure of its own with the subsurface weight (kernel/closure/bssrdf.h, bssrdf_setup:
+// PRINCIPLED_DIFFUSE_RETRO_REFLECTION, evaluated in bsdf_principled_diffuse.h; Burley 2012, eq. 4,
+// with Cycles' RR = roughness (1 + L.V), which is Burley's 2 roughness cos^2 theta_d). Its BRDF is
+// albedo / PI * N.L-weighted retro(N.L, N.V, L.V) below: light reflected at the surface point,
+// not carried through the stone, so it is not blurred, and it depends on the view and the gloss,
+// so the post pass adds it (marble_retro_reflected, marble_light.glsl). Largest where the camera
+// grazes a lit face (F_V -> 1: RR, 0.15-0.3 of the Lambertian light at the scenes' roughness
+// 0.15) and where the light grazes one (F_L); nearly 0 seen and lit head-on. Exact as Cycles'
+// formula for any roughness; N.V is clamped to [0, 1] as Cycles' schlick_fresnel clamps 1 - N.V.
+// Measured against Cycles: docs/quality.md, "Twenty-fourth session: the retro-reflection".
+float principled_retro(float NoL, float NoV, float LoV, float roughness) {
+  float ml = 1.0 - clamp(NoL, 0.0, 1.0), mv = 1.0 - clamp(NoV, 0.0, 1.0);
+  float ml2 = ml * ml, mv2 = mv * mv;
+  float FL = ml2 * ml2 * ml, FV = mv2 * mv2 * mv;
+  float RR = roughness * (LoV + 1.0);
+  return RR * (FL + FV + FL * FV * (RR - 1.0));
 }

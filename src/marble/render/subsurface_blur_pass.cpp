@@ -120,7 +120,7 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   // The mipmap level each tap reads at one blur texel per mm, log2(band / 2) (the shader adds
   // log2 of its texels per mm): subsurface_blur.frag.glsl.
   std::array<float, kMaxTaps + 1> bandLevels{};
-  for (int i = 0; i <= kernel_.taps; ++i) bandLevels[i] = std::log2(std::max(kernel_.bandsMm[i], 1e-6f) * 0.5f);
+  for (int i = 0; i <= kernel_.taps; ++i) bandLevels[i] = std::log2(std::max(kernel_.bandsMm[i], 1e-6f));
   glProgramUniform1fv(p.id(), p.location("u_band_levels"), kernel_.taps + 1, bandLevels.data());
   setSubsurfaceUniforms(p, camera, scene, height);
   glUseProgram(p.id());

@@ -37,7 +37,7 @@ uniform vec2 u_direction;          // (1,0) then (0,1)
 const int u_taps = BLUR_TAPS;
 uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
 uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
-// The mipmap level tap i reads at one blur texel per mm: log2(its band / 2 mm) (SubsurfaceBlurPass).
+// The mipmap level tap i reads at one blur texel per mm: log2(its band in mm) (SubsurfaceBlurPass).
 uniform float u_band_levels[MAX_TAPS + 1];
 
 // MAX_TAPS: render/shader_constants.h
@@ -70,8 +70,8 @@ void main() {
   texels_per_mm /= sqrt(1.0 + slope * slope);
   // Each tap stands for its band of the axis (the weights are the profile's share over it,
   // subsurfaceKernel), so it reads the band's mean, not the light at one point: the input's
-  // mipmap level whose bilinear footprint (two of its texels, 2^(level + 1) blur texels) is the
-  // band's width, band / 2 = 2^level texels. The quadratic spacing leaves bands up to 2 sqrt(reach)
+  // mipmap level whose bilinear tent reaches a band either way, 2^level = band texels, so that
+  // the taps' tents add up to about one everywhere (as hat functions do). The quadratic spacing leaves bands up to 2 sqrt(reach)
   // texels wide (9 on teapot-back at 800^2) where one bilinear read covers 2, and a line of light
   // narrower than a band (a back-lit rim, the light through teapot-back's lid gap) fell between
   // taps at some distances and on one at others: the blurred light beside it came out striped

@@ -117,7 +117,7 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   const gl::Program& p = program(kernel_.taps);
   glProgramUniform3fv(p.id(), p.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
   glProgramUniform1fv(p.id(), p.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
-  // The mipmap level each tap reads at one blur texel per mm, log2(band / 2) (the shader adds
+  // The mipmap level each tap reads at one blur texel per mm, log2(band) (the shader adds
   // log2 of its texels per mm): subsurface_blur.frag.glsl.
   std::array<float, kMaxTaps + 1> bandLevels{};
   for (int i = 0; i <= kernel_.taps; ++i) bandLevels[i] = std::log2(std::max(kernel_.bandsMm[i], 1e-6f));

@@ -37,8 +37,6 @@ uniform vec2 u_direction;          // (1,0) then (0,1)
 const int u_taps = BLUR_TAPS;
 uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
 uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
-// The mipmap level tap i reads at one blur texel per mm: log2(its band in mm) (SubsurfaceBlurPass).
-uniform float u_band_levels[MAX_TAPS + 1];
 
 // MAX_TAPS: render/shader_constants.h
 
@@ -61,30 +59,17 @@ void main() {
   // part behind) is not taken for one; capped where one side is off the stone.
   vec2 one = u_direction / input_size;
   vec2 c = (vec2(h) + 0.5) / input_size;
-  float za = textureLod(u_entering, c + one, 0.0).a, zb = textureLod(u_entering, c - one, 0.0).a;
+  float za = texture(u_entering, c + one).a, zb = texture(u_entering, c - one).a;
   float ga = za > 0.0 ? abs(za - depth) : 1e30, gb = zb > 0.0 ? abs(zb - depth) : 1e30;
   // Where both sides are on the stone and agree within 2x, their mean (the central difference:
   // smooth where the surface curves); else the smaller side.
   float g = max(ga, gb) < 2.0 * min(ga, gb) ? 0.5 * (ga + gb) : min(ga, gb);
   float slope = min(g, 1e3) * u_mm_per_unit * texels_per_mm;  // mm of depth per mm of screen
   texels_per_mm /= sqrt(1.0 + slope * slope);
-  // Each tap stands for its band of the axis (the weights are the profile's share over it,
-  // subsurfaceKernel), so it reads the band's mean, not the light at one point: the input's
-  // mipmap level whose bilinear tent reaches a band either way, 2^level = band texels, so that
-  // the taps' tents add up to about one everywhere (as hat functions do). The quadratic spacing leaves bands up to 2 sqrt(reach)
-  // texels wide (9 on teapot-back at 800^2) where one bilinear read covers 2, and a line of light
-  // narrower than a band (a back-lit rim, the light through teapot-back's lid gap) fell between
-  // taps at some distances and on one at others: the blurred light beside it came out striped
-  // parallel to it, up to 500x from one blur texel to the next (docs/quality.md, "Twenty-fourth
-  // session"). Approximation: a mipmap level is isotropic, so the band's mean also spreads across
-  // the axis by as much (the other pass's profile is wider than the outer bands, whose weights are
-  // small), and a level's texel on a silhouette holds a coverage-scaled depth that the test below
-  // leaves out, as the bilinear read does within one texel.
-  float level_at = log2(texels_per_mm);
   vec3 sum = vec3(0.0), weight = vec3(0.0);
   for (int i = -u_taps; i <= u_taps; ++i) {
     vec2 t = vec2(h) + 0.5 + u_direction * (sign(float(i)) * u_offsets_mm[abs(i)] * texels_per_mm);
-    vec4 e = textureLod(u_entering, t / input_size, max(u_band_levels[abs(i)] + level_at, 0.0));
+    vec4 e = texture(u_entering, t / input_size);
     // Off the stone, or across a silhouette (more than the reach away in depth): left out. A
     // tap between stone and background reads a depth scaled down by its coverage, so it is
     // left out unless nearly all stone.

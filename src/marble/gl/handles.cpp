@@ -1,7 +1,5 @@
 #include "marble/gl/handles.h"
 
-#include <algorithm>
-
 #include "marble/gl/checked_calls.h"
 
 namespace marble::gl {
@@ -53,19 +51,6 @@ Texture makeTexture2D(GLenum internalFormat, int width, int height, GLenum filte
   if (drawStateChecksOn) fillWithUndefinedStandIn(t.id(), internalFormat);
   glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
   glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
-
-Texture makeTexture2DMipmapped(GLenum internalFormat, int width, int height) {
-  Texture t = Texture::create(GL_TEXTURE_2D);
-  int levels = 1;
-  while ((std::max(width, height) >> levels) > 0) ++levels;
-  glTextureStorage2D(t.id(), levels, internalFormat, width, height);
-  if (drawStateChecksOn) fillWithUndefinedStandIn(t.id(), internalFormat);
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   return t;

@@ -125,7 +125,6 @@ private:
 // A 2D texture with immutable storage, clamped at the edges, filtered by `filter`
 // (GL_NEAREST or GL_LINEAR) both ways: the one shape every render target here takes.
 Texture makeTexture2D(GLenum internalFormat, int width, int height, GLenum filter);
-Texture makeTexture2DMipmapped(GLenum internalFormat, int width, int height);
 
 // Sets what a pass that draws meshes relies on: depth test (less, writing), no blending,
 // no culling (meshes with holes or inconsistent winding must still be whole).

@@ -34,7 +34,7 @@ void LightingPass::resize(int width, int height, int enteringScale, GLuint depth
     enteringWidth_ = (width + enteringScale - 1) / enteringScale;  // rounded up, as the blur's
     enteringHeight_ = (height + enteringScale - 1) / enteringScale;
     hdr_ = gl::makeTexture2D(GL_RGBA16F, width, height, GL_LINEAR);
-    entering_ = gl::makeTexture2DMipmapped(GL_RGBA16F, enteringWidth_, enteringHeight_);
+    entering_ = gl::makeTexture2D(GL_RGBA16F, enteringWidth_, enteringHeight_, GL_LINEAR);
     mirrorHit_ = gl::makeTexture2D(GL_RG32F, enteringWidth_, enteringHeight_, GL_NEAREST);  // whole pixels
     // One framebuffer per kind of output, so a mode writes (and clears) only what it uses.
     fbo_ = gl::Framebuffer::create();

@@ -1,7 +1,6 @@
 #include "marble/render/subsurface_blur_pass.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -58,7 +57,7 @@ void SubsurfaceBlurPass::resize(int width, int height, int scale, GLuint depthTe
   if (w != width_ || h != height_ || !resultFbo_) {
     width_ = w;
     height_ = h;
-    horizontal_ = gl::makeTexture2DMipmapped(GL_RGBA16F, w, h);
+    horizontal_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_LINEAR);
     // Nearest: its one reader, the post pass, takes whole texels (upsample_blurred), through the
     // sampler, which llvmpipe does in fewer instructions than texelFetch (nearest_texel.glsl).
     result_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
@@ -117,11 +116,6 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   const gl::Program& p = program(kernel_.taps);
   glProgramUniform3fv(p.id(), p.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
   glProgramUniform1fv(p.id(), p.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
-  // The mipmap level each tap reads at one blur texel per mm, log2(band) (the shader adds
-  // log2 of its texels per mm): subsurface_blur.frag.glsl.
-  std::array<float, kMaxTaps + 1> bandLevels{};
-  for (int i = 0; i <= kernel_.taps; ++i) bandLevels[i] = std::log2(std::max(kernel_.bandsMm[i], 1e-6f));
-  glProgramUniform1fv(p.id(), p.location("u_band_levels"), kernel_.taps + 1, bandLevels.data());
   setSubsurfaceUniforms(p, camera, scene, height);
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());
@@ -134,16 +128,12 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, in.entering);
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT_TEXELS, in.entering);
   glBindSampler(shader::UNIT_SCREEN_INPUT_TEXELS, nearestSampler_.id());
-  // Each tap reads its band's mean from the input's mipmaps (subsurface_blur.frag.glsl): the
-  // entering light's levels, then the horizontal pass's.
-  glGenerateTextureMipmap(in.entering);
   p.set("u_direction", glm::vec2(1, 0));
   glBindFramebuffer(GL_FRAMEBUFFER, horizontalFbo_.id());
   gl::drawArrays(GL_TRIANGLES, 0, 3);
 
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT, horizontal_.id());
   glBindTextureUnit(shader::UNIT_SCREEN_INPUT_TEXELS, horizontal_.id());
-  glGenerateTextureMipmap(horizontal_.id());
   p.set("u_direction", glm::vec2(0, 1));
   glBindFramebuffer(GL_FRAMEBUFFER, resultFbo_.id());
   gl::drawArrays(GL_TRIANGLES, 0, 3);

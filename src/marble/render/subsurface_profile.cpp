@@ -96,7 +96,6 @@ SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps
     // sides, so a tap off the centre takes half of its band's share.
     const float a = i == 0 ? 0.0f : 0.5f * (k.offsetsMm[i - 1] + k.offsetsMm[i]);
     const float b = i == k.taps ? k.offsetsMm[i] : 0.5f * (k.offsetsMm[i] + k.offsetsMm[i + 1]);
-    k.bandsMm[i] = i == 0 ? 2.0f * b : b - a;
     for (int c = 0; c < 3; ++c) {
       const float l = std::max(walk.meanFreePathMm[c], 1e-6f);
       const float band = walkAxisShare(walk.albedo[c], b / l) - walkAxisShare(walk.albedo[c], a / l);

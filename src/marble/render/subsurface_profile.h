@@ -45,15 +45,10 @@ float subsurfaceReachMm(const Material& m);
 // light along its axis as the walk does, out to the reach; the light beyond is left out (the
 // blur normalizes by the weights it sums). Offsets are spaced quadratically in i (dense where the
 // profile is steep): x_i = reach (i / taps)^2.
-// bandsMm[i]: the width of tap i's share of the axis on one side (the weights' bands; tap 0's
-// spans both sides). A tap stands for its whole band, so the blur reads it as the mean over the
-// band (subsurface_blur.frag.glsl: the input's mipmap level whose bilinear footprint is that
-// wide), not at one point.
 struct SubsurfaceKernel {
   int taps = 1;
   std::array<float, shader::MAX_TAPS + 1> offsetsMm{};
   std::array<glm::vec3, shader::MAX_TAPS + 1> weights{};
-  std::array<float, shader::MAX_TAPS + 1> bandsMm{};
 };
 SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps);
 

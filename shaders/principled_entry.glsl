@@ -10,10 +10,15 @@
 // Cycles, this moved the front- and side-lit exposure scale from 0.85-0.91 to 0.92-0.99
 // (docs/quality.md). The retro-reflection lobe Cycles adds beside the walk is not light entering
 // the stone: principled_retro below, reflected at the surface by the post pass.
-float principled_entry(float cos_in) {
-  float m = 1.0 - clamp(cos_in, 0.0, 1.0);
+// Schlick's weight without F0, (1 - cos)^5 with cos clamped to [0, 1] (Cycles' schlick_fresnel).
+float schlick_weight(float cos_theta) {
+  float m = 1.0 - clamp(cos_theta, 0.0, 1.0);
   float m2 = m * m;
-  return 1.0 - 0.5 * (m2 * m2 * m);
+  return m2 * m2 * m;
+}
+
+float principled_entry(float cos_in) {
+  return 1.0 - 0.5 * schlick_weight(cos_in);
 }
 
 // The Principled BSDF's retro-reflection, which Cycles 3.4 adds beside the random walk as a diffuse
@@ -28,9 +33,7 @@ float principled_entry(float cos_in) {
 // formula for any roughness; N.V is clamped to [0, 1] as Cycles' schlick_fresnel clamps 1 - N.V.
 // Measured against Cycles: docs/quality.md, "Twenty-fourth session: the retro-reflection".
 float principled_retro(float NoL, float NoV, float LoV, float roughness) {
-  float ml = 1.0 - clamp(NoL, 0.0, 1.0), mv = 1.0 - clamp(NoV, 0.0, 1.0);
-  float ml2 = ml * ml, mv2 = mv * mv;
-  float FL = ml2 * ml2 * ml, FV = mv2 * mv2 * mv;
+  float FL = schlick_weight(NoL), FV = schlick_weight(NoV);
   float RR = roughness * (LoV + 1.0);
   return RR * (FL + FV + FL * FV * (RR - 1.0));
 }

@@ -209,45 +209,16 @@ bool shadow_lookup(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out 
   return all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
 }
 
-// The light entering the stone is shadowed from a point moved toward the light, not along N
-// (shadow_lookup). Along N the lookup also moves sideways in the light's view, by 2 texels x
-// sin(theta), and a cast shadow's edge with it: on a surface the light grazes (N.L = cos theta
-// small) that is 2 sin(theta) / cos(theta) texels along the surface, ~20 at N.L 0.1: on bunny-side
-// marble lit 175 grazing-lit pixels (N.L median 0.10) that Cycles' occluders shadow, 1-4 pixels into
-// the shadow (docs/quality.md, "Twelfth session: the front- and side-lit scenes"). Moved along the
-// light's own ray the lookup stays at the same place in the map and only its depth changes: by
-// the depth a plane at that slant gains over the filter's reach (2 texels, the four taps' bilinear
-// span) tan(theta) = sin / cos, cos floored at 0.05 (20 texels), and half a texel along N for the
-// surface's curvature within a texel (a depth bias scaled by the slope: Williams 1978's bias, the
-// slope-scaled form of OpenGL's polygon offset). The highlight keeps shadow_lookup
-// (bilinear_visibility): with this lookup the back-lit dragon's grazing glints fell into the
-// surface's own shadow (SSIM 0.743 -> 0.734, k 1.10 -> 1.77), which the diffuse light, weighted by
-// N.L, does not show.
-bool shadow_lookup_along_light(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out vec3 uvz) {
-  vec3 L = light_vector(P);
-  float c = clamp(abs(dot(N, L)), 0.05, 1.0);
-  vec4 clip = light_view_proj * vec4(P + L * (2.0 * texel_world * sqrt(1.0 - c * c) / c) + N * (0.5 * texel_world), 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  uvz = ndc * 0.5 + 0.5;
-  uvz.z -= 1e-4;
-  return all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
-}
+// The light entering the stone is shadowed by receiver_plane_visibility (shadow_receiver_plane.glsl,
+// the lighting pass): before session 25 by a lookup moved toward the light by a slope-scaled bias
+// (session 12: along N the lookup also moved sideways in the light's view, and a cast shadow's edge
+// with it, 2 sin(theta) / cos(theta) texels along a surface the light grazes; on bunny-side marble
+// lit 175 grazing-lit pixels that Cycles' occluders shadow; docs/quality.md, "Twelfth session: the
+// front- and side-lit scenes"). The highlight keeps shadow_lookup (bilinear_visibility): looked up
+// along the light, the back-lit dragon's grazing glints fell into the surface's own shadow (SSIM
+// 0.743 -> 0.734, k 1.10 -> 1.77), which the diffuse light, weighted by N.L, does not show.
 
-// Percentage-closer filtering (Reeves et al. 1987) with the hardware's depth comparison:
-// each of the 4 taps is itself a bilinear 2x2 comparison, so 16 texels are weighed in all.
-// The light entering the stone (marble_entering): looked up along the light (above).
-float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
-  vec3 uvz;
-  if (!shadow_lookup_along_light(P, N, light_view_proj, texel_world, uvz)) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(u_light_shadow, 0));
-  float lit = texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, -0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, -0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, 0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, 0.5) * texel, uvz.z));
-  return lit * 0.25;
-}
-
-// One bilinear 2x2 comparison: a quarter of pcf_visibility's cost, with an edge one texel
+// One bilinear 2x2 comparison: a quarter of a 4-tap filter's cost, with an edge one texel
 // narrower. The post pass shadows the reflected light with it -- the highlight, already
 // shaped by the GGX lobe -- where the four taps were a third of the pass's time on llvmpipe.
 float bilinear_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {

@@ -5,9 +5,9 @@
 //
 // Needs from the includer: u_light_distance (the light's map: .r the distance from the light to the
 // first surface, light_depth.frag.glsl), u_light_view_proj, u_light_near_far, light_vector,
-// u_light_pos, u_light_dir, u_light_directional (light_geometry.glsl).
+// light_distance_of, u_light_directional (light_geometry.glsl).
 //
-// The filter is the one the hardware comparison gave before (session 25): four bilinear taps at
+// The filter is the one the hardware comparison gave before session 25: four bilinear taps at
 // +-0.5 texel around P's place in the map, 16 texels in all. What changed is what each texel is
 // compared with. Before, every texel was compared with P's own distance, pushed toward the light by
 // the slope-scaled bias 2 texels x tan(theta) (+ half a texel along N), theta the angle between N and
@@ -21,8 +21,8 @@
 // grow at grazing light, 2 to 8 texels, self-shadows the teapot's 1024 facets: teapot-side SSIM
 // -0.0013 to -0.007; docs/quality.md, "Twenty-fifth session"). Against Cycles' visibility of a white
 // Lambert in the side-lit scenes this moves marble's by 0.004-0.017 toward Cycles' where N.L < 0.3
-// (where the lookup still lets through 0.05-0.13 more light than Cycles' occluders) and by 0.001-0.003
-// on the lit faces.
+// (where the old lookup let through 0.05-0.13 more light than Cycles' occluders; the rest needs a
+// bias the facets do not allow) and by 0.001-0.003 on the lit faces.
 //
 // Texels whose ray met nothing (the map's far value) are lit; where P is outside the map nothing is
 // in the way (as shadow_lookup). The rays through the texels: P's place in the map moved by the

@@ -68,6 +68,7 @@ float thickness_at(vec3 p) {
 }
 
 #include "marble_shading.glsl"
+#include "shadow_receiver_plane.glsl"  // the light entering the stone: its visibility
 #include "environment.glsl"
 #include "marble_light.glsl"
 #include "bounce_upsample.glsl"
@@ -471,7 +472,7 @@ float entry_seen(vec3 entry, float tol) {
 vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_rings, vec3 bounce) {
   float NoL = dot(N, L);
   vec3 E = light_irradiance(light_distance_of(P));
-  float visible = pcf_visibility(P, N, u_light_view_proj, u_light_texel_world);
+  float visible = receiver_plane_visibility(P, N, u_light_texel_world);
   vec3 entering = marble_surface_entering(N, L, E, visible, u_env_intensity) + bounce;
 
   // Transmission: light that entered where the light's map says, at the cosine stored there and

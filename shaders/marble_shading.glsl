@@ -209,27 +209,27 @@ bool shadow_lookup(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out 
   return all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
 }
 
-// The light entering the stone is shadowed from a point moved toward the light, not along N
-// (shadow_lookup). Along N the lookup also moves sideways in the light's view, by 2 texels x
-// sin(theta), and a cast shadow's edge with it: on a surface the light grazes (N.L = cos theta
-// small) that is 2 sin(theta) / cos(theta) texels along the surface, ~20 at N.L 0.1: on bunny-side
-// marble lit 175 grazing-lit pixels (N.L median 0.10) that Cycles' occluders shadow, 1-4 pixels into
-// the shadow (docs/quality.md, "Twelfth session: the front- and side-lit scenes"). Moved along the
-// light's own ray the lookup stays at the same place in the map and only its depth changes: by
-// the depth a plane at that slant gains over the filter's reach (2 texels, the four taps' bilinear
-// span) tan(theta) = sin / cos, cos floored at 0.05 (20 texels), and half a texel along N for the
-// surface's curvature within a texel (a depth bias scaled by the slope: Williams 1978's bias, the
-// slope-scaled form of OpenGL's polygon offset). The highlight and the retro-reflection use it
-// too (bilinear_visibility, since session 25): a back light's glints lie where N.L is 0.2-0.3,
-// and the lookup along N, 2 texels sideways in the light's view, saw past the edges of the
-// shadows other parts cast there. Against Cycles' specular layer alone (the stone black, direct
-// light, 1024 samples; marble at 16 x 16 samples a pixel) the back-lit highlight's relative RMSE
-// went 0.270 -> 0.135 (dragon) and 0.358 -> 0.204 (buddha), its energy 1.23 -> 1.12 and
-// 1.43 -> 1.18 of Cycles' (docs/quality.md, "Twenty-fifth session: the highlight's shadow").
-// (Session 12 tried this and measured the opposite, dragon-back SSIM 0.743 -> 0.734, k 1.10 ->
-// 1.77, against the references and the highlight of then: glints point-sampled at the pixel's
-// centre normal, before session 19 integrated the lobe over each pixel's normals, and references
-// whose glints had not converged, before session 16.)
+// The light entering the stone is shadowed by receiver_plane_visibility (shadow_receiver_plane.glsl,
+// the lighting pass): before session 25 by the lookup below (session 12: along N the lookup also
+// moved sideways in the light's view, and a cast shadow's edge with it, 2 sin(theta) / cos(theta)
+// texels along a surface the light grazes; on bunny-side marble lit 175 grazing-lit pixels that
+// Cycles' occluders shadow; docs/quality.md, "Twelfth session: the front- and side-lit scenes").
+//
+// The highlight and the retro-reflection (bilinear_visibility, one comparison in the post pass) are
+// shadowed from a point moved toward the light, not along N: there the lookup stays at the same
+// place in the map and only its depth changes, by the depth a plane at that slant gains over the
+// filter's reach, 2 texels x tan(theta) (cos floored at 0.05: 20 texels), and half a texel along N
+// for the surface's curvature within a texel (Williams 1978's bias in its slope-scaled form, as
+// OpenGL's polygon offset). Since session 25: a back light's glints lie where N.L is 0.2-0.3, and
+// the lookup along N, 2 texels sideways in the light's view, saw past the edges of the shadows
+// other parts cast there. Against Cycles' specular layer alone (the stone black, direct light, 1024
+// samples; marble at 16 x 16 samples a pixel) the back-lit highlight's relative RMSE went 0.270 ->
+// 0.135 (dragon) and 0.358 -> 0.204 (buddha), its energy 1.23 -> 1.12 and 1.43 -> 1.18 of Cycles'
+// (docs/quality.md, "Twenty-fifth session: the highlight's shadow"). (Session 12 tried this and
+// measured the opposite, dragon-back SSIM 0.743 -> 0.734, k 1.10 -> 1.77, against the references
+// and the highlight of then: glints point-sampled at the pixel's centre normal, before session 19
+// integrated the lobe over each pixel's normals, and references whose glints had not converged,
+// before session 16.)
 bool shadow_lookup_along_light(vec3 P, vec3 N, mat4 light_view_proj, float texel_world, out vec3 uvz) {
   vec3 L = light_vector(P);
   float c = clamp(abs(dot(N, L)), 0.05, 1.0);
@@ -240,24 +240,10 @@ bool shadow_lookup_along_light(vec3 P, vec3 N, mat4 light_view_proj, float texel
   return all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
 }
 
-// Percentage-closer filtering (Reeves et al. 1987) with the hardware's depth comparison:
-// each of the 4 taps is itself a bilinear 2x2 comparison, so 16 texels are weighed in all.
-// The light entering the stone (marble_entering): looked up along the light (above).
-float pcf_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
-  vec3 uvz;
-  if (!shadow_lookup_along_light(P, N, light_view_proj, texel_world, uvz)) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(u_light_shadow, 0));
-  float lit = texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, -0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, -0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(-0.5, 0.5) * texel, uvz.z)) +
-              texture(u_light_shadow, vec3(uvz.xy + vec2(0.5, 0.5) * texel, uvz.z));
-  return lit * 0.25;
-}
-
-// One bilinear 2x2 comparison: a quarter of pcf_visibility's cost, with an edge one texel
+// One bilinear 2x2 comparison: a quarter of a 4-tap filter's cost, with an edge one texel
 // narrower. The post pass shadows the reflected light with it -- the highlight, already
 // shaped by the GGX lobe -- where the four taps were a third of the pass's time on llvmpipe.
-// Looked up along the light, as pcf_visibility (above).
+// Looked up along the light (shadow_lookup_along_light, above).
 float bilinear_visibility(vec3 P, vec3 N, mat4 light_view_proj, float texel_world) {
   vec3 uvz;
   if (!shadow_lookup_along_light(P, N, light_view_proj, texel_world, uvz)) return 1.0;

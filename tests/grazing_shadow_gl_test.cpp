@@ -1,14 +1,18 @@
 // The light entering the stone is shadowed where the occluder puts the shadow, also on a surface
-// the light grazes (shaders/marble_shading.glsl, shadow_lookup_along_light). A plate lit from -x
+// the light grazes (shaders/shadow_receiver_plane.glsl; sessions 12-24 marble_shading.glsl's
+// shadow_lookup_along_light). A plate lit from -x
 // at 6 degrees of elevation (N.L = 0.105) behind a low wall: the wall's top edge (height kWall,
 // at x = kWallX) ends the shadow at x = kWallX + kWall / tan(6 deg) on the plate. A lookup pushed
 // out along the plate's normal by 2 texels of the light's map (marble before session 12) sees
 // over the wall from 2 texels up, so the shadow ended up to 2 texels / tan(6 deg) = 0.064 units
 // too soon (measured: at 0.205 for 0.251, the negative control, shader edited and rebuilt);
-// looked up along the light it ends at 0.253. The wall's other side gets no light,
-// and the camera looks straight down at the shadow's end. The highlight is shadowed by the same
-// lookup (bilinear_visibility): a black, rough stone shows it alone, and its shadow must end there
-// too (the back-lit glints, docs/quality.md "Twenty-fifth session: the highlight's shadow").
+// looked up along the light it ended at 0.253; each texel compared with the receiver's plane
+// (session 25) at 0.261, the lookup no longer moved half a texel along N, which at this slant
+// moved it ~0.016 along the plate. The wall's other side gets no light,
+// and the camera looks straight down at the shadow's end. The highlight is shadowed by the
+// along-the-light lookup (bilinear_visibility): a black, rough stone shows it alone, and its
+// shadow must end there too (the back-lit glints, docs/quality.md "Twenty-fifth session: the
+// highlight's shadow").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -99,7 +99,7 @@ const float BOUNCE_GLOSS = 4.0;
 // the reference stone's. The emitters' own glossy light is not mirrored again (a few percent of
 // theirs), and the receiver's lobe is not shadowed or masked (Smith's term for GGX at alpha
 // 0.0225 takes under 2 % off up to 85 degrees).
-const float BOUNCE_MIRROR_GLOSS = 16.0;
+const float BOUNCE_MIRROR_GLOSS = 16.0;  // bounce_sample raises cosines to it by four squarings
 
 // The mipmap level a sample standing for `texels` of the map's finest level is read at:
 // BOUNCE_LOD_FINER levels finer than the level of that area. Per ring, not per sample: the ring's
@@ -149,8 +149,11 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, Bou
   // Mirrored: the emitter's radiance albedo x E x w / (PI area) over its solid angle area cos_p / r^2
   // (softened as the diffuse law), times the receiver's lobe toward it: the area cancels.
   float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
+  // cos^BOUNCE_MIRROR_GLOSS by four squarings: pow() with the constant 16 cost 1.4 M instructions
+  // more of the dragon's 800^2 frame on llvmpipe than pow(x, 4), which it turns into products.
+  float cosM2 = cosM * cosM, cosM4 = cosM2 * cosM2, cosM8 = cosM4 * cosM4;
   float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_MIRROR_GLOSS + 1.0) / (2.0 * PI) *
-                   pow(cosM, BOUNCE_MIRROR_GLOSS);
+                   (cosM8 * cosM8);
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
 }
 

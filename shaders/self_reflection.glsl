@@ -93,7 +93,7 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
   float t = SELF_REFLECTION_FIRST, previous = 0.0;
   // The hit's pixel, bisected after the loop: llvmpipe runs a branch for its whole block of lanes
   // where any lane takes it, so inside the loop the bisection ran at each step where some lane hit
-  // (the camera frame's lighting pass +15.4 M instructions on the dragon at 800^2, against +N M here;
+  // (the camera frame's lighting pass +15.4 M instructions on the dragon at 800^2, against +2.2 M here;
   // docs/performance.md, "Twenty-fifth session").
   ivec2 hit = ivec2(-1);
   for (int i = 0; i < SELF_REFLECTION_STEPS; ++i) {

@@ -80,15 +80,26 @@ const float BOUNCE_GLOSS = 4.0;
 
 // The glossy receiver (session 10): the emitters' diffuse radiance reflected toward the camera by
 // the receiver's specular layer, a normalized Phong lobe (m + 1) / (2 PI) cos^m of exponent
-// BOUNCE_GLOSS around the mirror direction R of the view at P (as f cos: its integral over the
-// sphere is 1, so the layer reflects F of an even surround, F Schlick's at the view's cosine,
-// applied by bounce_upsample.glsl). Cycles' lobe is GGX at alpha = roughness^2 = 0.0225, a few
-// degrees: the same 49 samples cannot resolve it, and the curved receivers' normals spread the
-// image they mirror over tens of degrees within one gather texel anyway (the emitters' lobe above,
-// the same reasoning and exponent). A sharper lobe (m = 16) measured worse (buddha-front relative
-// RMSE 0.174 -> 0.192, on a first version with the mirrored part PI too strong). The emitters' own
-// glossy light is not mirrored again (a few percent of theirs), and the receiver's lobe is not
-// shadowed or masked (Smith's term for GGX at alpha 0.0225 takes under 2 % off up to 85 degrees).
+// BOUNCE_MIRROR_GLOSS around the mirror direction R of the view at P (as f cos: its integral over
+// the sphere is 1, so the layer reflects F of an even surround, F Schlick's at the view's cosine,
+// applied by bounce_upsample.glsl). Cycles' lobe is GGX at alpha = roughness^2 = 0.0225 (the
+// reference stone): 1.6 % of its energy lies more than 20 degrees from R and 0.4 % more than 40
+// (the GGX half-vector distribution's cumulative tan^2 / (alpha^2 + tan^2), the reflected angle
+// twice the half vector's). The 49 samples cannot resolve that, so the lobe is wider, but since
+// session 25 not as wide as the emitters' (m = 4 until then: 73 % of the lobe beyond 20 degrees,
+// 26 % beyond 40, where Cycles' mirror sees only the stone's own black surround): m = 16 puts
+// 35 % beyond 20 degrees and 1.1 % beyond 40, a lobe of about 14 degrees (1 / sqrt(m) radians),
+// still wider than one outer ring's sector seen from P. Measured against Cycles (docs/quality.md,
+// "Twenty-fifth session"): the ten reference scenes' mean SSIM 0.93908 -> 0.93923 (m = 8: 0.93916,
+// m = 24: 0.93923 with bunny-back -0.0004, m = 32: 0.93920); on dragon-back, where the mirror ray
+// meets nothing else, the mirrored part falls from 1.99 to 0.94 of Cycles' glossy indirect light.
+// (Session 10's m = 16 measured worse, buddha-front relative RMSE 0.174 -> 0.192, on a first
+// version with the mirrored part PI too strong and before the marches took the lobe's core.)
+// Rougher stones would want a wider lobe: the gather reads no material parameter, so this holds
+// the reference stone's. The emitters' own glossy light is not mirrored again (a few percent of
+// theirs), and the receiver's lobe is not shadowed or masked (Smith's term for GGX at alpha
+// 0.0225 takes under 2 % off up to 85 degrees).
+const float BOUNCE_MIRROR_GLOSS = 16.0;  // bounce_sample raises cosines to it by four squarings
 
 // The mipmap level a sample standing for `texels` of the map's finest level is read at:
 // BOUNCE_LOD_FINER levels finer than the level of that area. Per ring, not per sample: the ring's
@@ -138,7 +149,11 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, Bou
   // Mirrored: the emitter's radiance albedo x E x w / (PI area) over its solid angle area cos_p / r^2
   // (softened as the diffuse law), times the receiver's lobe toward it: the area cancels.
   float cosM = max(-dot(R, d), 0.0) * inversesqrt(r2);
-  float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_GLOSS + 1.0) / (2.0 * PI) * pow(cosM, BOUNCE_GLOSS);
+  // cos^BOUNCE_MIRROR_GLOSS by four squarings: pow() with the constant 16 cost 1.4 M instructions
+  // more of the dragon's 800^2 frame on llvmpipe than pow(x, 4), which it turns into products.
+  float cosM2 = cosM * cosM, cosM4 = cosM2 * cosM2, cosM8 = cosM4 * cosM4;
+  float mirrored = A * cosP * inversesqrt(r2) / (PI * r2 + A) * (BOUNCE_MIRROR_GLOSS + 1.0) / (2.0 * PI) *
+                   (cosM8 * cosM8);
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
 }
 

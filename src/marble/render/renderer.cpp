@@ -72,6 +72,8 @@ void Renderer::setMesh(const Mesh& mesh) {
   cpuMesh_ = mesh;
   if (drawOrderOptimized_) optimizeDrawOrder(cpuMesh_);
   mesh_.emplace(cpuMesh_);
+  further_.reset();  // made again at the next `marble` frame
+  furtherStale_ = true;
   meshCells_ = OccupancyGrid(cpuMesh_);
   aaSpansWidth_ = 0;  // made anew for this mesh
   interactionMesh_.reset();
@@ -321,6 +323,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   if (stale(Pass::LightDepth)) {
     passes_->lightDepth.run(lightMeshFor(passes_->lightDepth.size()), model, light);
     passes_->bounce.markEntriesStale();
+    furtherStale_ = true;  // the light, the model or the mesh moved: the radiosity is solved again
     ran(Pass::LightDepth);
   }
   passes_->geometry.resize(width, height);
@@ -353,6 +356,13 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   if (marble) {
     passes_->bounce.resize(width, height, scale);
     if (stale(Pass::Bounce)) {
+      // The further bounces: the form factors once per mesh, the solve once per light (its cost
+      // falls in the bounce pass's share of the frame: docs/performance.md).
+      if (!further_) further_ = std::make_unique<FurtherRadiosity>(cpuMesh_);
+      if (furtherStale_) {
+        passes_->bounce.setFurtherGrid(further_->solve(scene.light, model), model);
+        furtherStale_ = false;
+      }
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
                            passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
                            passes_->lightDepth.bounceSize(), passes_->lightDepth.layersTexture(),

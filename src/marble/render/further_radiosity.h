@@ -74,8 +74,8 @@ class FurtherRadiosity {
   std::vector<std::vector<float>> patchBounces(const Light& light, const glm::mat4& model) const;
   glm::vec3 patchCentre(size_t i) const { return patches_[i].centre; }
 
-  static constexpr size_t kPatchTriangles = 20000;
-  static constexpr float kPatchMaxErrorUnits = 0.01f;
+  static constexpr size_t kPatchTriangles = 6000;
+  static constexpr float kPatchMaxErrorUnits = 0.02f;
   static constexpr float kPatchMaxEdge = 0.1f;
   static constexpr int kPatchRays = 64;
   static constexpr int kGridCells = 32;

@@ -188,7 +188,8 @@ private:
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
   Mesh cpuMesh_;                          // the reordered mesh, for the simplified copies
-  // The further bounces' form factors (`marble`): made at the first `marble` frame after setMesh;
+  // The further bounces' form factors (`marble`), from the light's proxy where there is one: made
+  // at the first `marble` frame after setMesh (or a new proxy);
   // solved again (the bounce pass's grid) at the first `marble` frame after the light's pass ran.
   std::unique_ptr<FurtherRadiosity> further_;
   bool furtherStale_ = true;

@@ -37,7 +37,11 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
       refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
-  // No further bounces until the renderer hands a solve over: a grid of zero weight reads 0.
+  clearFurtherGrid();
+}
+
+void BouncePass::clearFurtherGrid() {
+  // A grid of zero weight: the merge reads no further bounces.
   FurtherGrid none;
   none.cells = 2;
   none.cellSize = 1.0f;

@@ -75,6 +75,7 @@ public:
   // The further bounces for the light and the model matrix the frame draws with (FurtherRadiosity::
   // solve), read by the merges from the next run() on. Until the first call: none.
   void setFurtherGrid(const FurtherGrid& grid, const glm::mat4& model);
+  void clearFurtherGrid();  // none (as until the first setFurtherGrid)
   int scale() const { return scale_; }  // full-resolution pixels per texel
   BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
   // RGBA16F: the first bounce on this grid (as gathered and evened out), all bounces on this grid

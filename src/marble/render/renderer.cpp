@@ -364,6 +364,10 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
       // falls in the bounce pass's share of the frame: docs/performance.md).
       // From the light's proxy where there is one (its error is a fraction of the light map's
       // texel): a 1.6 M-triangle scan's proxy simplifies to the patches in a fraction of the time.
+      // While the proxy is still being made in the background (the viewer), from the full mesh, as
+      // a renderer without a proxy (LightProxy.MadeInTheBackgroundGivesTheSameStillFrame); made
+      // again from the proxy when adoptLightProxy takes it. (From a 1.6 M-triangle scan's full mesh
+      // this took 11.7 s on two shared cores: a background job is the next step for the viewer.)
       if (!further_) further_ = std::make_unique<FurtherRadiosity>(lightProxyMesh_.positions.empty() ? cpuMesh_ : lightProxyMesh_);
       if (furtherStale_) {
         passes_->bounce.setFurtherGrid(further_->solve(scene.light, model), model);

@@ -25,7 +25,8 @@
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
-//   map cannot hold) are gathered in screen space from this bounce by bounce_further.frag.glsl;
+//   map cannot hold) come from a radiosity over the whole surface (further_radiosity.h), added by
+//   the merge (bounce_merge.glsl);
 // - a fixed pattern over a disk of BOUNCE_RADIUS (of the light map's width) around the point's
 //   projection in the light's view: a centre sample for the innermost disk (one texel of the map:
 //   BOUNCE_RINGS) and BOUNCE_RINGS rings,

@@ -12,8 +12,8 @@
 // 1 x 4), so on a smooth surface every texel sees the four turns evenly. This is interleaved
 // sampling's discontinuity buffer (Keller & Heidrich 2001; Segovia et al. 2006, "Non-interleaved
 // deferred shading of interleaved sample patterns") with the upsample's surface match as its
-// geometry test. Both later readers take the evened values: the further bounces
-// (bounce_further.frag.glsl, which reads the nearest texel at each of its samples) and the merge.
+// geometry test. The merge reads the evened values (until session 25 the screen-space further
+// bounces, bounce_further.frag.glsl, did too).
 // Measured against Cycles (docs/quality.md, "Twenty-first session: the interleaved pattern evened
 // out"): mean SSIM 0.9210 -> 0.9231 over the ten scenes, none lower; dragon-side +0.0068 and
 // buddha-side +0.0047 over the pattern's four turns. The tent in the merge alone (the further
@@ -25,11 +25,8 @@
 // the bounce is smooth over tens of pixels (bounce_gather.frag.glsl), and the match keeps it from
 // crossing folds and silhouettes; the refined grid's texels (bounce_refine_gather.comp.glsl) keep
 // their own turns.
-// The same draw evens out the further bounces' grid (bounce_further.frag.glsl, twice as coarse, its
-// pattern turned per 2 x 2 block the same way) before the merges read it: u_scale is that grid's.
-// Measured (docs/quality.md, "Twenty-first session: the further bounces' pattern evened out"):
-// mean SSIM 0.9231 -> 0.9237, none lower by more than 0.0001; +0.002 on the side-lit scenes over the further pattern's
-// four turns; +1.3 M instructions of the dragon's 800² frames (a 50² grid).
+// (Sessions 21-24 the same draw also evened out the screen-space further bounces' grid; since
+// session 25 the further bounces come from the world-space radiosity, further_radiosity.h.)
 const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs it
 #include "gbuffer.glsl"
 #include "deferred_common.glsl"

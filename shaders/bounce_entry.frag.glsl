@@ -4,7 +4,7 @@
 // that the transmission carries it through (lighting.frag.glsl, marble_entering). Light that one
 // lit part sends to another lit part enters the stone there with the light's own; where the second
 // part is thin (a handle, a spout, a rim seen edge-on) it crosses to the side the camera sees. The
-// camera-side gathers (bounce_gather, bounce_further) cannot hold it: their receivers are surfaces
+// camera-side gather (bounce_gather) cannot hold it: their receivers are surfaces
 // the camera sees, and this light arrives on surfaces facing away from it. In Cycles' teapot lit
 // from behind it is 16 % of the indirect light (the translucent teapot's less the opaque one's;
 // docs/quality.md, "Fifteenth session: teapot-back's indirect light is the parts' lit rims lighting

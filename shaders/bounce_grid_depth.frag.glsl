@@ -1,8 +1,7 @@
 #version 450 core
 // The depth buffer of one of the bounce pass's grids (BounceGridDepth): texel t holds the
 // G-buffer's depth at full-resolution pixel t * u_scale, the one pixel the grid's draws read for
-// it (bounce_gather.frag.glsl, bounce_deinterleave.frag.glsl, bounce_further.frag.glsl,
-// bounce_merge.frag.glsl), so that the depth test against the far-plane triangle passes exactly
+// it (bounce_gather.frag.glsl, bounce_deinterleave.frag.glsl, bounce_merge.frag.glsl), so that the depth test against the far-plane triangle passes exactly
 // where they find depth < 1 and gather.
 // The grids are rounded up, so t * u_scale lies inside the frame for every texel of them.
 layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;  // the G-buffer's (GL_NEAREST)

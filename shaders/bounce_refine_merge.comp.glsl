@@ -1,6 +1,6 @@
 #version 450 core
 // The bounce pass's refinement, step three (`marble` only): each listed texel's first bounce
-// (bounce_refine_gather.comp.glsl) merged with the further bounces brought to it, as
+// (bounce_refine_gather.comp.glsl) merged with the further bounces at its point, as
 // bounce_merge.frag.glsl merges the coarse grid's (bounce_merge.glsl), into the refined grid of the
 // pass's output (bounce_refined_grid.glsl). Runs whenever the merge does (the material applied).
 const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs it
@@ -17,9 +17,7 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 #include "bounce_refine_list.glsl"
 
 layout(binding = UNIT_LIGHTING_BOUNCE) uniform sampler2D u_refined_first;    // the gather's
-layout(binding = UNIT_LIGHTING_BOUNCE_FURTHER) uniform sampler2D u_further;  // the further bounces
 layout(binding = IMAGE_BOUNCE_REFINED, rgba16f) uniform writeonly image2D u_refined;
-uniform int u_further_scale;  // full-resolution pixels per texel of the further bounces' grid
 
 void main() {
   uint k = gl_GlobalInvocationID.x;
@@ -29,7 +27,5 @@ void main() {
   ivec2 px = t * fine.scale;
   vec2 fullSize = vec2(textureSize(u_depth, 0));
   vec3 P = surface_point((vec2(px) + 0.5) / fullSize, nearest_texel(u_depth, px).r);  // GL_NEAREST, px inside the frame (listed by the mark)
-  vec3 N = decode_normal(nearest_texel(u_normal, px).xy);
-  vec4 bF = bounce_bilateral(u_further, u_further_scale, P, N, px);
-  imageStore(u_refined, fine.origin + t, bounce_merged(nearest_texel(u_refined_first, t), bF));
+  imageStore(u_refined, fine.origin + t, bounce_merged(nearest_texel(u_refined_first, t), P));
 }

@@ -1,5 +1,5 @@
 // The camera-side bounce's occlusion near the receiver (session 22): a sample of the one bounce
-// (bounce.glsl, bounce_sample; and of the further bounces, bounce_further.frag.glsl) brings nothing where the first eighth of its way from the receiver
+// (bounce.glsl, bounce_sample) brings nothing where the first eighth of its way from the receiver
 // to the emitter passes just behind a surface the camera sees, i.e. runs into stone. One point of
 // the segment tested against the camera's depth buffer, as screen-space directional occlusion does
 // for its sample directions (Ritschel, Grosch & Seidel 2009, "Approximating dynamic global
@@ -30,8 +30,7 @@
 // - a point the camera cannot place (off screen, or over the background) is not occluded;
 // - tolerance two light-map texels (u_light_texel_world) against the depth buffer's own error;
 // - view-dependent: only the camera-side gathers test it (bounce_gather.frag.glsl,
-//   bounce_refine_gather.comp.glsl, and the further bounces' bounce_further.frag.glsl, whose
-//   emitters are surfaces the camera sees); the light-side entries (bounce_entry.frag.glsl) have no
+//   bounce_refine_gather.comp.glsl); the light-side entries (bounce_entry.frag.glsl) have no
 //   camera and keep the bounce without it.
 // Needs from the includer: deferred_common.glsl (surface_point, u_view_proj, u_camera_pos,
 // u_light_texel_world) and the G-buffer's depth bound as u_depth.

@@ -73,6 +73,8 @@ uint32_t RayBvh::splitPoint(uint32_t begin, uint32_t end, int axis, float lo, fl
 RayBvh::RayBvh(const Mesh& mesh) {
   const uint32_t n = static_cast<uint32_t>(mesh.triangleCount());
   corners_.resize(static_cast<size_t>(n) * 3);
+  triangles_.resize(n);
+  std::iota(triangles_.begin(), triangles_.end(), 0u);
   std::vector<glm::vec3> centroids(n);
   for (uint32_t t = 0; t < n; ++t) {
     for (int k = 0; k < 3; ++k) corners_[t * 3 + k] = mesh.positions[mesh.indices[t * 3 + k]];
@@ -105,12 +107,15 @@ uint32_t RayBvh::build(uint32_t begin, uint32_t end, std::vector<glm::vec3>& cen
     std::nth_element(idx.begin(), idx.begin() + (mid - begin), idx.end(),
                      [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
     std::vector<glm::vec3> c(idx.size() * 3), cen(idx.size());
+    std::vector<uint32_t> tri(idx.size());
     for (size_t i = 0; i < idx.size(); ++i) {
       for (int k = 0; k < 3; ++k) c[i * 3 + k] = corners_[idx[i] * 3 + k];
       cen[i] = centroids[idx[i]];
+      tri[i] = triangles_[idx[i]];
     }
     std::copy(c.begin(), c.end(), corners_.begin() + static_cast<ptrdiff_t>(begin) * 3);
     std::copy(cen.begin(), cen.end(), centroids.begin() + begin);
+    std::copy(tri.begin(), tri.end(), triangles_.begin() + begin);
     node.count = 0;
     node.first = build(begin, mid, centroids);
     node.right = build(mid, end, centroids);
@@ -119,11 +124,14 @@ uint32_t RayBvh::build(uint32_t begin, uint32_t end, std::vector<glm::vec3>& cen
   return id;
 }
 
-float RayBvh::nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const {
-  if (nodes_.empty()) return -1.0f;
+RayHit RayBvh::nearest(glm::vec3 origin, glm::vec3 dir, float maxT) const {
+  RayHit result;
+  if (nodes_.empty()) return result;
   const glm::vec3 inv(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
   float best = maxT;
   bool hit = false;
+  uint32_t bestSlot = 0;
+  float bestU = 0.0f, bestV = 0.0f;
   // Entry distance of a ray into a node's box, or +inf when it misses or enters beyond `best`.
   auto entry = [&](const Node& node) {
     const glm::vec3 t0 = (node.lo - origin) * inv, t1 = (node.hi - origin) * inv;
@@ -168,10 +176,14 @@ float RayBvh::nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const {
       if (d > 0.0f && d < best) {
         best = d;
         hit = true;
+        bestSlot = t;
+        bestU = u;
+        bestV = v;
       }
     }
   }
-  return hit ? best : -1.0f;
+  if (hit) result = {best, triangles_[bestSlot], bestU, bestV};
+  return result;
 }
 
 }  // namespace marble

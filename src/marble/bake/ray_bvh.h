@@ -12,12 +12,22 @@
 
 namespace marble {
 
+// The nearest hit of a ray: its distance (negative: none), the triangle (the mesh's index) and the
+// hit's barycentric weights of the triangle's second and third corners.
+struct RayHit {
+  float t = -1.0f;
+  uint32_t triangle = 0;
+  float u = 0.0f, v = 0.0f;
+};
+
 class RayBvh {
  public:
   explicit RayBvh(const Mesh& mesh);
   // Distance to the nearest triangle along origin + t * dir for t in (0, maxT), or a negative
   // value when there is none. `dir` need not be unit length (t is in its units).
-  float nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const;
+  float nearestHit(glm::vec3 origin, glm::vec3 dir, float maxT) const { return nearest(origin, dir, maxT).t; }
+  // The same ray's nearest hit with its triangle (the further bounces' patches, further_radiosity.h).
+  RayHit nearest(glm::vec3 origin, glm::vec3 dir, float maxT) const;
 
  private:
   struct Node {
@@ -30,6 +40,7 @@ class RayBvh {
   uint32_t splitPoint(uint32_t begin, uint32_t end, int axis, float lo, float extent, const std::vector<glm::vec3>& centroids) const;
   std::vector<Node> nodes_;
   std::vector<glm::vec3> corners_;  // three per triangle, in the order of the leaves
+  std::vector<uint32_t> triangles_;  // the mesh's index of each, in the same order
 };
 
 }  // namespace marble

@@ -29,7 +29,6 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
     : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
-      furtherProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_further.frag.glsl"}}),
       deinterleaveProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_deinterleave.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
@@ -37,7 +36,18 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
       refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+  clearFurtherGrid();
+}
+
+void BouncePass::clearFurtherGrid() {
+  // A grid of zero weight: the merge reads no further bounces.
+  FurtherGrid none;
+  none.cells = 2;
+  none.cellSize = 1.0f;
+  none.values.assign(8, glm::vec4(0.0f));
+  setFurtherGrid(none, glm::mat4(1.0f));
+}
 
 void BouncePass::resize(int width, int height, int lightingScale) {
   const int scale = bounceScale(lightingScale);
@@ -53,13 +63,6 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   evened_ = gl::makeTexture2D(GL_RGBA16F, w, h, GL_NEAREST);
   evenedFbo_ = gl::Framebuffer::create();
   glNamedFramebufferTexture(evenedFbo_.id(), GL_COLOR_ATTACHMENT0, evened_.id(), 0);
-  const int fw = (width + 2 * scale - 1) / (2 * scale), fh = (height + 2 * scale - 1) / (2 * scale);
-  further_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
-  furtherFbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(furtherFbo_.id(), GL_COLOR_ATTACHMENT0, further_.id(), 0);
-  furtherEvened_ = gl::makeTexture2D(GL_RGBA16F, fw, fh, GL_NEAREST);
-  furtherEvenedFbo_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(furtherEvenedFbo_.id(), GL_COLOR_ATTACHMENT0, furtherEvened_.id(), 0);
   // The refined grid at half the scale, beside the coarse one in the output (bounce_refined_grid.glsl).
   const int fine = scale / 2;
   fineWidth_ = (width + fine - 1) / fine;
@@ -75,9 +78,6 @@ void BouncePass::resize(int width, int height, int lightingScale) {
   firstDepth_.attachTo(firstFbo_.id());
   firstDepth_.attachTo(fbo_.id());
   firstDepth_.attachTo(evenedFbo_.id());
-  furtherDepth_.resize(fw, fh);
-  furtherDepth_.attachTo(furtherFbo_.id());
-  furtherDepth_.attachTo(furtherEvenedFbo_.id());
   gridDepthsStale_ = true;
 }
 
@@ -115,11 +115,10 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   gl::clearFramebuffer(fbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, furtherEvened_.id());
+  bindFurtherGrid(mergeProgram_);
   setFrameUniforms(mergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(mergeProgram_, material);
   mergeProgram_.set("u_scale", scale_);
-  mergeProgram_.set("u_further_scale", 2 * scale_);
   gl::drawFullscreenTriangle(mergeProgram_.id(), emptyVao_.id());
   scissorOff();
   // The refinement: marked again on every run (the coarse clear above may have cleared its flags),
@@ -177,12 +176,11 @@ void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices
 void BouncePass::mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                               const Material& material, float lightTexelWorld) {
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, refinedFirst_.id());
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, furtherEvened_.id());
+  bindFurtherGrid(refineMergeProgram_);
   glBindImageTexture(shader::IMAGE_BOUNCE_REFINED, bounce_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   setFrameUniforms(refineMergeProgram_, camera, lightM, light, lightTexelWorld);
   uploadMaterialUniforms(refineMergeProgram_, material);
   setBounceGridUniforms(refineMergeProgram_, gridLayout());
-  refineMergeProgram_.set("u_further_scale", 2 * scale_);
   glUseProgram(refineMergeProgram_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
   gl::dispatchComputeIndirect(0);
@@ -218,10 +216,29 @@ void BouncePass::gatherEntries(const CameraMatrices& camera, const LightMatrices
   gl::drawFullscreenTriangle(entryProgram_.id(), emptyVao_.id());
 }
 
+void BouncePass::setFurtherGrid(const FurtherGrid& grid, const glm::mat4& model) {
+  if (grid.cells != furtherCells_ || !furtherGrid_) {
+    furtherCells_ = grid.cells;
+    furtherGrid_ = gl::Texture::create(GL_TEXTURE_3D);
+    glTextureStorage3D(furtherGrid_.id(), 1, GL_RGBA32F, grid.cells, grid.cells, grid.cells);
+    // Linear: the merge's trilinear read, divided by the interpolated weight (bounce_merge.glsl).
+    glTextureParameteri(furtherGrid_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(furtherGrid_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTextureParameteri(furtherGrid_.id(), wrap, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage3D(furtherGrid_.id(), 0, 0, 0, 0, grid.cells, grid.cells, grid.cells, GL_RGBA, GL_FLOAT,
+                      grid.values.data());
+  furtherFromWorld_ = grid.textureFromModel() * glm::inverse(model);
+}
+
+void BouncePass::bindFurtherGrid(const gl::Program& program) const {
+  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_FURTHER, furtherGrid_.id());
+  glProgramUniformMatrix4fv(program.id(), program.location("u_further_from_world"), 1, GL_FALSE, &furtherFromWorld_[0][0]);
+}
+
 void BouncePass::fillGridDepths(const ScreenRect& rect) {
   firstDepth_.fill(gridDepthProgram_, emptyVao_.id(), scale_, width_, height_, scaledDown(rect, scale_));
-  furtherDepth_.fill(gridDepthProgram_, emptyVao_.id(), 2 * scale_, (width_ + 1) / 2, (height_ + 1) / 2,
-                     scaledDown(rect, 2 * scale_));
 }
 
 void BouncePass::setGridDrawState() const {
@@ -244,41 +261,20 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
   program_.set("u_scale", scale_);
   gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
-  // Off before the next clear, which the scissor would cut too: the further bounces' clear was
-  // cut to this draw's rectangle, and the merge's to the further bounces' where the entry draw
-  // (which turned it off) did not run. Texels outside the cut keep an earlier frame's values
-  // (or a new texture's undefined ones); the readers did not reach them while every texel of a
-  // draw's rectangle was shaded, but the background skip (BounceGridDepth) leaves texels there
-  // to the clear.
+  // Off before the next clear, which the scissor would cut too. Texels outside the cut keep an
+  // earlier frame's values (or a new texture's undefined ones); the readers did not reach them
+  // while every texel of a draw's rectangle was shaded, but the background skip (BounceGridDepth)
+  // leaves texels there to the clear.
   scissorOff();
-  // Its interleaved pattern evened out over the 2 x 2 blocks, on the same grid: what the further
-  // bounces and the merge read (the background's texels skipped: they keep the clear's -1, which
-  // the shader copies from the first bounce there).
+  // Its interleaved pattern evened out over the 2 x 2 blocks, on the same grid: what the merge
+  // reads (the background's texels skipped: they keep the clear's -1, which the shader copies from
+  // the first bounce there).
   glBindFramebuffer(GL_FRAMEBUFFER, evenedFbo_.id());
   gl::clearFramebuffer(evenedFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, first_.id());
   setFrameUniforms(deinterleaveProgram_, camera, lightM, light, lightTexelWorld);
   deinterleaveProgram_.set("u_scale", scale_);
-  gl::drawFullscreenTriangle(deinterleaveProgram_.id(), emptyVao_.id());
-  scissorOff();
-  // The further bounces, from the first, on the grid twice as coarse.
-  glBindFramebuffer(GL_FRAMEBUFFER, furtherFbo_.id());
-  glViewport(0, 0, (width_ + 1) / 2, (height_ + 1) / 2);
-  gl::clearFramebuffer(furtherFbo_.id(), GL_COLOR, 0, kNone);
-  scissorTo(scaledDown(rect, 2 * scale_));
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, evened_.id());
-  setFrameUniforms(furtherProgram_, camera, lightM, light, lightTexelWorld);
-  furtherProgram_.set("u_scale", 2 * scale_);
-  furtherProgram_.set("u_bounce_scale", scale_);
-  gl::drawFullscreenTriangle(furtherProgram_.id(), emptyVao_.id());
-  scissorOff();
-  // Its pattern (turned per 2 x 2 block as the first's) evened out the same way, by the same draw.
-  glBindFramebuffer(GL_FRAMEBUFFER, furtherEvenedFbo_.id());
-  gl::clearFramebuffer(furtherEvenedFbo_.id(), GL_COLOR, 0, kNone);
-  scissorTo(scaledDown(rect, 2 * scale_));
-  glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE, further_.id());
-  deinterleaveProgram_.set("u_scale", 2 * scale_);
   gl::drawFullscreenTriangle(deinterleaveProgram_.id(), emptyVao_.id());
   scissorOff();
 }

@@ -5,12 +5,13 @@
 // the lighting pass upsamples (shaders/bounce_upsample.glsl). Gathered at every lighting texel it
 // was ~26 ms of the dragon's 800² lighting pass on llvmpipe; here ~2 (docs/performance.md, "The
 // bounce gathered coarsely"); at half the lighting's resolution each way the light frames stayed
-// at 1.4x. A second draw gathers the further bounces from the first, in screen space, on a grid
-// twice as coarse each way (shaders/bounce_further.frag.glsl; on the first's grid it cost the
-// dragon's 800² frames 1.06-1.08x by instructions), and a third adds them to the first on its grid
+// at 1.4x. The further bounces (the second to the fourth) come from a radiosity over the whole
+// surface, solved on the CPU when the light moves (further_radiosity.h, since session 25; before it
+// a second draw gathered them in screen space from the first, and found 0.41 of Cycles'), as a
+// coarse 3D grid that setFurtherGrid() uploads; a second draw adds them to the first on its grid
 // (shaders/bounce_merge.frag.glsl), applying the emitters' albedo and Fresnel factors there, once
 // per texel of this grid: the pass reads the base colour and the ior, and where only they changed
-// it runs the third draw alone (`gather` false). A fourth draw gathers the first bounce at the
+// it runs that draw alone (`gather` false). A third draw gathers the first bounce at the
 // light's side, on a level of the reflective shadow map (shaders/bounce_entry.frag.glsl), for
 // the transmission to carry through thin parts; it depends on the light, the mesh, the base colour
 // and the ior only, so it runs after markEntriesStale() (the renderer calls it whenever the
@@ -23,12 +24,12 @@
 // (shaders/bounce_refined_grid.glsl), and where nothing is refined the lighting pass reads the
 // coarse grid exactly as before. Since session 21 the first bounce's interleaved pattern is evened
 // out over its 2 x 2 blocks right after its gather, on the same grid
-// (shaders/bounce_deinterleave.frag.glsl), and the further bounces and the merge read that; the
-// same draw evens out the further bounces' grid before the merges read it. The full-screen draws
+// (shaders/bounce_deinterleave.frag.glsl), and the merge reads that. The full-screen draws
 // test depth against a buffer at their grid's resolution (BounceGridDepth) and shade only the
 // texels whose pixel is stone, as the lighting pass does: about half of each grid's scissor
 // rectangle is background on the dragon.
 #include "marble/gl/program.h"
+#include "marble/render/further_radiosity.h"
 #include "marble/render/bounce_grid_depth.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/screen_rect.h"
@@ -71,15 +72,20 @@ public:
   GLuint entryTexture() const { return entry_.id(); }
   // The light's map was redrawn: the entry draw must run again at the next run().
   void markEntriesStale() { entriesStale_ = true; }
+  // The further bounces for the light and the model matrix the frame draws with (FurtherRadiosity::
+  // solve), read by the merges from the next run() on. Until the first call: none.
+  void setFurtherGrid(const FurtherGrid& grid, const glm::mat4& model);
+  void clearFurtherGrid();  // none (as until the first setFurtherGrid)
   int scale() const { return scale_; }  // full-resolution pixels per texel
   BounceGridLayout gridLayout() const { return {scale_, {width_, height_}, {fineWidth_, fineHeight_}}; }
-  // RGBA16F: the first bounce on this grid and the further bounces' grid (each as gathered and evened out), all bounces on this grid
-  // and the refined one beside it, the refined first bounce, the entries' grid; the refined list.
+  // RGBA16F: the first bounce on this grid (as gathered and evened out), all bounces on this grid
+  // and the refined one beside it, the refined first bounce, the entries' grid; the refined list;
+  // the further bounces' RGBA32F 3D grid.
   size_t bytes() const {
     const size_t fine = static_cast<size_t>(fineWidth_) * fineHeight_;
-    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>((width_ + 1) / 2) * ((height_ + 1) / 2) * 16 +
-           static_cast<size_t>(width_ + fineWidth_) * fineHeight_ * 8 + fine * 8 +
-           static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4 + firstDepth_.bytes() + furtherDepth_.bytes();
+    return static_cast<size_t>(width_) * height_ * 16 + static_cast<size_t>(width_ + fineWidth_) * fineHeight_ * 8 +
+           fine * 8 + static_cast<size_t>(entrySize_) * entrySize_ * 8 + 16 + fine * 4 + firstDepth_.bytes() +
+           static_cast<size_t>(furtherCells_) * furtherCells_ * furtherCells_ * 16;
   }
   PassTimer& timer() { return timer_; }
   // For tests: off, the full-screen draws on the grids shade every texel of the rectangle (no depth test), the
@@ -89,7 +95,7 @@ public:
 private:
   // The grids' full-screen draws' state: the depth test against the grid's depth, or none.
   void setGridDrawState() const;
-  // The first two draws: the first bounce and the further bounces, before any material parameter.
+  // The first draw (and its evening out): the first bounce, before any material parameter.
   void gatherBounces(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                      float lightTexelWorld, const ScreenRect& rect);
   // The depths the first three draws test (BounceGridDepth), for the view's G-buffer.
@@ -104,14 +110,19 @@ private:
   void gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, float lightTexelWorld);
   void mergeRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light, const Material& material,
                     float lightTexelWorld);
-  gl::Program program_, furtherProgram_, deinterleaveProgram_, mergeProgram_, entryProgram_, gridDepthProgram_;
+  // The further bounces' grid on its unit, and its matrix, for a merge program.
+  void bindFurtherGrid(const gl::Program& program) const;
+  gl::Program program_, deinterleaveProgram_, mergeProgram_, entryProgram_, gridDepthProgram_;
   gl::Program markProgram_, refineProgram_, refineMergeProgram_;
   gl::VertexArray emptyVao_;
-  gl::Texture first_, evened_, further_, furtherEvened_, bounce_, entry_, refinedFirst_;  // evened: the pattern evened out
-  gl::Framebuffer firstFbo_, evenedFbo_, furtherFbo_, furtherEvenedFbo_, fbo_, entryFbo_;
+  gl::Texture first_, evened_, bounce_, entry_, refinedFirst_;  // evened: the pattern evened out
+  gl::Framebuffer firstFbo_, evenedFbo_, fbo_, entryFbo_;
   // The first bounce's grid (attached to firstFbo_, evenedFbo_ and fbo_; as large as bounce_, so
-  // that fbo_ keeps its whole area) and the further bounces' grid (furtherFbo_, furtherEvenedFbo_).
-  BounceGridDepth firstDepth_, furtherDepth_;
+  // that fbo_ keeps its whole area).
+  BounceGridDepth firstDepth_;
+  gl::Texture furtherGrid_;  // 3D, RGBA32F (FurtherGrid's values)
+  int furtherCells_ = 0;
+  glm::mat4 furtherFromWorld_{1.0f};  // world space to the grid's texture coordinates
   gl::Buffer refineList_;  // shaders/bounce_refine_list.glsl: the indirect dispatch's arguments, the count, the texels
   int width_ = 0, height_ = 0, scale_ = 0, entrySize_ = 0;
   int fineWidth_ = 0, fineHeight_ = 0;  // the refined grid's texels (at scale_ / 2)

@@ -27,8 +27,8 @@ constexpr PassDecl kPasses[] = {
      in(I::FrameSize) | in(I::SubsurfaceResolution), 0, 0, of(Pass::Geometry), false},
     {Pass::Bounce, "bounce", "bounce",
      "Marble mode: light bounced inside the object (from the light's reflective shadow map), gathered at a quarter "
-     "of the lighting pass's texels, and its further bounces gathered from it in screen space at a sixteenth; the "
-     "lighting pass upsamples their sum.",
+     "of the lighting pass's texels, and the further bounces from a radiosity over the whole surface (solved on the "
+     "CPU when the light moves) added to it; the lighting pass upsamples their sum.",
      in(I::Light) | in(I::LightMatrices) | in(I::CameraMatrices) | in(I::FrameSize) | in(I::SubsurfaceResolution),
      kBouncePassBit, 0, of(Pass::LightDepth) | of(Pass::Geometry), false},
     {Pass::Lighting, "lighting", "lighting",

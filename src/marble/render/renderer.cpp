@@ -72,6 +72,8 @@ void Renderer::setMesh(const Mesh& mesh) {
   cpuMesh_ = mesh;
   if (drawOrderOptimized_) optimizeDrawOrder(cpuMesh_);
   mesh_.emplace(cpuMesh_);
+  further_.reset();  // made again at the next `marble` frame
+  furtherStale_ = true;
   meshCells_ = OccupancyGrid(cpuMesh_);
   aaSpansWidth_ = 0;  // made anew for this mesh
   interactionMesh_.reset();
@@ -114,6 +116,8 @@ void Renderer::adoptLightProxy(bool wait) {
   SimplifiedMesh proxy = lightProxyJob_->take();
   lightProxyJob_.reset();
   useLightProxy(std::move(proxy));
+  further_.reset();  // made from the proxy from now on, as a fresh renderer's
+  furtherStale_ = true;
   interactionMesh_.reset();  // made from the proxy from now on
   interactionIsFull_ = false;
   interactionIsLightProxy_ = false;
@@ -127,6 +131,8 @@ void Renderer::setLightProxyEnabled(bool enabled) {
   if (enabled == lightProxyEnabled_) return;
   lightProxyEnabled_ = enabled;
   if (mesh_) makeLightProxy();
+  further_.reset();  // made from the proxy (or the mesh) again at the next `marble` frame
+  furtherStale_ = true;
   interactionMesh_.reset();  // it is made from the proxy: made again at its next use
   interactionIsFull_ = false;
   interactionIsLightProxy_ = false;
@@ -321,6 +327,7 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   if (stale(Pass::LightDepth)) {
     passes_->lightDepth.run(lightMeshFor(passes_->lightDepth.size()), model, light);
     passes_->bounce.markEntriesStale();
+    furtherStale_ = true;  // the light, the model or the mesh moved: the radiosity is solved again
     ran(Pass::LightDepth);
   }
   passes_->geometry.resize(width, height);
@@ -353,6 +360,19 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
   if (marble) {
     passes_->bounce.resize(width, height, scale);
     if (stale(Pass::Bounce)) {
+      // The further bounces: the form factors once per mesh, the solve once per light (its cost
+      // falls in the bounce pass's share of the frame: docs/performance.md).
+      // From the light's proxy where there is one (its error is a fraction of the light map's
+      // texel): a 1.6 M-triangle scan's proxy simplifies to the patches in a fraction of the time.
+      // While the proxy is still being made in the background (the viewer), from the full mesh, as
+      // a renderer without a proxy (LightProxy.MadeInTheBackgroundGivesTheSameStillFrame); made
+      // again from the proxy when adoptLightProxy takes it. (From a 1.6 M-triangle scan's full mesh
+      // this took 11.7 s on two shared cores: a background job is the next step for the viewer.)
+      if (!further_) further_ = std::make_unique<FurtherRadiosity>(lightProxyMesh_.positions.empty() ? cpuMesh_ : lightProxyMesh_);
+      if (furtherStale_) {
+        passes_->bounce.setFurtherGrid(further_->solve(scene.light, model), model);
+        furtherStale_ = false;
+      }
       passes_->bounce.run({passes_->geometry.normalTexture(), passes_->geometry.depthTexture(),
                            passes_->lightDepth.bouncePositionTexture(), passes_->lightDepth.bounceNormalTexture(),
                            passes_->lightDepth.bounceSize(), passes_->lightDepth.layersTexture(),

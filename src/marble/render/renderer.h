@@ -14,6 +14,7 @@
 #include "marble/render/bounce_pass.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/floor_pass.h"
+#include "marble/render/further_radiosity.h"
 #include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
 #include "marble/render/gpu_mesh.h"
@@ -187,6 +188,11 @@ private:
   std::unique_ptr<Passes> passes_;
   std::optional<GpuMesh> mesh_;
   Mesh cpuMesh_;                          // the reordered mesh, for the simplified copies
+  // The further bounces' form factors (`marble`), from the light's proxy where there is one: made
+  // at the first `marble` frame after setMesh (or a new proxy);
+  // solved again (the bounce pass's grid) at the first `marble` frame after the light's pass ran.
+  std::unique_ptr<FurtherRadiosity> further_;
+  bool furtherStale_ = true;
   std::optional<GpuMesh> lightMesh_;      // the light's proxy; empty: the light draws mesh_
   Mesh lightProxyMesh_;                   // its CPU copy (empty without), for the interaction copy
   float lightProxyErrorUnits_ = 0.0f;

@@ -35,7 +35,7 @@
   X(UNIT_LIGHTING_BOUNCE_POSITION, 5) /* bounce.glsl, in bounce_gather.frag.glsl (its units 1, 2 above) */  \
   X(UNIT_LIGHTING_BOUNCE_NORMAL, 6)                                                                     \
   X(UNIT_LIGHTING_BOUNCE, 9)  /* bounce_upsample.glsl: the bounce pass's output (7: the environment's) */  \
-  X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_upsample.glsl: the pass's further bounces */            \
+  X(UNIT_LIGHTING_BOUNCE_FURTHER, 10) /* bounce_merge.glsl: the further bounces' 3D grid */           \
   X(UNIT_LIGHTING_BOUNCE_ENTRY, 11)   /* bounce_entry.glsl: the bounce at the light's entries */         \
   X(UNIT_LIGHTING_LIGHT_LAYERS, 12)   /* hidden_mirror.glsl, bounce_through_stone.glsl: the light's layers */ \
   /* bounce_refine_*.comp.glsl: the refined texels' list, its images, the workgroups' sizes */          \

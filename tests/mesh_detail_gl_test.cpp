@@ -166,9 +166,11 @@ TEST(LightProxy, ShadowEdgesMoveLessThanALightTurnOfOneDegree) {
   // 0.08 % when the proxy came (docs/performance.md), 0.17 % after session 22 (the hidden mirror
   // reads the light's layers, which the proxy draws), 0.24 % since session 23 (receivers behind a
   // part read them for the bounce's way through that part's stone: bounce_through_stone.glsl; the
-  // changed pixels do not move with its tolerances). The bound is relative first: a quarter of a
-  // 1° turn's (3.9 %).
-  EXPECT_LT(byProxy, 0.003);
+  // changed pixels do not move with its tolerances), 0.32 % since session 25 (the further bounces'
+  // patches are simplified from the proxy where there is one, 0.24 %; the bisected self-reflection
+  // reads the other parts' light where the ray meets them, 0.27 %; together 0.32 %). The bound is
+  // relative first: a quarter of a 1° turn's (3.6 %).
+  EXPECT_LT(byProxy, 0.004);
   EXPECT_LT(byProxy, byTurn / 4.0);
 }
 

@@ -230,7 +230,7 @@ int runViewCommand(const ViewOptions& o) {
         renderer.setLightMapDetail(moving.lightMaps);
         // A scripted screenshot (--frames N --screenshot) shows the finished picture, light proxy
         // included, whatever the machine's speed.
-        if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForLightProxy();
+        if (o.frames > 0 && frame + 1 == o.frames && !o.screenshot.empty()) renderer.waitForBackgroundWork();
         viewDrawn = !renderer.isCurrent(scene, model, viewFrame, r.width, r.height);
         if (viewDrawn) viewFrame = renderer.render(scene, model, view->fbo(), r.width, r.height);
       }

@@ -72,8 +72,7 @@ void Renderer::setMesh(const Mesh& mesh) {
   cpuMesh_ = mesh;
   if (drawOrderOptimized_) optimizeDrawOrder(cpuMesh_);
   mesh_.emplace(cpuMesh_);
-  further_.reset();  // made again at the next `marble` frame
-  furtherStale_ = true;
+  forgetFurtherBounces();  // made again at the next `marble` frame
   meshCells_ = OccupancyGrid(cpuMesh_);
   aaSpansWidth_ = 0;  // made anew for this mesh
   interactionMesh_.reset();
@@ -116,8 +115,7 @@ void Renderer::adoptLightProxy(bool wait) {
   SimplifiedMesh proxy = lightProxyJob_->take();
   lightProxyJob_.reset();
   useLightProxy(std::move(proxy));
-  further_.reset();  // made from the proxy from now on, as a fresh renderer's
-  furtherStale_ = true;
+  forgetFurtherBounces();  // made from the proxy from now on, as a fresh renderer's
   interactionMesh_.reset();  // made from the proxy from now on
   interactionIsFull_ = false;
   interactionIsLightProxy_ = false;
@@ -127,12 +125,59 @@ void Renderer::adoptLightProxy(bool wait) {
   invalidate();
 }
 
+void Renderer::forgetFurtherBounces() {
+  further_.reset();
+  furtherJob_.reset();  // a job still running for an earlier mesh is abandoned
+  furtherStale_ = true;
+  passes_->bounce.clearFurtherGrid();  // none until they are made again
+}
+
+void Renderer::makeFurtherBounces() {
+  if (further_) return;
+  // From the light's proxy where there is one (its error is a fraction of the light map's texel): a
+  // 1.6 M-triangle scan's proxy simplifies to the patches in about a second, its full mesh in 11.7 s
+  // (two shared cores). So while the proxy is still being made (the viewer), nothing: the frames
+  // until then have no further bounces.
+  if (lightProxyJob_) return;
+  const Mesh& source = lightProxyMesh_.positions.empty() ? cpuMesh_ : lightProxyMesh_;
+  if (!lightProxyInBackground_ || furtherInForeground_) {
+    further_ = furtherJob_ ? furtherJob_->take() : std::make_unique<FurtherRadiosity>(source);
+    furtherJob_.reset();
+    furtherInForeground_ = false;
+    return;
+  }
+  // The viewer: on a worker thread (0.3-1 s), the frames until then without further bounces;
+  // adoptFurtherBounces takes them and the next frame re-runs every pass.
+  if (!furtherJob_)
+    furtherJob_.emplace([mesh = std::make_shared<const Mesh>(source)] { return std::make_unique<FurtherRadiosity>(*mesh); });
+}
+
+void Renderer::adoptFurtherBounces() {
+  if (!furtherJob_ || !furtherJob_->ready()) return;
+  further_ = furtherJob_->take();
+  furtherJob_.reset();
+  furtherStale_ = true;
+  // Every pass, as adoptLightProxy: the next frame is then a fresh renderer's bit for bit.
+  invalidate();
+}
+
+void Renderer::waitForBackgroundWork() {
+  adoptLightProxy(true);
+  if (furtherJob_) {
+    further_ = furtherJob_->take();
+    furtherJob_.reset();
+    furtherStale_ = true;
+    invalidate();
+  } else if (!further_) {
+    furtherInForeground_ = true;  // the next `marble` frame makes them before it draws
+  }
+}
+
 void Renderer::setLightProxyEnabled(bool enabled) {
   if (enabled == lightProxyEnabled_) return;
   lightProxyEnabled_ = enabled;
   if (mesh_) makeLightProxy();
-  further_.reset();  // made from the proxy (or the mesh) again at the next `marble` frame
-  furtherStale_ = true;
+  forgetFurtherBounces();  // made from the proxy (or the mesh) again at the next `marble` frame
   interactionMesh_.reset();  // it is made from the proxy: made again at its next use
   interactionIsFull_ = false;
   interactionIsLightProxy_ = false;
@@ -252,6 +297,7 @@ Renderer::FrameToken Renderer::render(const Scene& scene, const glm::mat4& model
                                       int height) {
   const gl::NoProgramCurrentOnExit noProgramAfter;
   adoptLightProxy(false);
+  adoptFurtherBounces();
   if (!mesh_ || width <= 0 || height <= 0) return {};
   const int reducedWidth = std::max(1, static_cast<int>(std::lround(static_cast<float>(width) * resolutionScale_)));
   const int reducedHeight = std::max(1, static_cast<int>(std::lround(static_cast<float>(height) * resolutionScale_)));
@@ -362,14 +408,8 @@ Renderer::FrameToken Renderer::drawFrame(const Scene& scene, const glm::mat4& mo
     if (stale(Pass::Bounce)) {
       // The further bounces: the form factors once per mesh, the solve once per light (its cost
       // falls in the bounce pass's share of the frame: docs/performance.md).
-      // From the light's proxy where there is one (its error is a fraction of the light map's
-      // texel): a 1.6 M-triangle scan's proxy simplifies to the patches in a fraction of the time.
-      // While the proxy is still being made in the background (the viewer), from the full mesh, as
-      // a renderer without a proxy (LightProxy.MadeInTheBackgroundGivesTheSameStillFrame); made
-      // again from the proxy when adoptLightProxy takes it. (From a 1.6 M-triangle scan's full mesh
-      // this took 11.7 s on two shared cores: a background job is the next step for the viewer.)
-      if (!further_) further_ = std::make_unique<FurtherRadiosity>(lightProxyMesh_.positions.empty() ? cpuMesh_ : lightProxyMesh_);
-      if (furtherStale_) {
+      makeFurtherBounces();
+      if (further_ && furtherStale_) {
         passes_->bounce.setFurtherGrid(further_->solve(scene.light, model), model);
         furtherStale_ = false;
       }

@@ -14,6 +14,7 @@
 #include "marble/render/bounce_pass.h"
 #include "marble/render/environment_map.h"
 #include "marble/render/floor_pass.h"
+#include "marble/core/background_job.h"
 #include "marble/render/further_radiosity.h"
 #include "marble/render/fxaa_pass.h"
 #include "marble/render/geometry_pass.h"
@@ -66,8 +67,16 @@ public:
   // every frame the same). Applies from the next setMesh.
   void setLightProxyInBackground(bool background) { lightProxyInBackground_ = background; }
   bool lightProxyPending() const { return lightProxyJob_.has_value(); }
-  // Waits for a pending proxy and takes it now (GL context current).
-  void waitForLightProxy() { adoptLightProxy(true); }
+  // The same for the further bounces' form factors (`marble`, further_radiosity.h): in the
+  // background, the first `marble` frame once the proxy is there (or at once without one) starts
+  // them on a worker thread (0.3-1 s), the frames until they are there have no further bounces, and
+  // the first render() after that takes them and re-runs every pass (isCurrent() is false from the
+  // moment they are ready).
+  bool furtherBouncesPending() const { return furtherJob_.has_value(); }
+  // Waits for a pending proxy and takes it now (GL context current), and has the next `marble`
+  // frame make the further bounces (or wait for them) before it draws: that frame is a finished
+  // one, as a renderer's that works in the foreground (the viewer's scripted screenshot).
+  void waitForBackgroundWork();
 
   // Which mesh the camera's passes (geometry, floor) draw: the full mesh, or -- while the view
   // moves -- the interaction copy (at most about kInteractionTriangles, render/mesh_detail.h:
@@ -166,7 +175,7 @@ public:
   bool isCurrent(const Scene& scene, const glm::mat4& model, FrameToken shown, int width, int height) const {
     return lastOutput_ &&
            *lastOutput_ == OutputKey{scene, model, shown, width, height, cache_.stateRevision(), resolutionScale_} &&
-           !(lightProxyJob_ && lightProxyJob_->ready());
+           !(lightProxyJob_ && lightProxyJob_->ready()) && !(furtherJob_ && furtherJob_->ready());
   }
   // The post pass's picture of the last frame (RGBA8; luma in alpha when FXAA is on), before
   // antialiasing: for tests and tools.
@@ -193,6 +202,8 @@ private:
   // solved again (the bounce pass's grid) at the first `marble` frame after the light's pass ran.
   std::unique_ptr<FurtherRadiosity> further_;
   bool furtherStale_ = true;
+  std::optional<BackgroundJob<std::unique_ptr<FurtherRadiosity>>> furtherJob_;  // being made (the viewer)
+  bool furtherInForeground_ = false;  // waitForBackgroundWork: the next frame makes them at once
   std::optional<GpuMesh> lightMesh_;      // the light's proxy; empty: the light draws mesh_
   Mesh lightProxyMesh_;                   // its CPU copy (empty without), for the interaction copy
   float lightProxyErrorUnits_ = 0.0f;
@@ -211,6 +222,9 @@ private:
   void makeLightProxy();
   void useLightProxy(SimplifiedMesh proxy);
   void adoptLightProxy(bool wait);  // takes a finished (or, with wait, the pending) proxy
+  void forgetFurtherBounces();      // a new mesh or proxy: none until made again
+  void makeFurtherBounces();        // at a `marble` frame: made, started in the background, or waiting for the proxy
+  void adoptFurtherBounces();       // takes finished background ones
   const GpuMesh& cameraMesh();
   const GpuMesh& lightMesh() const { return lightMesh_ ? *lightMesh_ : *mesh_; }
   // What the light's pass draws into maps of `mapSize`: at the full size lightMesh(); smaller, where

@@ -32,22 +32,11 @@ const PlateAndWall kPlate{kWallX, kWall, kElevationDeg};
 
 // The camera `tiltDeg` off the plate's normal toward +x, 3 units from the shadow's end.
 Scene plateScene(float tiltDeg, float fovDeg) {
-  Scene s;
-  s.mesh = "test:plate-and-wall";
+  Scene s = grazingLightSeenFromAbove("test:plate-and-wall", kPlate.shadowEnd(), kElevationDeg, fovDeg);
   s.mm_per_unit = 150.0f;
   s.render.width = s.render.height = 256;
-  s.render.mode = RenderMode::Marble;
-  s.render.environment = Environment::None;
   const float t = glm::radians(tiltDeg);
-  s.camera.target = {kPlate.shadowEnd(), 0.0f, 0.0f};
   s.camera.position = s.camera.target + 3.0f * glm::vec3(std::sin(t), std::cos(t), 0.0f);
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.fov_y_deg = fovDeg;
-  s.light.type = LightType::Directional;
-  const float e = glm::radians(kElevationDeg);
-  s.light.position = {-std::cos(e), std::sin(e), 0.0f};  // toward the light
-  s.light.intensity = 1.0f;
-  s.material = principledStone();
   s.material.roughness = 1.0f;  // no highlight in the way
   return s;
 }

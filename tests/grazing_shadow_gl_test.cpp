@@ -34,21 +34,8 @@ constexpr float kWallX = -0.7f, kWall = 0.1f;
 const PlateAndWall kPlate{kWallX, kWall, kElevationDeg};
 
 Scene grazingScene() {
-  Scene s;
-  s.mesh = "test:plate-and-wall";
+  Scene s = grazingLightSeenFromAbove("test:plate-and-wall", kPlate.shadowEnd(), kElevationDeg, 20.0f);
   s.mm_per_unit = 1000.0f;  // the blur's millimetres far below the distances here
-  s.render.width = s.render.height = 128;
-  s.render.mode = RenderMode::Marble;
-  s.render.environment = Environment::None;
-  s.camera.position = {kPlate.shadowEnd(), 3.0f, 0.0f};
-  s.camera.target = {kPlate.shadowEnd(), 0.0f, 0.0f};
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.fov_y_deg = 20;
-  s.light.type = LightType::Directional;
-  const float e = glm::radians(kElevationDeg);
-  s.light.position = {-std::cos(e), std::sin(e), 0.0f};  // toward the light
-  s.light.intensity = 1.0f;
-  s.material = principledStone();
   return s;
 }
 

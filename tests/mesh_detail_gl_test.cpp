@@ -182,13 +182,22 @@ TEST(LightProxy, ShadowEdgesMoveLessThanALightTurnOfOneDegree) {
 // bounces' form factors, made from the proxy on a worker thread too: frames drawn before they are
 // there have none; once they are there the renderer is not current again, and the next frame
 // equals, bit for bit, a renderer that made both in the foreground.
+namespace {
+
+// The dense sculpture in a renderer that makes its proxy and further bounces in the background.
+void startInTheBackground(Renderer& background) {
+  background.setLightProxyInBackground(true);
+  background.setMesh(denseSculpture());
+}
+
+}  // namespace
+
 TEST(LightProxy, MadeInTheBackgroundGivesTheSameStillFrame) {
   glContext();
   Scene s = sceneOf(RenderMode::Marble);
   OffscreenTarget target(kSize, kSize);
   Renderer background;
-  background.setLightProxyInBackground(true);
-  background.setMesh(denseSculpture());
+  startInTheBackground(background);
   const bool pendingAtFirstFrame = background.lightProxyPending();
   Renderer::FrameToken shown = background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
   const ImageRGBA8 first = target.read();
@@ -232,8 +241,7 @@ TEST(LightProxy, WaitingForTheBackgroundWorkGivesTheFinishedFrame) {
   Scene s = sceneOf(RenderMode::Marble);
   OffscreenTarget target(kSize, kSize);
   Renderer background;
-  background.setLightProxyInBackground(true);
-  background.setMesh(denseSculpture());
+  startInTheBackground(background);
   background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);
   background.waitForBackgroundWork();
   background.render(s, glm::mat4(1.0f), target.fbo(), kSize, kSize);

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 
 #include <glm/glm.hpp>
 
 #include "box_mesh.h"
 #include "marble/mesh/vertex_normals.h"
+#include "marble/scene/scene.h"
+#include "principled_stone.h"
 
 namespace marble::test {
 
@@ -28,5 +31,27 @@ struct PlateAndWall {
   Mesh mesh() const { return plateAndWall(wallX, height); }
   float shadowEnd() const { return wallX + height / std::tan(glm::radians(elevationDeg)); }
 };
+
+// A plate whose top is at y = 0 seen from 3 units straight above x (`fovDeg` wide, 128²), lit by a
+// directional light from -x at `elevationDeg`, the stone, in `marble` mode without the
+// environment: the scene of the tests that find where a grazing light's shadow ends
+// (GrazingShadow, ReceiverPlaneShadow).
+inline Scene grazingLightSeenFromAbove(const std::string& mesh, float x, float elevationDeg, float fovDeg) {
+  Scene s;
+  s.mesh = mesh;
+  s.render.width = s.render.height = 128;
+  s.render.mode = RenderMode::Marble;
+  s.render.environment = Environment::None;
+  s.camera.position = {x, 3.0f, 0.0f};
+  s.camera.target = {x, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.fov_y_deg = fovDeg;
+  s.light.type = LightType::Directional;
+  const float e = glm::radians(elevationDeg);
+  s.light.position = {-std::cos(e), std::sin(e), 0.0f};  // toward the light
+  s.light.intensity = 1.0f;
+  s.material = principledStone();
+  return s;
+}
 
 }  // namespace marble::test

@@ -17,6 +17,7 @@
 #include "box_mesh.h"
 #include "gl_support.h"
 #include "image_probe.h"
+#include "plate_and_wall.h"
 #include "principled_stone.h"
 
 using namespace marble;
@@ -45,21 +46,9 @@ Mesh plateUnderShelf() {
 }
 
 Scene shelfScene() {
-  Scene s;
-  s.mesh = "test:plate-under-shelf";
+  // 4 degrees: 0.21 units across, the strip is 0.084.
+  Scene s = grazingLightSeenFromAbove("test:plate-under-shelf", stripMiddle(), kElevationDeg, 4.0f);
   s.mm_per_unit = 10000.0f;  // the blur (17 mm: 0.0017 units) about a pixel, no transmission through the gap
-  s.render.width = s.render.height = 128;
-  s.render.mode = RenderMode::Marble;
-  s.render.environment = Environment::None;
-  s.camera.position = {stripMiddle(), 3.0f, 0.0f};
-  s.camera.target = {stripMiddle(), 0.0f, 0.0f};
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.fov_y_deg = 4;  // 0.21 units across: the strip is 0.084
-  s.light.type = LightType::Directional;
-  const float e = glm::radians(kElevationDeg);
-  s.light.position = {-std::cos(e), std::sin(e), 0.0f};  // toward the light
-  s.light.intensity = 1.0f;
-  s.material = principledStone();
   return s;
 }
 

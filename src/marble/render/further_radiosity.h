@@ -88,7 +88,7 @@ class FurtherRadiosity {
   // bounces' finest detail: with 32 (2.1 / 30 units) the fold test's plate read 0.85-0.94 of its own
   // patches' value 0.07-0.10 from the wall, with 48 0.99-1.02; the ten scenes' mean SSIM +0.0007
   // (buddha-side +0.0017, buddha-back +0.0027, none down more than 0.0003; docs/quality.md,
-  // "Twenty-fifth session: the radiosity's grid"). 48 and no finer: the read needs a patch centre
+  // "Twenty-fifth session: ... the radiosity's grid at 48 cells"). 48 and no finer: the read needs a patch centre
   // within its footprint (two cells), and the split leaves patches up to kPatchMaxEdge = 0.1 units
   // across on flat faces (64 cells, footprint 0.066 units, scored +0.0002 more but can leave holes).
   static constexpr int kGridCells = 48;

@@ -191,8 +191,11 @@ TEST(HiddenMirror, APartsSideEdgeOnToTheLightIsMirrored) {
 // view's line of sight to p); open: no bars. With the face's indirect light the hidden difference
 // is F's difference x p's bounce, the open one F's difference x the face's (the post pass mirrors
 // the face's blurred light): measured 0.0151 against 0.0122, 1.24 -- p receives 1.24x the face's
-// bounce here, the approximation's error in this geometry (allowed 0.75-1.5). Control, rebuilt by
-// hand (the face's indirect light left out, as before session 23): hidden -0.0002, -0.01, failing.
+// bounce here, the approximation's error in this geometry. Since session 25 the further bounces come
+// from the world-space radiosity (further_radiosity.h), which gives the face, lit by the block,
+// more of them than p in the wall's shadow: 0.78 with its grid at 32 cells a side, 0.72 at 48 (the
+// approximation's error the other way; allowed 0.6-1.5). Control, rebuilt by hand (the face's
+// indirect light left out, as before session 23): hidden -0.0002, -0.01, failing.
 namespace {
 
 constexpr float kFarBlock = 1.4f;  // the far block's face toward the wall
@@ -247,6 +250,6 @@ TEST(HiddenMirror, TheHiddenFaceAlsoSendsItsIndirectLight) {
             << " / " << high.second << ": the view's difference open " << open << ", hidden " << hidden
             << ", hidden / open " << hidden / open << "\n";
   ASSERT_GT(open, 0.0f);
-  EXPECT_GT(hidden / open, 0.75f);
+  EXPECT_GT(hidden / open, 0.6f);
   EXPECT_LT(hidden / open, 1.5f);
 }

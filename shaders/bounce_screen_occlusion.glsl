@@ -1,8 +1,9 @@
 // The camera-side bounce's occlusion near the receiver (session 22): a sample of the one bounce
-// (bounce.glsl, bounce_sample) brings nothing where the first eighth of its way from the receiver
-// to the emitter passes just behind a surface the camera sees, i.e. runs into stone. One point of
-// the segment tested against the camera's depth buffer, as screen-space directional occlusion does
-// for its sample directions (Ritschel, Grosch & Seidel 2009, "Approximating dynamic global
+// (bounce.glsl, bounce_sample) brings nothing where its way from the receiver to the emitter passes
+// just behind a surface the camera sees, i.e. runs into stone, at an eighth, a quarter or three
+// eighths of the way (since session 26; an eighth alone before). Points of the segment tested
+// against the camera's depth buffer, as screen-space directional occlusion does for its sample
+// directions (Ritschel, Grosch & Seidel 2009, "Approximating dynamic global
 // illumination in image space"); the reflective shadow map itself has no visibility.
 // Why: in the side-lit statues' shade the bounce was 1.6-1.9 x Cycles' indirect light (buddha-side's
 // darkest band of Cycles' display luma, against the averaged references), light gathered from lit
@@ -10,14 +11,21 @@
 // the body seen edge-on); docs/quality.md, "Twenty-second session: the side-lit shade against the
 // averaged references".
 // Approximations, each stated:
-// - one point, at BOUNCE_OCCLUSION_AT of the segment from the receiver: the stone next to the
-//   receiver (a fold's wall, the body beyond an edge) is caught, a wall halfway to the emitter is
-//   not (session 19's and 20's tests through the light's layers caught it, and removed the light
-//   through the back-lit dragon's coils that stands in for its missing glow: dragon-back -0.012 to
-//   -0.031). Measured on dragon-side, buddha-side, dragon-back and buddha-front at 1/20, 1/10, 1/8,
-//   3/20, 7/40 and 1/5 of the segment and at fixed 1.5-6 % of the object's size, then over all ten
-//   reference scenes: 1/8 the best (buddha-side +0.012, the ten scenes' mean +0.0019, none down by
-//   more than 0.0005; docs/quality.md);
+// - BOUNCE_OCCLUSION_POINTS points, at 1, 2, ... eighths of the segment from the receiver: the stone
+//   next to the receiver (a fold's wall, the body beyond an edge) and a wall up to three eighths of
+//   the way out are caught, one halfway to the emitter or beyond is not (session 19's and 20's tests
+//   through the light's layers caught it, and removed the light through the back-lit dragon's coils
+//   that stands in for its missing glow: dragon-back -0.012 to -0.031). Session 22 measured one
+//   point on dragon-side, buddha-side, dragon-back and buddha-front at 1/20, 1/10, 1/8, 3/20, 7/40
+//   and 1/5 of the segment and at fixed 1.5-6 % of the object's size, then over all ten reference
+//   scenes: 1/8 the best (buddha-side +0.012, the ten scenes' mean +0.0019). Session 26 found the
+//   side-lit statues' remaining bounce surplus where the first bounce dominates (1.2-2.1 x Cycles'
+//   indirect light where it is over nine tenths of marble's bounce, against 0.7-0.8 x where the
+//   further bounces dominate: a first bounce through stone farther out than an eighth) and measured
+//   1/8 + 2/8, 1/8 + 2/8 + 3/8, 1/8 + 4/8, 1/8 to 4/8 and 1/8 to 6/8: three points the best
+//   (dragon-side +0.0013, buddha-side +0.0030, dragon-back +0.004; at 6/8 the points fall behind
+//   parts in front, taken for stone, and dragon-side loses it); docs/quality.md, "Twenty-sixth
+//   session: the first bounce's placement";
 // - a point within BOUNCE_OCCLUSION_NEAR tolerances of the receiver is not tested (the inner rings'
 //   ways, whose eighth hardly leaves the receiver: the surface seen there is the receiver's own,
 //   and at a grazing view its slope across the pixel could pass for stone). At 2, 4 and 8 the four
@@ -35,15 +43,15 @@
 // Needs from the includer: deferred_common.glsl (surface_point, u_view_proj, u_camera_pos,
 // u_light_texel_world) and the G-buffer's depth bound as u_depth.
 
-const float BOUNCE_OCCLUSION_AT = 0.125;    // of the receiver -> emitter segment
+const float BOUNCE_OCCLUSION_STEP = 0.125;  // of the receiver -> emitter segment, between the points
+const int BOUNCE_OCCLUSION_POINTS = 3;
 const float BOUNCE_OCCLUSION_DEPTH = 0.08;  // world units behind the seen surface that count as stone
 const float BOUNCE_OCCLUSION_NEAR = 4.0;    // tolerances: a point nearer the receiver is not tested
 
-// True where the point BOUNCE_OCCLUSION_AT of the way from the receiver P to the emitter xp lies
-// behind the surface the camera sees there by more than the tolerance and less than
-// BOUNCE_OCCLUSION_DEPTH.
-bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
-  vec3 Q = mix(P, xp, BOUNCE_OCCLUSION_AT);
+// True where the point `at` of the way from the receiver P to the emitter xp lies behind the
+// surface the camera sees there by more than the tolerance and less than BOUNCE_OCCLUSION_DEPTH.
+bool bounce_stone_at(vec3 P, vec3 xp, float at) {
+  vec3 Q = mix(P, xp, at);
   float tol = 2.0 * u_light_texel_world;
   vec3 PQ = Q - P;
   if (dot(PQ, PQ) < BOUNCE_OCCLUSION_NEAR * BOUNCE_OCCLUSION_NEAR * tol * tol) return false;
@@ -58,4 +66,11 @@ bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
   float seenW = 1.0 / dot(vec4(u_inv_view_proj[0][3], u_inv_view_proj[1][3], u_inv_view_proj[2][3], u_inv_view_proj[3][3]), ndc);
   float behind = clip.w - seenW;
   return behind > tol && behind < BOUNCE_OCCLUSION_DEPTH;
+}
+
+// True where any of the BOUNCE_OCCLUSION_POINTS points of the way nearest the receiver runs into stone.
+bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
+  for (int i = 1; i <= BOUNCE_OCCLUSION_POINTS; ++i)
+    if (bounce_stone_at(P, xp, BOUNCE_OCCLUSION_STEP * float(i))) return true;
+  return false;
 }

@@ -592,8 +592,10 @@ TEST_F(Bounce, NoneThroughAThinBlockBesideTheFace) {
   // samples whose way runs into the stone next to the receiver, tested at an eighth of the way
   // against the camera's depth (bounce_screen_occlusion.glsl): here the plate from x = 0.34 to 0.82
   // (64 % of the view factor), where that point lies inside the block; the ways to x = 0.19-0.34 and
-  // 0.82-1 (33 %) cross the block farther out and are kept. Measured 0.30 of the unobstructed light;
-  // without the test (the reflective shadow map's own, no visibility) 0.70, which fails.
+  // 0.82-1 (33 %) cross the block farther out and are kept. Measured 0.31 of the unobstructed light
+  // (0.26 since session 26 also tests a quarter and three eighths of the way, which meet the block
+  // on a few more ways); without the test (the reflective shadow map's own, no visibility) 0.70,
+  // which fails.
   constexpr float kAlbedo = 0.8f;
   Scene s = cornerScene(kAlbedo, kOccludedH);
   s.camera.position = probe(kOccludedH) + glm::vec3(3.9f, 1.0f, 0.0f);
@@ -605,6 +607,41 @@ TEST_F(Bounce, NoneThroughAThinBlockBesideTheFace) {
   std::cout << "[          ] the plate's light unobstructed " << unobstructed.g << ", with the block in the way "
             << throughTheBlock.g << " (" << throughTheBlock.g / unobstructed.g << ")\n";
   for (int c = 0; c < 3; ++c) EXPECT_LT(throughTheBlock[c], 0.5f * unobstructed[c]) << "channel " << c;
+}
+
+namespace {
+// A lower block farther from the wall (x in [0.25, 0.31], its top 0.35 above the plate, 0.10 below
+// the probe at h = 0.45): it hides the whole plate beyond it from the probe, but the eighth of each
+// way next to the probe passes above it (at 0.39 above the plate there), so the one point of
+// session 22 never meets it; a quarter of the way out (0.34 above the plate) meets it for the ways
+// to x = 0.70-0.94, three eighths (0.28) for x = 0.50-0.66.
+constexpr float kFarX0 = 0.25f, kFarX1 = 0.31f, kFarTop = kPlateTop + 0.35f;
+Mesh withFarBlock(Mesh m) {
+  addBox(m, {kFarX0, kPlateTop, -1.0f}, {kFarX1, kFarTop, 1.0f});
+  computeVertexNormals(m, 60.0f);
+  return m;
+}
+}  // namespace
+
+TEST_F(Bounce, LessThroughABlockAQuarterOfTheWayOut) {
+  // The light the plate sends the probe with the far block in the way, over the same without it
+  // (each less the same scene without the plate, as above). Geometrically the block stops all of it
+  // but the strip between the wall and the block. The camera-side gather tests its samples' ways
+  // at an eighth, a quarter and three eighths of the way against the camera's depth
+  // (bounce_screen_occlusion.glsl), and the two farther points lie inside the block for the ways to
+  // x = 0.50-0.66 and 0.70-0.94. Measured 0.70 of the unobstructed light; with the eighth alone
+  // (BOUNCE_OCCLUSION_POINTS 1, before session 26) 0.996, which fails.
+  constexpr float kAlbedo = 0.8f;
+  Scene s = cornerScene(kAlbedo, kOccludedH);
+  s.camera.position = probe(kOccludedH) + glm::vec3(3.9f, 1.0f, 0.0f);
+  s.camera.target = probe(kOccludedH);
+  const HdrPair open = renderHdrPair(s, corner(true), wallAlone());
+  const HdrPair blocked = renderHdrPair(s, withFarBlock(corner(true)), withFarBlock(wallAlone()));
+  const glm::vec3 unobstructed = besideTheBlock(open.first, s) - besideTheBlock(open.second, s);
+  const glm::vec3 throughTheBlock = besideTheBlock(blocked.first, s) - besideTheBlock(blocked.second, s);
+  std::cout << "[          ] the plate's light unobstructed " << unobstructed.g << ", with the far block in the way "
+            << throughTheBlock.g << " (" << throughTheBlock.g / unobstructed.g << ")\n";
+  for (int c = 0; c < 3; ++c) EXPECT_LT(throughTheBlock[c], 0.8f * unobstructed[c]) << "channel " << c;
 }
 
 namespace {

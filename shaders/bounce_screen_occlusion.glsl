@@ -48,29 +48,29 @@ const int BOUNCE_OCCLUSION_POINTS = 3;
 const float BOUNCE_OCCLUSION_DEPTH = 0.08;  // world units behind the seen surface that count as stone
 const float BOUNCE_OCCLUSION_NEAR = 4.0;    // tolerances: a point nearer the receiver is not tested
 
-// True where the point `at` of the way from the receiver P to the emitter xp lies behind the
-// surface the camera sees there by more than the tolerance and less than BOUNCE_OCCLUSION_DEPTH.
-bool bounce_stone_at(vec3 P, vec3 xp, float at) {
-  vec3 Q = mix(P, xp, at);
+// True where any of the BOUNCE_OCCLUSION_POINTS points of the way nearest the receiver, at 1, 2, ...
+// BOUNCE_OCCLUSION_STEP of the way from the receiver P to the emitter xp, lies behind the surface
+// the camera sees there by more than the tolerance and less than BOUNCE_OCCLUSION_DEPTH. The points'
+// clip coordinates by interpolating the two ends' (a projective map keeps straight lines straight in
+// homogeneous coordinates): two matrix products per sample for any number of points.
+bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
   float tol = 2.0 * u_light_texel_world;
-  vec3 PQ = Q - P;
-  if (dot(PQ, PQ) < BOUNCE_OCCLUSION_NEAR * BOUNCE_OCCLUSION_NEAR * tol * tol) return false;
-  vec4 clip = u_view_proj * vec4(Q, 1.0);
-  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
-  float depth = textureLod(u_depth, uv, 0.0).r;  // the nearest pixel: the G-buffer's depth is GL_NEAREST
-  if (depth >= 1.0) return false;
+  vec3 d = xp - P;
+  float nearAt2 = BOUNCE_OCCLUSION_NEAR * BOUNCE_OCCLUSION_NEAR * tol * tol / max(dot(d, d), 1e-12);
+  vec4 clipP = u_view_proj * vec4(P, 1.0), clipX = u_view_proj * vec4(xp, 1.0);
   // Depths along the camera's axis (clip w), the seen surface's from the inverse's w row alone
   // (surface_point's w: 1 / clip w): under 7 % off the distances along the ray at the frame's corners.
-  vec4 ndc = vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
-  float seenW = 1.0 / dot(vec4(u_inv_view_proj[0][3], u_inv_view_proj[1][3], u_inv_view_proj[2][3], u_inv_view_proj[3][3]), ndc);
-  float behind = clip.w - seenW;
-  return behind > tol && behind < BOUNCE_OCCLUSION_DEPTH;
-}
-
-// True where any of the BOUNCE_OCCLUSION_POINTS points of the way nearest the receiver runs into stone.
-bool bounce_occluded_near_receiver(vec3 P, vec3 xp) {
-  for (int i = 1; i <= BOUNCE_OCCLUSION_POINTS; ++i)
-    if (bounce_stone_at(P, xp, BOUNCE_OCCLUSION_STEP * float(i))) return true;
+  vec4 wRow = vec4(u_inv_view_proj[0][3], u_inv_view_proj[1][3], u_inv_view_proj[2][3], u_inv_view_proj[3][3]);
+  for (int i = 1; i <= BOUNCE_OCCLUSION_POINTS; ++i) {
+    float at = BOUNCE_OCCLUSION_STEP * float(i);
+    if (at * at < nearAt2) continue;  // within BOUNCE_OCCLUSION_NEAR tolerances of the receiver
+    vec4 clip = mix(clipP, clipX, at);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
+    float depth = textureLod(u_depth, uv, 0.0).r;  // the nearest pixel: the G-buffer's depth is GL_NEAREST
+    if (depth >= 1.0) continue;
+    float behind = clip.w - 1.0 / dot(wRow, vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0));
+    if (behind > tol && behind < BOUNCE_OCCLUSION_DEPTH) return true;
+  }
   return false;
 }

@@ -22,10 +22,12 @@
 //   side-lit statues' remaining bounce surplus where the first bounce dominates (1.2-2.1 x Cycles'
 //   indirect light where it is over nine tenths of marble's bounce, against 0.7-0.8 x where the
 //   further bounces dominate: a first bounce through stone farther out than an eighth) and measured
-//   1/8 + 2/8, 1/8 + 2/8 + 3/8, 1/8 + 4/8, 1/8 to 4/8 and 1/8 to 6/8: three points the best
-//   (dragon-side +0.0013, buddha-side +0.0030, dragon-back +0.004; at 6/8 the points fall behind
-//   parts in front, taken for stone, and dragon-side loses it); docs/quality.md, "Twenty-sixth
-//   session: the first bounce's placement";
+//   1/8 + 2/8, 1/8 + 2/8 + 3/8, 1/8 + 4/8, 1/8 to 4/8, 1/8 to 6/8 and sixteenths up to 6/16 and
+//   8/16: three eighths the best for the cost (dragon-side +0.0013, buddha-side +0.0030,
+//   dragon-back +0.0040, the ten scenes' mean +0.0011, none down by more than 0.0002; at 6/8 the
+//   points fall behind parts in front, taken for stone, and dragon-side loses it); docs/quality.md,
+//   "Twenty-sixth session: the side-lit statues' indirect light split into first, further and
+//   crossed bounces";
 // - a point within BOUNCE_OCCLUSION_NEAR tolerances of the receiver is not tested (the inner rings'
 //   ways, whose eighth hardly leaves the receiver: the surface seen there is the receiver's own,
 //   and at a grazing view its slope across the pixel could pass for stone). At 2, 4 and 8 the four

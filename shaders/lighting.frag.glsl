@@ -466,16 +466,16 @@ float entry_seen(vec3 entry, float tol) {
 // max(N.L, 0) where it finds none (s = 0), blended over the first ENTRY_OWN_TEXELS light texels of
 // chord so the weight stays continuous. Why: P_in lies 2 texels inside the stone, so a ray from it
 // to the light must cross the surface; a read that finds the entry at or behind P_in (s = 0) has
-// averaged the four texels across a silhouette or a grazing surface, and its cosine belongs to
-// whatever those texels saw (the lid's dome at 0.3-0.6 beside the knob's base on teapot-back,
-// where N.L is -0.05 ... +0.07). Then the light reaches P through P's own surface: it enters at
-// P's own cosine, which goes to 0 at the terminator with the Principled entry (light entering
-// at N.L -> 0 through a chord -> 0 carries cos principled_entry(cos) -> 0), not at the neighbours'.
-// Cycles' walk there gives DiffDir 0.0004-0.013, the map's cosine gave 0.05-0.18. On a lit plane
-// the offset's chord is 2 texels / N.L >= 2 texels, beyond the blend: the lit side is unchanged.
-// Measured (docs/quality.md, "Twenty-sixth session: the zero chord's cosine"): ten scenes' mean
-// +0.0006 (teapot-side +0.0043, teapot-back +0.0021); the blend's width 0.5 texel (0 ... 1: the
-// same within 0.0004; 2 texels already cuts real rim chords).
+// averaged texels across a silhouette or a grazing surface, or seen an open wall's other side (the
+// teapot's body is an open sheet: at the lid's crack its outer side read its own inner side), and
+// its cosine belongs to whatever those texels saw. Then the light reaches P through P's own
+// surface, at P's own cosine: cos principled_entry(cos) -> 0 as N.L -> 0 (grazing entry through a
+// chord -> 0 carries nothing), 0 facing away. teapot-back's crack (x 122-124, rows 82-83): Cycles
+// 0.009-0.020, the map's cosine 0.041-0.088, this 0.007-0.026. On a lit plane the offset's chord is
+// 2 texels / N.L >= 2 texels, beyond the blend: the lit side is unchanged. Measured (docs/quality.md,
+// "Twenty-sixth session: the zero chord's cosine"): ten scenes' mean +0.0006 (teapot-side +0.0043,
+// teapot-back +0.0021, none down by more than 0.00012); the blend's width 0.5 texel (0 ... 1 within
+// 0.0005 on both teapots; from 1.5 texels on it cuts the rims' real short chords).
 const float ENTRY_OWN_TEXELS = 0.5;
 float entry_cosine(vec2 s_cos, float NoL) {
   return mix(max(NoL, 0.0), s_cos.y, smoothstep(0.0, ENTRY_OWN_TEXELS * u_light_texel_world, s_cos.x));

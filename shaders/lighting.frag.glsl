@@ -461,6 +461,26 @@ float entry_seen(vec3 entry, float tol) {
   return at_entry * smoothstep(-0.1, 0.0, dot(N_seen, light_vector(S)));
 }
 
+// The cosine the light entered at, for a chord s (scene units) read at the inward-offset exit P_in:
+// the map's (s_cos.y) wherever the read finds stone between P_in and the light, and the exit's own
+// max(N.L, 0) where it finds none (s = 0), blended over the first ENTRY_OWN_TEXELS light texels of
+// chord so the weight stays continuous. Why: P_in lies 2 texels inside the stone, so a ray from it
+// to the light must cross the surface; a read that finds the entry at or behind P_in (s = 0) has
+// averaged texels across a silhouette or a grazing surface, or seen an open wall's other side (the
+// teapot's body is an open sheet: at the lid's crack its outer side read its own inner side), and
+// its cosine belongs to whatever those texels saw. Then the light reaches P through P's own
+// surface, at P's own cosine: cos principled_entry(cos) -> 0 as N.L -> 0 (grazing entry through a
+// chord -> 0 carries nothing), 0 facing away. teapot-back's crack (x 122-124, rows 82-83): Cycles
+// 0.009-0.020, the map's cosine 0.041-0.088, this 0.007-0.026. On a lit plane the offset's chord is
+// 2 texels / N.L >= 2 texels, beyond the blend: the lit side is unchanged. Measured (docs/quality.md,
+// "Twenty-sixth session: the zero chord's cosine"): ten scenes' mean +0.0006 (teapot-side +0.0043,
+// teapot-back +0.0021, none down by more than 0.00012); the blend's width 0.5 texel (0 ... 1 within
+// 0.0005 on both teapots; from 1.5 texels on it cuts the rims' real short chords).
+const float ENTRY_OWN_TEXELS = 0.5;
+float entry_cosine(vec2 s_cos, float NoL) {
+  return mix(max(NoL, 0.0), s_cos.y, smoothstep(0.0, ENTRY_OWN_TEXELS * u_light_texel_world, s_cos.x));
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
@@ -494,7 +514,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_ri
   // walk's transport the worst there is 0.74 of it, and against Cycles it raises SSIM in all ten
   // reference scenes (by up to 0.006; docs/quality.md, "Transmission from a random walk").
   float s = s_cos.x;
-  float cos_in = s_cos.y;
+  float cos_in = entry_cosine(s_cos, NoL);
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
   vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);

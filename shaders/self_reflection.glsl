@@ -10,7 +10,8 @@
 // per entering texel (half the resolution by default) and writes where it meets the object
 // (o_mirror_hit); the post pass adds F x the blurred light there (post.frag.glsl, mirror_hit_at),
 // and the lighting pass keeps the bounce's mirrored part only where the ray meets nothing on
-// screen (bounce_upsample.glsl), so no light is mirrored twice. Marched per pixel in the post
+// screen (bounce_upsample.glsl), so no light is mirrored twice -- and where the ray escaped (below)
+// only the lobe's tail. Marched per pixel in the post
 // pass instead, the ten reference scenes' mean SSIM was 0.0002 higher for 1.16x the camera frame
 // against 1.049x (docs/performance.md, "Eighteenth session").
 //

@@ -11,9 +11,9 @@
 // (o_mirror_hit); the post pass adds F x the blurred light there (post.frag.glsl, mirror_hit_at),
 // and the lighting pass keeps the bounce's mirrored part only where the ray meets nothing on
 // screen (bounce_upsample.glsl), so no light is mirrored twice -- and where the ray escaped (below)
-// only the lobe's tail. Marched per pixel in the post
-// pass instead, the ten reference scenes' mean SSIM was 0.0002 higher for 1.16x the camera frame
-// against 1.049x (docs/performance.md, "Eighteenth session").
+// only the lobe's tail. Marched per pixel in the post pass instead, the ten reference scenes' mean
+// SSIM was 0.0002 higher for 1.16x the camera frame against 1.049x (docs/performance.md,
+// "Eighteenth session").
 //
 // Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
 // JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at
@@ -138,6 +138,6 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
     t *= SELF_REFLECTION_GROWTH;
   }
   if (hit.x < 0) return SELF_REFLECTION_ESCAPED;  // every point in front of the depth buffer
-  // Where the march hit, `previous` and `t` bracket the crossing.
-  return hit.x < 0 ? hit : self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
+  // The march hit: `previous` and `t` bracket the crossing.
+  return self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
 }

@@ -99,7 +99,9 @@ const float BOUNCE_GLOSS = 4.0;
 // Rougher stones would want a wider lobe: the gather reads no material parameter, so this holds
 // the reference stone's. The emitters' own glossy light is not mirrored again (a few percent of
 // theirs), and the receiver's lobe is not shadowed or masked (Smith's term for GGX at alpha
-// 0.0225 takes under 2 % off up to 85 degrees).
+// 0.0225 takes under 2 % off up to 85 degrees). Where the view's mirror ray escapes through space
+// the camera sees empty (self_reflection.glsl, since session 26), the lighting pass keeps only
+// SELF_REFLECTION_ESCAPED_TAIL of this part: GGX's share beyond the core that the ray itself sees.
 const float BOUNCE_MIRROR_GLOSS = 16.0;  // bounce_sample raises cosines to it by four squarings
 
 // The mipmap level a sample standing for `texels` of the map's finest level is read at:

@@ -602,11 +602,13 @@ void main() {
     // out (no light mirrored twice), and so is the environment's reflection (o_mirror_hit -2: a
     // hidden surface, for the post pass).
     if (hit.x >= 0) hidden = vec4(0.0);
-    o_mirror_hit = vec4(hidden.a > 0.0 ? vec2(-2.0) : vec2(hit), 0.0, 0.0);
+    bool escaped = hit == SELF_REFLECTION_ESCAPED;
+    o_mirror_hit = vec4(hidden.a > 0.0 ? vec2(-2.0) : escaped ? vec2(-1.0) : vec2(hit), 0.0, 0.0);
     // The bounce's mirrored part only where the mirror ray meets no surface, on screen (the post
-    // pass mirrors that one) or hidden.
+    // pass mirrors that one) or hidden; where the ray escaped through the space the camera sees
+    // empty (self_reflection.glsl), only the lobe's tail, which alone reaches the lit parts.
     bool mirrorsSurface = hit.x >= 0 || hidden.a > 0.0;
-    vec3 bounce = marble_bounce(P, N, px, mirrorsSurface ? 0.0 : 1.0);
+    vec3 bounce = marble_bounce(P, N, px, mirrorsSurface ? 0.0 : escaped ? SELF_REFLECTION_ESCAPED_TAIL : 1.0);
     // The hidden face's light: its glow (hidden.rgb) and its own indirect light, taken as P's
     // diffuse bounce (hidden_mirror.glsl, "the face's indirect light"); without its mirrored part
     // wherever hidden.a > 0, so `bounce` is that diffuse part there.

@@ -10,9 +10,10 @@
 // per entering texel (half the resolution by default) and writes where it meets the object
 // (o_mirror_hit); the post pass adds F x the blurred light there (post.frag.glsl, mirror_hit_at),
 // and the lighting pass keeps the bounce's mirrored part only where the ray meets nothing on
-// screen (bounce_upsample.glsl), so no light is mirrored twice. Marched per pixel in the post
-// pass instead, the ten reference scenes' mean SSIM was 0.0002 higher for 1.16x the camera frame
-// against 1.049x (docs/performance.md, "Eighteenth session").
+// screen (bounce_upsample.glsl), so no light is mirrored twice -- and where the ray escaped (below)
+// only the lobe's tail. Marched per pixel in the post pass instead, the ten reference scenes' mean
+// SSIM was 0.0002 higher for 1.16x the camera frame against 1.049x (docs/performance.md,
+// "Eighteenth session").
 //
 // Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
 // JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at
@@ -40,11 +41,31 @@
 //   mirrored part makes the same choice); the hit's own highlight is not mirrored.
 // Measured (tests/self_reflection_gl_test.cpp): a plate mirroring a lit wall at N.V 0.2 and 0.45,
 // 0.99-1.02 of F x the wall's radiance.
+// A march whose every point lay in front of the depth buffer returns SELF_REFLECTION_ESCAPED: the
+// ray crossed 0.62 units of space the camera sees empty and meets nothing there (see below).
 // Needs from the includer: u_depth, u_view_proj, surface_point.
 
 const int SELF_REFLECTION_STEPS = 10;
 const float SELF_REFLECTION_FIRST = 0.004;  // world units: about a pixel of the 800^2 frame
 const float SELF_REFLECTION_GROWTH = 1.75;
+
+// The mirror ray escaped (session 26): all SELF_REFLECTION_STEPS points of the march lay in front of
+// the depth buffer, so along its first 0.62 units the ray runs through space the camera sees empty
+// -- head-on faces, whose ray runs back toward the camera, and faces turned out from the object.
+// Past that it meets the surround (black in the reference scenes) or, rarely, a far part. There
+// Cycles' mirror (the GGX lobe at alpha 0.0225) sees the surround in its core and lit parts only in
+// its tail: GGX's half-vector cumulative tan^2 / (alpha^2 + tan^2), the reflected angle twice the
+// half vector's, leaves alpha^2 / (alpha^2 + tan^2 5 deg) = 6 % of the lobe beyond 10 degrees of
+// the mirror ray (29 % beyond 4, 1.6 % beyond 20). The bounce's mirrored part (bounce.glsl, a
+// Phong lobe of exponent 16, about 14 degrees, so that 49 samples resolve it) stands for the
+// whole lobe; where the ray escaped it is scaled to that tail, SELF_REFLECTION_ESCAPED_TAIL
+// (lighting.frag.glsl). Measured against Cycles' glossy indirect light on dragon-side (main
+// 84747ad): where neither march hits, the mirrored part was 1.40x Cycles' there, a broad sheen
+// over the head-on coils where Cycles' mirror is dark; on faces at N.V >= 0.8, 1.50x
+// (docs/quality.md, "Twenty-sixth session"). A ray that passed behind a part (-1) may meet a
+// face hidden there, which the bounce's whole lobe stands for, as before; off screen also -1.
+const ivec2 SELF_REFLECTION_ESCAPED = ivec2(-3);
+const float SELF_REFLECTION_ESCAPED_TAIL = 0.06;
 
 // The crossing within the step from `before` (in front of the depth buffer) to `behind` (behind it,
 // at pixel q), refined by SELF_REFLECTION_REFINE bisections: the pixel of the last point found
@@ -81,8 +102,9 @@ ivec2 self_reflection_refined(ivec2 px, ivec2 size, vec4 clipP, vec4 clipR, floa
 }
 
 // The pixel whose surface P's mirror ray meets, or ivec2(-1) where it meets none the camera sees
-// (it leaves the screen, passes behind a part, or runs out of steps). px: P's pixel; depth: its
-// depth-buffer value; V: toward the camera.
+// (it leaves the screen or passes behind a part), or SELF_REFLECTION_ESCAPED where it runs out of
+// steps with every point in front of the depth buffer. px: P's pixel; depth: its depth-buffer
+// value; V: toward the camera.
 ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
   ivec2 size = textureSize(u_depth, 0);
   // One pixel's footprint at P, for the hit's tolerance.
@@ -115,6 +137,7 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
     previous = t;
     t *= SELF_REFLECTION_GROWTH;
   }
-  // Where the march hit, `previous` and `t` bracket the crossing.
-  return hit.x < 0 ? hit : self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
+  if (hit.x < 0) return SELF_REFLECTION_ESCAPED;  // every point in front of the depth buffer
+  // The march hit: `previous` and `t` bracket the crossing.
+  return self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
 }

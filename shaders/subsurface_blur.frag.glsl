@@ -37,6 +37,13 @@ uniform vec2 u_direction;          // (1,0) then (0,1)
 const int u_taps = BLUR_TAPS;
 uniform float u_offsets_mm[MAX_TAPS + 1];  // tap i's distance from the centre, mm (subsurface_profile.h)
 uniform vec3 u_weights[MAX_TAPS + 1];  // the profile's share at tap i, computed on the CPU
+// The kernel's core (subsurface_profile.h, SubsurfaceKernel): the share of the light that leaves
+// at the entry's own texel, beyond what the two passes' product of marginals puts there (the
+// walk's exits are radially symmetric, the product is not). Added by the second pass from the
+// lighting pass's own texel (u_entering_own, GL_NEAREST); 0 in the first pass. The taps' weights
+// are the residual marginal's, so the marginal along either axis is still the walk's.
+uniform vec3 u_core;
+layout(binding = UNIT_SCREEN_INPUT_OWN) uniform sampler2D u_entering_own;
 
 // MAX_TAPS: render/shader_constants.h
 
@@ -78,5 +85,9 @@ void main() {
     sum += w * e.rgb;
     weight += w;
   }
-  o_color = depth > 0.0 ? vec4(sum / max(weight, vec3(1e-8)), depth) : vec4(0.0);
+  vec3 blurred = sum / max(weight, vec3(1e-8));
+  // The core only where the first pass left this texel's light (depth > 0: the same texel of the
+  // lighting pass is stone).
+  if (u_core != vec3(0.0)) blurred = mix(blurred, nearest_texel(u_entering_own, h).rgb, u_core);
+  o_color = depth > 0.0 ? vec4(blurred, depth) : vec4(0.0);
 }

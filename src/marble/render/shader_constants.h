@@ -23,6 +23,7 @@
   X(UNIT_SURFACE_DEPTH, 1)    /* subsurface_common.glsl, post.frag.glsl, stage.frag.glsl: G-buffer's */ \
   X(UNIT_SCREEN_INPUT, 0)     /* the one input of blur_depth, fxaa, subsurface_blur */                  \
   X(UNIT_SCREEN_INPUT_TEXELS, 2) /* subsurface_blur: the same input through a GL_NEAREST sampler */     \
+  X(UNIT_SCREEN_INPUT_OWN, 3) /* subsurface_blur: the lighting pass's texels, for the kernel's core */   \
   /* albedo.frag.glsl */                                                                                \
   X(UNIT_ALBEDO_DEPTH, 0)                                                                               \
   X(UNIT_ALBEDO_NORMAL, 1)                                                                              \

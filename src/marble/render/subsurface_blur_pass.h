@@ -48,6 +48,7 @@ private:
   SubsurfaceKernel kernel_;
   WalkShape kernelWalk_;
   float kernelReachMm_ = 0.0f;
+  float kernelCoreHalfWidthMm_ = 0.0f;
   bool kernelValid_ = false;
 };
 

@@ -30,6 +30,22 @@ constexpr float kAxisCdf[kRows][kTs] = {
     {0.00000f, 0.23975f, 0.36884f, 0.46158f, 0.53376f, 0.63826f, 0.71141f, 0.80500f, 0.86086f, 0.89754f, 0.92231f, 0.95347f, 0.97085f, 0.98150f, 0.99223f, 0.99685f, 0.99875f, 0.99981f, 0.99998f, 1.00000f},  // u 6
 };
 
+// The walk's share inside the centred square |x|, |y| <= kSquareH[j] mean free paths, per albedo row
+// kSquareRowU (the same walk, its own run outside the project: /work/s26-direct-scratch/tools/
+// coretab2.py, 400,000 walks per row, seed 7; its marginal agrees with kAxisCdf within 0.002).
+constexpr float kSquareRowU[] = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 6.0f};
+constexpr int kSquareRows = static_cast<int>(sizeof(kSquareRowU) / sizeof(kSquareRowU[0]));
+constexpr float kSquareH[] = {0.25f, 0.5f, 0.75f, 1.0f, 1.5f, 2.0f, 3.0f, 4.0f, 6.0f, 8.0f, 12.0f};
+constexpr int kSquareHs = static_cast<int>(sizeof(kSquareH) / sizeof(kSquareH[0]));
+constexpr float kSquareShare[kSquareRows][kSquareHs] = {
+    {0.2932f, 0.4841f, 0.6172f, 0.7125f, 0.8346f, 0.9026f, 0.9659f, 0.9874f, 0.9983f, 0.9998f, 1.0000f},
+    {0.2147f, 0.3708f, 0.4913f, 0.5859f, 0.7225f, 0.8117f, 0.9109f, 0.9569f, 0.9893f, 0.9972f, 0.9998f},
+    {0.1489f, 0.2644f, 0.3590f, 0.4388f, 0.5625f, 0.6556f, 0.7772f, 0.8505f, 0.9269f, 0.9618f, 0.9881f},
+    {0.1324f, 0.2370f, 0.3232f, 0.3958f, 0.5123f, 0.5992f, 0.7189f, 0.7951f, 0.8823f, 0.9277f, 0.9704f},
+    {0.1300f, 0.2328f, 0.3186f, 0.3904f, 0.5060f, 0.5917f, 0.7112f, 0.7875f, 0.8754f, 0.9223f, 0.9677f},
+    {0.1295f, 0.2321f, 0.3172f, 0.3890f, 0.5042f, 0.5903f, 0.7096f, 0.7857f, 0.8742f, 0.9213f, 0.9670f},
+};
+
 // The row pair and weight for albedo alpha.
 void rowOf(float alpha, int& row, float& frac) {
   const float u = -std::log10(std::max(1.0f - alpha, 1e-7f));
@@ -63,6 +79,32 @@ float walkAxisShare(float alpha, float t) {
   return (1.0f - frac) * rowShare(row, t) + frac * rowShare(row + 1, t);
 }
 
+float walkSquareShare(float alpha, float h) {
+  if (h <= 0.0f) return 0.0f;
+  const float u = -std::log10(std::max(1.0f - alpha, 1e-7f));
+  int row = kSquareRows - 2;
+  float frac = 1.0f;
+  if (u <= kSquareRowU[0]) {
+    row = 0, frac = 0.0f;
+  } else {
+    for (int i = 1; i < kSquareRows; ++i) {
+      if (u <= kSquareRowU[i]) {
+        row = i - 1, frac = (u - kSquareRowU[i - 1]) / (kSquareRowU[i] - kSquareRowU[i - 1]);
+        break;
+      }
+    }
+  }
+  auto at = [&](int r) {
+    if (h <= kSquareH[0]) return kSquareShare[r][0] * h / kSquareH[0];
+    if (h >= kSquareH[kSquareHs - 1]) return kSquareShare[r][kSquareHs - 1];
+    int j = 1;
+    while (kSquareH[j] < h) ++j;
+    const float f = (h - kSquareH[j - 1]) / (kSquareH[j] - kSquareH[j - 1]);
+    return kSquareShare[r][j - 1] + f * (kSquareShare[r][j] - kSquareShare[r][j - 1]);
+  };
+  return (1.0f - frac) * at(row) + frac * at(row + 1);
+}
+
 WalkShape walkShape(const Material& m) {
   const glm::vec3 sigmaT = glm::max(m.sigma_a_mm + m.sigma_s_mm, glm::vec3(1e-4f));
   return {1.0f / sigmaT, m.sigma_s_mm / sigmaT};
@@ -83,7 +125,7 @@ float subsurfaceReachMm(const Material& m) {
   return reach;
 }
 
-SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps) {
+SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps, float coreHalfWidthMm) {
   SubsurfaceKernel k;
   k.taps = std::clamp(taps, 1, static_cast<int>(shader::MAX_TAPS));
   for (int i = 0; i <= k.taps; ++i) {
@@ -101,6 +143,24 @@ SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps
       const float band = walkAxisShare(walk.albedo[c], b / l) - walkAxisShare(walk.albedo[c], a / l);
       k.weights[i][c] = (i == 0 ? 1.0f : 0.5f) * band;
     }
+  }
+  // The core (SubsurfaceKernel) at the texel's square, half-width h = coreHalfWidthMm: the walk's
+  // shares there, M along the axis (|x| <= h) and Q in the square. The taps within h all read about
+  // the centre texel (bilinearly, the first at a texel or less at the scenes' scales), so the core
+  // is taken from the centre tap's weight, kept within [0, its share] so no weight goes negative
+  // (few taps or h past the table: none).
+  const float h = coreHalfWidthMm;
+  for (int c = 0; c < 3; ++c) {
+    float total = k.weights[0][c];
+    for (int i = 1; i <= k.taps; ++i) total += 2.0f * k.weights[i][c];
+    if (total <= 0.0f || h <= 0.0f) continue;
+    const float l = std::max(walk.meanFreePathMm[c], 1e-6f);
+    const float M = walkAxisShare(walk.albedo[c], h / l);
+    const float Q = walkSquareShare(walk.albedo[c], h / l);
+    const float core = std::clamp((Q - M * M) / std::max(1.0f - 2.0f * M + Q, 1e-6f), 0.0f, k.weights[0][c] / total);
+    k.core[c] = core;
+    k.weights[0][c] -= core * total;
+    for (int i = 0; i <= k.taps; ++i) k.weights[i][c] /= 1.0f - core;
   }
   return k;
 }

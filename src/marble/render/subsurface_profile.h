@@ -45,11 +45,34 @@ float subsurfaceReachMm(const Material& m);
 // light along its axis as the walk does, out to the reach; the light beyond is left out (the
 // blur normalizes by the weights it sums). Offsets are spaced quadratically in i (dense where the
 // profile is steep): x_i = reach (i / taps)^2.
+//
+// The core: the walk's exits are radially symmetric, and a product of its marginals (what two 1D
+// passes give) puts less of the light near the entry than the walk does: inside a blur texel's
+// square (half-width h; the dragon's scenes: 0.335 mm) the walk leaves Q of its light
+// (walkSquareShare), the product of two marginal shares M only M^2 (the stone: 0.21, 0.28,
+// 0.33 against 0.11, 0.18, 0.23; a deficit of about 0.1 of the light at every h from 0.3 to 2 mm).
+// So the kernel is split, K = core delta + (1 - core) m_r x m_r: `core` of the light leaves at
+// the entry's own texel (the second pass adds it from the lighting pass's texel), the rest goes
+// through both passes with the residual marginal m_r = (m - core delta) / (1 - core) (`weights`:
+// the centre tap's weight less core, all over 1 - core). The marginal along either axis is still
+// the walk's m (straight edges and the shade past them keep their profile), and core is chosen so
+// that the texel square's share, core + (1 - core) M_r^2, is the walk's Q: core = (Q - M^2) /
+// (1 - 2 M + Q) (the stone at 0.335 mm: 0.18, 0.24, 0.28). Approximation: the deficit is
+// matched at the texel's scale only; at 2-6 texels the residual product still holds 0.07-0.1 less
+// than the walk's square (docs/quality.md, "Twenty-sixth session: the separable blur's core").
 struct SubsurfaceKernel {
   int taps = 1;
   std::array<float, shader::MAX_TAPS + 1> offsetsMm{};
   std::array<glm::vec3, shader::MAX_TAPS + 1> weights{};
+  glm::vec3 core{0.0f};
 };
-SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps);
+
+// The walk's share of its exits inside the centred square |x|, |y| <= h mean free paths, for
+// single-scattering albedo `alpha` (tools/walk_profile.cpp's walk, 400,000 walks per row;
+// interpolated as walkAxisShare; h from 0.25 to 3 mean free paths, linear to 0 below, held above).
+float walkSquareShare(float alpha, float h);
+// coreHalfWidthMm: half a blur texel at the object's distance (the square the core is matched in);
+// 0: no core, the product of marginals alone.
+SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps, float coreHalfWidthMm);
 
 }  // namespace marble

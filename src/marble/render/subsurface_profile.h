@@ -45,10 +45,18 @@ float subsurfaceReachMm(const Material& m);
 // light along its axis as the walk does, out to the reach; the light beyond is left out (the
 // blur normalizes by the weights it sums). Offsets are spaced quadratically in i (dense where the
 // profile is steep): x_i = reach (i / taps)^2.
+// decayPerMm[i] (i >= 1): how fast the profile falls past tap i, per channel: the log slope of
+// its density between tap i and tap i + 1 (the last tap: between the last two), each tap's density
+// its band's share over the band's width; >= 0. The blur weighs a tap whose 3D distance d from the
+// centre exceeds its offset x (a tap on another surface at another depth, across a silhouette or a
+// step) by exp(-decay (d - x)): the profile read at d instead of x, extrapolated along its local
+// log slope (shaders/subsurface_blur.frag.glsl; docs/quality.md, "Twenty-sixth session: the
+// blur's taps at their 3D distance"). decayPerMm[0] is 0 (the centre tap is the centre).
 struct SubsurfaceKernel {
   int taps = 1;
   std::array<float, shader::MAX_TAPS + 1> offsetsMm{};
   std::array<glm::vec3, shader::MAX_TAPS + 1> weights{};
+  std::array<glm::vec3, shader::MAX_TAPS + 1> decayPerMm{};
 };
 SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps);
 

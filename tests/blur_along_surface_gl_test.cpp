@@ -117,9 +117,9 @@ TEST(BlurAlongSurface, TheShadePastTheEdgeTakesTheWalksRedTail) {
 // end) that arrives 2 mm past the foot, in every channel at most half of what arrives 2 mm into
 // the shadow of a flat edge (TheShadePastTheEdgeTakesTheWalksRedTail's plate, whose lit side is as
 // near on screen and on the same surface). What does arrive is also the light through the 10 mm
-// wall (the transmission) and the bounce, not the blur's alone. Measured: 0.026 / 0.011 / 0.005
-// (r / g / b) against the flat edge's 0.132 / 0.102 / 0.086 (0.20 / 0.11 / 0.06 of it); with the
-// blur's taps weighed at their screen offset (the negative control: the shader's exponential
+// wall (the transmission) and the bounce, not the blur's alone. Measured: 0.028 / 0.012 / 0.006
+// (r / g / b) against the flat edge's 0.132 / 0.102 / 0.086 (0.21 / 0.12 / 0.07 of it); with the
+// blur's taps weighed at their screen offset (the negative control: the shader's fall-off
 // turned off, the tests rebuilt) 0.088 / 0.054 / 0.035 (0.67 / 0.53 / 0.41): fails in red and green.
 TEST(BlurAlongSurface, LightDoesNotSpreadDownAStepAsIfItWereFlat) {
   HeadlessContext& context = glContext();

@@ -355,10 +355,10 @@ TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   const auto at_blur = blur.find(along);
   ASSERT_NE(at_blur, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
   blur.replace(at_blur, along.size(), "float stretch = 1.0;");
-  const std::string in3d = "w *= exp(-u_decay_per_mm[abs(i)]";
+  const std::string in3d = "w /= 1.0 + f * ";
   const auto at_3d = blur.find(in3d);
   ASSERT_NE(at_3d, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
-  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_3d, in3d.size(), "w *= 1.0 + 0.0 * exp(-u_decay_per_mm[abs(i)]");
+  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_3d, in3d.size(), "w /= 1.0 + 0.0 * f * ");
   Renderer renderer{ShaderLibrary(dir.string())};
   const Case& c = *std::find_if(std::begin(kCases), std::end(kCases),
                                 [](const Case& k) { return std::string(k.name) == "sphere_point"; });

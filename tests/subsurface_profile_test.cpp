@@ -125,5 +125,31 @@ TEST(SubsurfaceProfile, WalkAxisShareFollowsTheTable) {
   EXPECT_EQ(walkAxisShare(alpha, 0.0f), 0.0f);
 }
 
+// The blur reads a tap that lies farther in 3D than its offset (another surface, at another depth)
+// by the profile's own fall past that tap (SubsurfaceKernel::decayPerMm): between taps i and i + 1
+// the density (each tap's band share over the band's width, one side) falls by exactly
+// exp(-decay_i (x_{i+1} - x_i)); the last tap keeps the slope before it; the centre has none; and
+// red, whose walk reaches farthest, falls slowest everywhere (the stone).
+TEST(SubsurfaceProfile, DecayPastEachTapIsTheProfilesOwnLogSlope) {
+  const Material m = test::principledStone();
+  const SubsurfaceKernel k = subsurfaceKernel(walkShape(m), subsurfaceReachMm(m), 9, kDragonTexelHalfWidthMm);
+  auto density = [&](int i) {
+    const float a = i == 0 ? 0.0f : 0.5f * (k.offsetsMm[i - 1] + k.offsetsMm[i]);
+    const float b = i == k.taps ? k.offsetsMm[i] : 0.5f * (k.offsetsMm[i] + k.offsetsMm[i + 1]);
+    return (i == 0 ? 0.5f : 1.0f) * k.weights[i] / (b - a);
+  };
+  EXPECT_EQ(k.decayPerMm[0], glm::vec3(0.0f));
+  for (int i = 1; i < k.taps; ++i) {
+    const float dx = k.offsetsMm[i + 1] - k.offsetsMm[i];
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GT(k.decayPerMm[i][c], 0.0f) << "tap " << i << " channel " << c;
+      EXPECT_NEAR(density(i)[c] * std::exp(-k.decayPerMm[i][c] * dx) / density(i + 1)[c], 1.0f, 1e-3f)
+          << "tap " << i << " channel " << c;
+    }
+    EXPECT_LT(k.decayPerMm[i].r, k.decayPerMm[i].b) << "tap " << i;
+  }
+  EXPECT_EQ(k.decayPerMm[k.taps], k.decayPerMm[k.taps - 1]);
+}
+
 }  // namespace
 }  // namespace marble

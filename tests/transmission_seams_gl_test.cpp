@@ -332,7 +332,7 @@ TEST(TransmissionSeamsControl, WithTheLightMapReadNearestThereAreSeams) {
 // The half-resolution silhouette's staircase (docs/quality.md, "Tenth session: the rims kept, the
 // half-resolution silhouette"): with a blur texel standing for its first pixel alone, the stone
 // texels' top row jumps by a texel from column to column near the sphere's top, and the vertical
-// blur's renormalization leaves a step there under the point light (1.28x the threshold).
+// blur's renormalization leaves a step there under the point light (1.28x the threshold; 1.33x since session 26).
 TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   glContext();
   const auto dir = brokenShaders("blur_texel.glsl", "if (nearest_texel(depth, p).r < 1.0) return p;", "");
@@ -347,12 +347,18 @@ TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   std::ofstream(dir / "lighting.frag.glsl") << lighting.replace(at, from.size(), "float blend = 0.0;");
   // And the blur's taps at their screen distance, as when this control was written: drawn in to
   // their distance along the surface (session 16) they reach less far across the grazing rim, and
-  // the staircase's step stays under the threshold (0.52 of it) though the staircase is there.
-  const std::string along = "texels_per_mm /= sqrt(1.0 + slope * slope);";
+  // the staircase's step stays under the threshold (0.52 of it) though the staircase is there. So
+  // too their weights at the screen offset, not at their 3D distance (session 26), which also
+  // weighs the taps across the grazing rim less.
   std::string blur = embeddedShaders().at("subsurface_blur.frag.glsl");
+  const std::string along = "float stretch = sqrt(1.0 + slope * slope);";
   const auto at_blur = blur.find(along);
   ASSERT_NE(at_blur, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
-  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_blur, along.size(), "");
+  blur.replace(at_blur, along.size(), "float stretch = 1.0;");
+  const std::string in3d = "w /= 1.0 + f * ";
+  const auto at_3d = blur.find(in3d);
+  ASSERT_NE(at_3d, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
+  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_3d, in3d.size(), "w /= 1.0 + 0.0 * f * ");
   Renderer renderer{ShaderLibrary(dir.string())};
   const Case& c = *std::find_if(std::begin(kCases), std::end(kCases),
                                 [](const Case& k) { return std::string(k.name) == "sphere_point"; });

@@ -124,6 +124,7 @@ void SubsurfaceBlurPass::run(const SubsurfaceBlurInputs& in, const CameraMatrice
   const gl::Program& p = program(kernel_.taps);
   glProgramUniform3fv(p.id(), p.location("u_weights"), kernel_.taps + 1, &kernel_.weights[0].x);
   glProgramUniform1fv(p.id(), p.location("u_offsets_mm"), kernel_.taps + 1, kernel_.offsetsMm.data());
+  glProgramUniform3fv(p.id(), p.location("u_decay_per_mm"), kernel_.taps + 1, &kernel_.decayPerMm[0].x);
   setSubsurfaceUniforms(p, camera, scene, height);
   glUseProgram(p.id());
   glBindVertexArray(emptyVao_.id());

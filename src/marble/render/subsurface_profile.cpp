@@ -144,6 +144,22 @@ SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps
       k.weights[i][c] = (i == 0 ? 1.0f : 0.5f) * band;
     }
   }
+  // The profile's density at each tap, one side of the axis: its band's share over the band's
+  // width (tap 0's band spans both sides, so half of it over half its width).
+  std::array<glm::vec3, shader::MAX_TAPS + 1> density{};
+  for (int i = 0; i <= k.taps; ++i) {
+    const float a = i == 0 ? 0.0f : 0.5f * (k.offsetsMm[i - 1] + k.offsetsMm[i]);
+    const float b = i == k.taps ? k.offsetsMm[i] : 0.5f * (k.offsetsMm[i] + k.offsetsMm[i + 1]);
+    density[i] = (i == 0 ? 0.5f : 1.0f) * k.weights[i] / std::max(b - a, 1e-6f);
+  }
+  for (int i = 1; i <= k.taps; ++i) {
+    const int lo = i < k.taps ? i : i - 1;  // the last tap takes the slope before it
+    const float dx = std::max(k.offsetsMm[lo + 1] - k.offsetsMm[lo], 1e-6f);
+    for (int c = 0; c < 3; ++c) {
+      const float d0 = std::max(density[lo][c], 1e-30f), d1 = std::max(density[lo + 1][c], 1e-30f);
+      k.decayPerMm[i][c] = std::max(std::log(d0 / d1) / dx, 0.0f);
+    }
+  }
   // The core (SubsurfaceKernel) at the texel's square, half-width h = coreHalfWidthMm: the walk's
   // shares there, M along the axis (|x| <= h) and Q in the square. The taps within h all read about
   // the centre texel (bilinearly, the first at a texel or less at the scenes' scales), so the core

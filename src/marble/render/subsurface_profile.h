@@ -60,11 +60,20 @@ float subsurfaceReachMm(const Material& m);
 // (1 - 2 M + Q) (the issue's stone at 0.335 mm: 0.18, 0.24, 0.28). Approximation: the deficit is
 // matched at the texel's scale only; at 2-6 texels the residual product still holds 0.07-0.1 less
 // than the walk's square (docs/quality.md, "Twenty-sixth session: the separable blur's core").
+//
+// decayPerMm[i] (i >= 1): how fast the profile falls past tap i, per channel: the log slope of
+// its density between tap i and tap i + 1 (the last tap: between the last two), each tap's density
+// its band's share over the band's width; >= 0. The blur weighs a tap whose 3D distance d from the
+// centre exceeds its offset x (a tap on another surface at another depth, across a silhouette or a
+// step) by exp(-decay (d - x)): the profile read at d instead of x, extrapolated along its local
+// log slope (shaders/subsurface_blur.frag.glsl; docs/quality.md, "Twenty-sixth session: the
+// blur's taps at their 3D distance"). decayPerMm[0] is 0 (the centre tap is the centre).
 struct SubsurfaceKernel {
   int taps = 1;
   std::array<float, shader::MAX_TAPS + 1> offsetsMm{};
   std::array<glm::vec3, shader::MAX_TAPS + 1> weights{};
   glm::vec3 core{0.0f};
+  std::array<glm::vec3, shader::MAX_TAPS + 1> decayPerMm{};
 };
 
 // The walk's share of its exits inside the centred square |x|, |y| <= h mean free paths, for

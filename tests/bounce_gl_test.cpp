@@ -592,6 +592,25 @@ glm::vec3 besideTheBlock(const ImageRGBF& img, const Scene& s) {
   return sum / 27.0f;
 }
 
+// The light the plate sends the probe with a block added by `withBlocker` and without it, each
+// less the same scene without the plate, seen from over the block; printed as `what`.
+struct PlateLight {
+  glm::vec3 unobstructed, throughTheBlock;
+};
+PlateLight plateLightPastABlock(Mesh (*withBlocker)(Mesh), const char* what) {
+  constexpr float kAlbedo = 0.8f;
+  Scene s = cornerScene(kAlbedo, kOccludedH);
+  s.camera.position = probe(kOccludedH) + glm::vec3(3.9f, 1.0f, 0.0f);
+  s.camera.target = probe(kOccludedH);
+  const HdrPair open = renderHdrPair(s, corner(true), wallAlone());
+  const HdrPair blocked = renderHdrPair(s, withBlocker(corner(true)), withBlocker(wallAlone()));
+  const PlateLight l{besideTheBlock(open.first, s) - besideTheBlock(open.second, s),
+                     besideTheBlock(blocked.first, s) - besideTheBlock(blocked.second, s)};
+  std::cout << "[          ] the plate's light unobstructed " << l.unobstructed.g << ", with " << what << " in the way "
+            << l.throughTheBlock.g << " (" << l.throughTheBlock.g / l.unobstructed.g << ")\n";
+  return l;
+}
+
 }  // namespace
 
 TEST_F(Bounce, NoneThroughAThinBlockBesideTheFace) {
@@ -605,17 +624,8 @@ TEST_F(Bounce, NoneThroughAThinBlockBesideTheFace) {
   // (0.26 since session 26 also tests a quarter and three eighths of the way, which meet the block
   // on a few more ways); without the test (the reflective shadow map's own, no visibility) 0.70,
   // which fails.
-  constexpr float kAlbedo = 0.8f;
-  Scene s = cornerScene(kAlbedo, kOccludedH);
-  s.camera.position = probe(kOccludedH) + glm::vec3(3.9f, 1.0f, 0.0f);
-  s.camera.target = probe(kOccludedH);
-  const HdrPair open = renderHdrPair(s, corner(true), wallAlone());
-  const HdrPair blocked = renderHdrPair(s, withBlock(corner(true)), withBlock(wallAlone()));
-  const glm::vec3 unobstructed = besideTheBlock(open.first, s) - besideTheBlock(open.second, s);
-  const glm::vec3 throughTheBlock = besideTheBlock(blocked.first, s) - besideTheBlock(blocked.second, s);
-  std::cout << "[          ] the plate's light unobstructed " << unobstructed.g << ", with the block in the way "
-            << throughTheBlock.g << " (" << throughTheBlock.g / unobstructed.g << ")\n";
-  for (int c = 0; c < 3; ++c) EXPECT_LT(throughTheBlock[c], 0.5f * unobstructed[c]) << "channel " << c;
+  const PlateLight l = plateLightPastABlock(withBlock, "the block");
+  for (int c = 0; c < 3; ++c) EXPECT_LT(l.throughTheBlock[c], 0.5f * l.unobstructed[c]) << "channel " << c;
 }
 
 namespace {
@@ -640,17 +650,8 @@ TEST_F(Bounce, LessThroughABlockAQuarterOfTheWayOut) {
   // (bounce_screen_occlusion.glsl), and the two farther points lie inside the block for the ways to
   // x = 0.50-0.66 and 0.70-0.94. Measured 0.70 of the unobstructed light; with the eighth alone
   // (BOUNCE_OCCLUSION_POINTS 1, before session 26) 0.996, which fails.
-  constexpr float kAlbedo = 0.8f;
-  Scene s = cornerScene(kAlbedo, kOccludedH);
-  s.camera.position = probe(kOccludedH) + glm::vec3(3.9f, 1.0f, 0.0f);
-  s.camera.target = probe(kOccludedH);
-  const HdrPair open = renderHdrPair(s, corner(true), wallAlone());
-  const HdrPair blocked = renderHdrPair(s, withFarBlock(corner(true)), withFarBlock(wallAlone()));
-  const glm::vec3 unobstructed = besideTheBlock(open.first, s) - besideTheBlock(open.second, s);
-  const glm::vec3 throughTheBlock = besideTheBlock(blocked.first, s) - besideTheBlock(blocked.second, s);
-  std::cout << "[          ] the plate's light unobstructed " << unobstructed.g << ", with the far block in the way "
-            << throughTheBlock.g << " (" << throughTheBlock.g / unobstructed.g << ")\n";
-  for (int c = 0; c < 3; ++c) EXPECT_LT(throughTheBlock[c], 0.8f * unobstructed[c]) << "channel " << c;
+  const PlateLight l = plateLightPastABlock(withFarBlock, "the far block");
+  for (int c = 0; c < 3; ++c) EXPECT_LT(l.throughTheBlock[c], 0.8f * l.unobstructed[c]) << "channel " << c;
 }
 
 namespace {

@@ -163,3 +163,41 @@ TEST(BlurAlongSurface, LightDoesNotSpreadDownAStepAsIfItWereFlat) {
   EXPECT_GT(top.r, 4.0f * dark.r);  // the top is lit, the plate beside it shadowed
   for (int c = 0; c < 3; ++c) EXPECT_LT(share[c], 0.5f * flat2[c]) << "channel " << c;
 }
+
+// A tap the blur leaves out (off the stone, or across a silhouette) gives its weight to the
+// centre's own light, not to the other taps (shaders/subsurface_blur.frag.glsl; docs/quality.md,
+// "Twenty-sixth session: the blur's left-out taps"). The plate of the tests above with its wall
+// moved so that the shadow ends 3 mm before the plate's own +x edge: a lit strip 3 mm wide along
+// the edge, background past it. Midway across the strip (1.5 mm from the edge and from the
+// shadow) the light must be at least what it is on the unbounded plate 1.5 mm past its shadow's
+// edge: light entering the strip cannot leave past the edge, where there is no stone (in the
+// walk it turns back into the strip). Renormalised over the taps left on the plate, the kernel
+// turned one-sided at the edge and took its missing half from the shadow's side. Measured
+// (r / g / b): 0.3402 / 0.3467 / 0.3339 against the open plate's 0.3391 / 0.3443 / 0.3310;
+// with the taps left out and renormalised (the negative control: main's blur, the tests
+// rebuilt, by hand) 0.3244 / 0.3379 / 0.3287: fails in every channel.
+TEST(BlurAlongSurface, AnEdgeKeepsTheLightThatEntersBesideIt) {
+  HeadlessContext& context = glContext();
+  (void)context;
+  const Scene f = plateScene(0.0f, 10.0f);
+  const float fu = 1.0f / f.mm_per_unit;
+  const float shadowEnd = 1.0f - 3.0f * fu;
+  const PlateAndWall strip{shadowEnd - kWall / std::tan(glm::radians(kElevationDeg)), kWall, kElevationDeg};
+  Scene s = grazingLightSeenFromAbove("test:strip", 1.0f, kElevationDeg, 10.0f);
+  s.mm_per_unit = f.mm_per_unit;
+  s.render.width = s.render.height = 256;
+  s.material.roughness = 1.0f;  // no highlight in the way
+  Renderer r;
+  r.setMesh(strip.mesh());
+  renderImage(r, s);
+  const glm::vec3 edge = linearRgbAround(r.readHdr(), s, {1.0f - 1.5f * fu, 0.0f, 0.0f});
+
+  Renderer rf;
+  rf.setMesh(kPlate.mesh());
+  renderImage(rf, f);
+  const ImageRGBF flat = rf.readHdr();
+  const glm::vec3 open = linearRgbAround(flat, f, {kPlate.shadowEnd() + 1.5f * fu, 0.0f, 0.0f});
+  std::cout << "[          ] midway across a 3 mm lit strip at the plate's edge: " << edge.r << " " << edge.g << " " << edge.b
+            << "; the open plate 1.5 mm past its shadow's edge: " << open.r << " " << open.g << " " << open.b << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_GE(edge[c], open[c]) << "channel " << c;
+}

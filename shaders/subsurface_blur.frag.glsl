@@ -97,7 +97,8 @@ void blur_tap(ivec2 h, int k, float side, vec2 input_size, float texels_per_mm, 
   // 48.9 M before this weight; docs/performance.md, "Twenty-sixth session"). Taken at every
   // tap: a branch around it where it would move the weight by under 1 % cost more on llvmpipe.
   vec3 f = u_decay_per_mm[k] * max(sqrt(xs * xs + dz * dz) - u_offsets_mm[k], 0.0);
-  vec3 w = w0 / (1.0 + f * (1.0 + f * (0.5 + f * (1.0 / 6.0))));
+  vec3 w = w0;
+  w /= 1.0 + f * (1.0 + f * (0.5 + f * (1.0 / 6.0)));
   // The surface this tap stands for. The weights sample the exitance integral of the light entering
   // over the surface, each tap standing for the stretch of the surface its screen interval covers;
   // the centre's own stretch is the same for every tap and cancels in the normalisation (above),

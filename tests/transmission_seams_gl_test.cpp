@@ -342,6 +342,7 @@ TEST(TransmissionSeamsControl, WithTheLightMapReadNearestThereAreSeams) {
 // half-resolution silhouette"): with a blur texel standing for its first pixel alone, the stone
 // texels' top row jumps by a texel from column to column near the sphere's top, and the vertical
 // blur's renormalization leaves a step there under the point light (1.28x the threshold; 1.33x since session 26).
+// With session 27's blur, the surface measure also turned off here: 2 seams, worst 1.27x.
 TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   glContext();
   const auto dir = brokenShaders("blur_texel.glsl", {{"if (nearest_texel(depth, p).r < 1.0) return p;", ""}});
@@ -367,7 +368,13 @@ TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   const std::string in3d = "w /= 1.0 + f * ";
   const auto at_3d = blur.find(in3d);
   ASSERT_NE(at_3d, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
-  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_3d, in3d.size(), "w /= 1.0 + 0.0 * f * ");
+  blur.replace(at_3d, in3d.size(), "w /= 1.0 + 0.0 * f * ");
+  // And every tap weighed by the centre's surface (session 27's measure of the surface a tap
+  // covers weighs the grazing rim's taps more, which softens the step to 0.94 of the threshold).
+  const std::string measure = "if (prev > 0.0) {";
+  const auto at_measure = blur.find(measure);
+  ASSERT_NE(at_measure, std::string::npos) << "subsurface_blur.frag.glsl no longer has the line this control breaks";
+  std::ofstream(dir / "subsurface_blur.frag.glsl") << blur.replace(at_measure, measure.size(), "if (false) {");
   Renderer renderer{ShaderLibrary(dir.string())};
   const Case& c = *std::find_if(std::begin(kCases), std::end(kCases),
                                 [](const Case& k) { return std::string(k.name) == "sphere_point"; });

@@ -112,9 +112,9 @@ void blur_tap(ivec2 h, int k, float side, vec2 input_size, float texels_per_mm, 
   // surface, so a fades to 1 as the red 3D excess f (above) reaches 1 (the weight fallen to 0.38).
   // The light of the weight the tap carries beyond its nominal share, w (a - 1), is renormalised
   // with the rest, so that uniform light stays uniform. buddha-side's direct light on the base's
-  // side wall just below its lit top went 0.50 -> 0.58 of Cycles'; the ten reference scenes' mean
-  // SSIM 0.9531 -> 0.9533, buddha-side +0.0011, dragon-side +0.0012, the back-lit statues -0.0005
-  // and -0.0006, whose dark body (1.3-1.6x Cycles') takes more of their foreshortened rims
+  // side wall just below its lit top went 0.50 -> 0.54 of Cycles'; the ten reference scenes' mean
+  // SSIM 0.9531 -> 0.9533, buddha-side and dragon-side +0.0012, the back-lit statues -0.0005 and
+  // -0.0006, whose dark body (1.3-1.6x Cycles') takes more of their foreshortened rims
   // (docs/quality.md, "Twenty-seventh session: ... the blur's taps weighed by the surface they cover").
   float a = 1.0;
   if (prev > 0.0) {

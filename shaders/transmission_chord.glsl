@@ -64,7 +64,9 @@ vec2 transmission_chord(vec3 p) {
   if (kept <= 0.0) return vec2(max(d - dot(w, entered) / weight, 0.0), dot(w, cosines) / weight);
   vec4 s_kept = mix(vec4(3.0e38), s, greaterThan(keep, vec4(0.0)));
   float s_min = min(min(s_kept.x, s_kept.y), min(s_kept.z, s_kept.w));
-  vec4 through = keep * exp(-u_chord_decay * max(s - vec4(s_min), vec4(0.0)));
+  // exp and log in base 2 (what llvmpipe computes them by): the decay in octaves per unit.
+  float octaves = u_chord_decay * 1.442695;
+  vec4 through = keep * exp2(-octaves * max(s - vec4(s_min), vec4(0.0)));
   float total = through.x + through.y + through.z + through.w;
-  return vec2(s_min - log(total / kept) / u_chord_decay, dot(through, cosines) / total);
+  return vec2(s_min - log2(total / kept) / octaves, dot(through, cosines) / total);
 }

@@ -74,6 +74,7 @@ float thickness_at(vec3 p) {
 #include "bounce_upsample.glsl"
 #include "bounce_entry.glsl"
 #include "self_reflection.glsl"
+#include "transmission_chord.glsl"  // the four texels of the light's map; the transmission's chord
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -82,17 +83,8 @@ float thickness_at(vec3 p) {
 // silhouette: no light enters there; fractional across the silhouette, so a tap's weight fades
 // over a texel instead of switching).
 vec3 light_entry_at(vec3 p) {
-  vec4 clip = u_light_view_proj * vec4(p, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return vec3(0.0);
-  vec2 size = vec2(textureSize(u_light_distance, 0));
-  vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;
-  vec2 base = floor(t);
-  vec2 f = t - base;
-  vec4 entered = textureGather(u_light_distance, (base + 1.0) / size, 0);
-  vec4 cosines = textureGather(u_light_distance, (base + 1.0) / size, 1);
-  vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-  w *= vec4(lessThan(entered, vec4(u_light_near_far.y + 1.0)));
+  vec4 entered, cosines;
+  vec4 w = light_texels_at(p, entered, cosines);
   float weight = w.x + w.y + w.z + w.w;
   if (weight <= 0.0) return vec3(0.0);
   return vec3(dot(w, entered) / weight, dot(w, cosines) / weight, weight);
@@ -106,13 +98,12 @@ vec3 light_entry_at(vec3 p) {
 // jagged edges where the glow fades (seen on the built-in torus at 100 mm per unit). Texels that
 // saw nothing are left out (blending in their "nothing hit" distance would invent huge entry
 // distances: the reason the map itself is sampled nearest); where none of the four saw the
-// object, nothing is in the way and s = 0, as in thickness_at().
+// object, nothing is in the way and s = 0, as in thickness_at(). Across an edge of the light's
+// map the four texels' chords are averaged by the light each lets through, not their entries.
 // Also returns, in .y, the cosine at which the light entered there (interpolated with the same
-// weights; light_depth.frag.glsl stores it beside the distance). light_entry_at: the reads.
+// weights; light_depth.frag.glsl stores it beside the distance). transmission_chord.glsl: the reads.
 vec2 transmission_thickness(vec3 p) {
-  vec3 e = light_entry_at(p);
-  if (e.z <= 0.0) return vec2(0.0);
-  return vec2(max(light_distance_of(p) - e.x, 0.0), e.y);
+  return transmission_chord(p);
 }
 
 // Light carried through s mm of stone, relative to what the same stone reflects: Cycles' random

@@ -1,9 +1,12 @@
 #include "marble/render/lighting_pass.h"
 
+#include <algorithm>
+
 #include "marble/gl/checked_calls.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
+#include "marble/scene/material_scattering.h"
 #include "marble/scene/slab_transport.h"
 
 namespace marble {
@@ -96,6 +99,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   glProgramUniform3fv(p.id(), p.location("u_slab_ln_t"), kSlabTransportNodes, &slab_.lnT[0].x);
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
+  // The transmission's chord across an edge of the light's map (transmission_chord.glsl); kept
+  // above 0.001 per mm (a stone that absorbs nothing), where it is the texels' mean chord.
+  p.set("u_chord_decay", std::max(diffusionAttenuationMm(m), 1.0e-3f) * scene.mm_per_unit);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setBounceGridUniforms(p, in.bounceGrid);
   setEnvironmentUniforms(p, settings, environment);

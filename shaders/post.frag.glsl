@@ -202,10 +202,10 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
 // The change of the normal from pixel p to its neighbour q (toward +axis: q - p, or p - q when q
 // lies on the minus side, `sign`); false where q is off the object or outside the frame.
 // interpolated: q's interpolated normal (the specular normal texture's zw), not its bent one (xy).
-bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) {
+bool normal_step(ivec2 q, float q_depth, vec3 N, float sign, bool interpolated, out vec3 step) {
   step = vec3(0.0);
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
-  if (nearest_texel(u_depth, q).r >= 1.0) return false;
+  if (q_depth >= 1.0) return false;
   vec4 stored = nearest_texel(u_normal, q);
   step = sign * (decode_normal(interpolated ? stored.zw : stored.xy) - N);
   return true;
@@ -228,13 +228,13 @@ bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) 
 // normals no ray there has: on bunny-back's back rim the 800^2 row below the bent one read
 // 1506 / 1193 against Cycles' 1201 / 1009 (docs/quality.md, "Twentieth session: ... s20-bunny2").
 void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy,
-                            out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
+                            vec2 outer_depths, out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
   // The quad pairs columns 2i | 2i+1 (and rows): an even pixel's partner is at +1, its outer
   // neighbour at -1; an odd one's the other way round. The quad's derivative is toward +axis.
   bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
   vec3 outer_x, outer_y;
-  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), N, even_x ? -1.0 : 1.0, kept, outer_x);
-  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), N, even_y ? -1.0 : 1.0, kept, outer_y);
+  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), outer_depths.x, N, even_x ? -1.0 : 1.0, kept, outer_x);
+  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), outer_depths.y, N, even_y ? -1.0 : 1.0, kept, outer_y);
   bool quad_x_on = don_dx == 0.0, quad_y_on = don_dy == 0.0;
   bx = even_x ? outer_x : dndx_quad;
   ax = even_x ? dndx_quad : outer_x;
@@ -244,8 +244,28 @@ void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dnd
   footprint_axis_steps(by, even_y ? outer_y_on : quad_y_on, ay, even_y ? quad_y_on : outer_y_on);
 }
 
+// The depths of pixel p and of its outer neighbours along x and y (footprint_normal_steps: -1 for
+// an even column or row, +1 for an odd one), from one gather of the 2 x 2 texels they share: the
+// texels' values as stored, as three nearest reads give them (clamped to the edge outside the
+// frame, where normal_step does not use them); one read instead of three: the post pass of the
+// dragon's 800^2 camera frame 135.76 -> 134.93 M instructions (docs/performance.md, "Twenty-seventh
+// session: ... s27-cost"). Four-channel gathers do not pay so: the upsample's four reads as four
+// gathers cost +5.9 M.
+// Returns p's depth; outer: the x and the y neighbour's.
+float depths_at(ivec2 p, out vec2 outer) {
+  bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
+  ivec2 lo = ivec2(even_x ? p.x - 1 : p.x, even_y ? p.y - 1 : p.y);  // the block's lower-left texel
+  // (lo.x, lo.y + 1), (lo.x + 1, lo.y + 1), (lo.x + 1, lo.y), (lo.x, lo.y): GL's gather order.
+  vec4 g = textureGather(u_depth, vec2(lo + 1) / vec2(textureSize(u_depth, 0)), 0);
+  vec2 upper = even_x ? g.yx : g.xy, lower = even_x ? g.zw : g.wz;  // (p's column, the other)
+  vec2 row = even_y ? upper : lower, other_row = even_y ? lower : upper;
+  outer = vec2(row.y, other_row.x);
+  return row.x;
+}
+
 void main() {
-  float depth = nearest_texel(u_depth, ivec2(gl_FragCoord.xy)).r;
+  vec2 outer_depths;
+  float depth = depths_at(ivec2(gl_FragCoord.xy), outer_depths);
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) {
@@ -268,7 +288,7 @@ void main() {
     vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;
     if (surface)
       footprint_normal_steps(ivec2(gl_FragCoord.xy), N, kept, kept ? dnidx_quad : dndx_quad, kept ? dnidy_quad : dndy_quad,
-                             dondx, dondy, bx, ax, by, ay);
+                             dondx, dondy, outer_depths, bx, ax, by, ay);
 #endif
     c = surface ? marble_compose(depth, N, bx, ax, by, ay) : vec3(0.0);
   } else {

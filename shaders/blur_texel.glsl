@@ -22,7 +22,10 @@ ivec2 blur_texel_pixel(sampler2D depth, ivec2 h, int scale, out float pixel_dept
   pixel_depth = nearest_texel(depth, first).r;
   if (pixel_depth < 1.0) return first;  // 1: the cleared background
   for (int k = 1; k < scale * scale; ++k) {
-    ivec2 p = min(h * scale + ivec2(k % scale, k / scale), last);
+    // k % scale, k / scale for the scales there are, 1 and 2 (subsurfaceScale), as a mask and a
+    // shift: llvmpipe has no vector integer division and divided lane by lane (the blur depth pass
+    // 6.88 -> 4.60 M instructions, the lighting pass 91.08 -> 90.48 M: docs/performance.md).
+    ivec2 p = min(h * scale + ivec2(k & (scale - 1), k >> (scale >> 1)), last);
     float d = nearest_texel(depth, p).r;
     if (d < 1.0) { pixel_depth = d; return p; }
   }

@@ -88,6 +88,16 @@ vec3 as_stored_half(vec3 v) {
   return vec3(unpackHalf2x16(packHalf2x16(v.rg)), unpackHalf2x16(packHalf2x16(vec2(v.b, 0.0))).x);
 }
 
+// The texel of the blur's resolution nearest full-resolution pixel p >= 0, (p + scale / 2) / scale,
+// as shifts: the scale is 1 or 2 (subsurfaceScale), where they are that division exactly. llvmpipe
+// has no vector integer division: it divided lane by lane, 3.85 M instructions of the post pass of
+// the dragon's 800^2 camera frame for the two calls (docs/performance.md, "Twenty-seventh session:
+// ... s27-cost").
+ivec2 nearest_blur_texel(ivec2 p) {
+  int s = u_scale >> 1;
+  return (p + s) >> s;
+}
+
 // The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
 // mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
 // surface's mirror ray meets the object on screen (self_reflection_hit), or -1. albedo: the
@@ -113,7 +123,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
   // march found, and the upsample's four taps cost 10.6 M instructions of the dragon's 800^2
   // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
-    ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
+    ivec2 texel = min(nearest_blur_texel(hit), textureSize(u_blurred, 0) - 1);
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * nearest_texel(u_blurred, texel).rgb;
   }
 #if SURFACE_REUSE == 1
@@ -132,7 +142,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
 // texel's surface point; within a texel the pixels share it (the mirror image at the entering
 // light's resolution, half by default).
 ivec2 mirror_hit_at(ivec2 px) {
-  ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
+  ivec2 t = min(nearest_blur_texel(px), textureSize(u_mirror_hit, 0) - 1);
   return ivec2(nearest_texel(u_mirror_hit, t).xy);
 }
 

@@ -7,5 +7,7 @@ layout(binding = UNIT_SCREEN_INPUT) uniform sampler2D u_depth;  // the G-buffer'
 uniform int u_scale;
 #include "blur_texel.glsl"
 void main() {
-  gl_FragDepth = nearest_texel(u_depth, blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale)).r;  // GL_NEAREST: nearest_texel.glsl
+  float depth;
+  blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale, depth);  // GL_NEAREST: nearest_texel.glsl
+  gl_FragDepth = depth;
 }

@@ -543,9 +543,9 @@ void main() {
     o_color = vec4(vec3(t), 1.0);
     return;
   }
-  ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale);
+  float depth;  // px's, through the sampler (GL_NEAREST: nearest_texel.glsl)
+  ivec2 px = blur_texel_pixel(u_depth, ivec2(gl_FragCoord.xy), u_scale, depth);
   vec2 uv = (vec2(px) + 0.5) / vec2(textureSize(u_depth, 0));  // its centre
-  float depth = textureLod(u_depth, uv, 0.0).r;  // px's, through the sampler (GL_NEAREST: nearest_texel.glsl)
   bool stone = depth < 1.0;
   // The surface point, normal and (marble) the transmission's exit and chord, once for the gather
   // and marble_entering; background texels get a point at mid depth (a select: no NaNs into the

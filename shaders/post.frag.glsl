@@ -88,6 +88,16 @@ vec3 as_stored_half(vec3 v) {
   return vec3(unpackHalf2x16(packHalf2x16(v.rg)), unpackHalf2x16(packHalf2x16(vec2(v.b, 0.0))).x);
 }
 
+// The texel of the blur's resolution nearest full-resolution pixel p >= 0, (p + scale / 2) / scale,
+// as shifts: the scale is 1 or 2 (subsurfaceScale), where they are that division exactly. llvmpipe
+// has no vector integer division: it divided lane by lane, 3.85 M instructions of the post pass of
+// the dragon's 800^2 camera frame for the two calls (docs/performance.md, "Twenty-seventh session:
+// ... s27-cost").
+ivec2 nearest_blur_texel(ivec2 p) {
+  int s = u_scale >> 1;
+  return (p + s) >> s;
+}
+
 // The diffuse part at a surface pixel: the subsurface-blurred light, with the stone's own light
 // mirrored in the surface, x the albedo (see the top). V: toward the camera; hit: where the
 // surface's mirror ray meets the object on screen (self_reflection_hit), or -1. albedo: the
@@ -113,7 +123,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
   // march found, and the upsample's four taps cost 10.6 M instructions of the dragon's 800^2
   // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
-    ivec2 texel = min((hit + u_scale / 2) / u_scale, textureSize(u_blurred, 0) - 1);
+    ivec2 texel = min(nearest_blur_texel(hit), textureSize(u_blurred, 0) - 1);
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * nearest_texel(u_blurred, texel).rgb;
   }
 #if SURFACE_REUSE == 1
@@ -132,7 +142,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
 // texel's surface point; within a texel the pixels share it (the mirror image at the entering
 // light's resolution, half by default).
 ivec2 mirror_hit_at(ivec2 px) {
-  ivec2 t = min((px + u_scale / 2) / u_scale, textureSize(u_mirror_hit, 0) - 1);
+  ivec2 t = min(nearest_blur_texel(px), textureSize(u_mirror_hit, 0) - 1);
   return ivec2(nearest_texel(u_mirror_hit, t).xy);
 }
 
@@ -202,10 +212,10 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
 // The change of the normal from pixel p to its neighbour q (toward +axis: q - p, or p - q when q
 // lies on the minus side, `sign`); false where q is off the object or outside the frame.
 // interpolated: q's interpolated normal (the specular normal texture's zw), not its bent one (xy).
-bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) {
+bool normal_step(ivec2 q, float q_depth, vec3 N, float sign, bool interpolated, out vec3 step) {
   step = vec3(0.0);
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(u_depth, 0)))) return false;
-  if (nearest_texel(u_depth, q).r >= 1.0) return false;
+  if (q_depth >= 1.0) return false;
   vec4 stored = nearest_texel(u_normal, q);
   step = sign * (decode_normal(interpolated ? stored.zw : stored.xy) - N);
   return true;
@@ -228,13 +238,13 @@ bool normal_step(ivec2 q, vec3 N, float sign, bool interpolated, out vec3 step) 
 // normals no ray there has: on bunny-back's back rim the 800^2 row below the bent one read
 // 1506 / 1193 against Cycles' 1201 / 1009 (docs/quality.md, "Twentieth session: ... s20-bunny2").
 void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dndy_quad, float don_dx, float don_dy,
-                            out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
+                            vec2 outer_depths, out vec3 bx, out vec3 ax, out vec3 by, out vec3 ay) {
   // The quad pairs columns 2i | 2i+1 (and rows): an even pixel's partner is at +1, its outer
   // neighbour at -1; an odd one's the other way round. The quad's derivative is toward +axis.
   bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
   vec3 outer_x, outer_y;
-  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), N, even_x ? -1.0 : 1.0, kept, outer_x);
-  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), N, even_y ? -1.0 : 1.0, kept, outer_y);
+  bool outer_x_on = normal_step(ivec2(even_x ? p.x - 1 : p.x + 1, p.y), outer_depths.x, N, even_x ? -1.0 : 1.0, kept, outer_x);
+  bool outer_y_on = normal_step(ivec2(p.x, even_y ? p.y - 1 : p.y + 1), outer_depths.y, N, even_y ? -1.0 : 1.0, kept, outer_y);
   bool quad_x_on = don_dx == 0.0, quad_y_on = don_dy == 0.0;
   bx = even_x ? outer_x : dndx_quad;
   ax = even_x ? dndx_quad : outer_x;
@@ -244,8 +254,28 @@ void footprint_normal_steps(ivec2 p, vec3 N, bool kept, vec3 dndx_quad, vec3 dnd
   footprint_axis_steps(by, even_y ? outer_y_on : quad_y_on, ay, even_y ? quad_y_on : outer_y_on);
 }
 
+// The depths of pixel p and of its outer neighbours along x and y (footprint_normal_steps: -1 for
+// an even column or row, +1 for an odd one), from one gather of the 2 x 2 texels they share: the
+// texels' values as stored, as three nearest reads give them (clamped to the edge outside the
+// frame, where normal_step does not use them); one read instead of three: the post pass of the
+// dragon's 800^2 camera frame 135.76 -> 134.93 M instructions (docs/performance.md, "Twenty-seventh
+// session: ... s27-cost"). Four-channel gathers do not pay so: the upsample's four reads as four
+// gathers cost +5.9 M.
+// Returns p's depth; outer: the x and the y neighbour's.
+float depths_at(ivec2 p, out vec2 outer) {
+  bool even_x = (p.x & 1) == 0, even_y = (p.y & 1) == 0;
+  ivec2 lo = ivec2(even_x ? p.x - 1 : p.x, even_y ? p.y - 1 : p.y);  // the block's lower-left texel
+  // (lo.x, lo.y + 1), (lo.x + 1, lo.y + 1), (lo.x + 1, lo.y), (lo.x, lo.y): GL's gather order.
+  vec4 g = textureGather(u_depth, vec2(lo + 1) / vec2(textureSize(u_depth, 0)), 0);
+  vec2 upper = even_x ? g.yx : g.xy, lower = even_x ? g.zw : g.wz;  // (p's column, the other)
+  vec2 row = even_y ? upper : lower, other_row = even_y ? lower : upper;
+  outer = vec2(row.y, other_row.x);
+  return row.x;
+}
+
 void main() {
-  float depth = nearest_texel(u_depth, ivec2(gl_FragCoord.xy)).r;
+  vec2 outer_depths;
+  float depth = depths_at(ivec2(gl_FragCoord.xy), outer_depths);
   bool surface = depth < 1.0;
   vec3 c;
   if (u_compose_marble == 1) {
@@ -268,7 +298,7 @@ void main() {
     vec3 bx = vec3(0.0), ax = bx, by = bx, ay = bx;
     if (surface)
       footprint_normal_steps(ivec2(gl_FragCoord.xy), N, kept, kept ? dnidx_quad : dndx_quad, kept ? dnidy_quad : dndy_quad,
-                             dondx, dondy, bx, ax, by, ay);
+                             dondx, dondy, outer_depths, bx, ax, by, ay);
 #endif
     c = surface ? marble_compose(depth, N, bx, ax, by, ay) : vec3(0.0);
   } else {

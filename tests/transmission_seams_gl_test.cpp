@@ -346,7 +346,7 @@ TEST(TransmissionSeamsControl, WithTheLightMapReadNearestThereAreSeams) {
 // With session 27's blur, the surface measure also turned off here: 2 seams, worst 1.27x.
 TEST(TransmissionSeamsControl, WithTheBlurTexelsFirstPixelAloneThereIsASeam) {
   glContext();
-  const auto dir = brokenShaders("blur_texel.glsl", {{"if (nearest_texel(depth, p).r < 1.0) return p;", ""}});
+  const auto dir = brokenShaders("blur_texel.glsl", {{"if (d < 1.0) { pixel_depth = d; return p; }", ""}});
   ASSERT_FALSE(dir.empty()) << "blur_texel.glsl no longer has the line this control breaks";
   // And the straight chord alone, as when this control was written: the gather over the light's
   // map (session 11) softens the glow's rise toward the sphere's rim, and the staircase's step

@@ -123,14 +123,19 @@ vec2 transmission_thickness(vec3 p) {
 // albedo multiplies the diffuse light later (post pass). Against Cycles' own slab renders of the
 // issue's stone it agrees within their noise at 2-20 mm; the dipole it replaced let 1.3-1.5x too
 // much red through (docs/quality.md, "Transmission from a random walk").
-vec3 slab_transport(float s_mm) {
-  vec3 tau = u_slab_sigma_t_mm * s_mm;
+// ln(T / R_inf) at optical thickness tau per channel, the table's nodes interpolated linearly
+// (clamped to the table: slab_transport sets T = 0 beyond it).
+vec3 slab_ln_transport(vec3 tau) {
   vec3 x = sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1);
   ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
   vec3 f = x - vec3(i);
   vec3 lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
   vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
-  return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
+  return mix(lo, hi, f);
+}
+vec3 slab_transport(float s_mm) {
+  vec3 tau = u_slab_sigma_t_mm * s_mm;
+  return exp(slab_ln_transport(tau)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
 // The translucent shadow map's filter (Dachsbacher & Stamminger 2003): the light leaving at x is
@@ -481,6 +486,28 @@ float entry_cosine(vec2 s_cos, float NoL) {
   return mix(max(NoL, 0.0), s_cos.y, smoothstep(0.0, ENTRY_OWN_TEXELS * u_light_texel_world, s_cos.x));
 }
 
+// The stone between the transmission's inward-offset exit P_in and the exit P itself. The chord s
+// is read at P_in (2 light texels inside along -N, against acne), but the walk leaves at P: on the
+// side turned from the light P lies farther from the light than P_in by
+// dl = light_distance_of(P) - light_distance_of(P_in) (2 texels on a face turned straight away,
+// 0 along the light's silhouette, none on the lit side), so the light crosses s + dl of stone.
+// Returned: T(s + dl) / T(s) per channel from the slab table's own log slope (the same walk), which
+// every part of the transport (straight chord, rings, the crossed bounce) takes as one factor:
+// exact for the straight chord, and for the rings to first order in dl / S (dl <= 2 texels, S >= 4
+// texels). Before session 27 the transport was read at s alone: on a 10 mm slab at 50 mm per unit
+// 2 texels are 0.28 mm, which let 8-13 % too much through (TransmissionSlab's tests held T at the
+// thickness less the offset); in the back-lit statues (0.34 mm texels, where T falls 0.3-0.6 per mm
+// in ln) 1.2-1.5x, the dark body's surplus over Cycles' direct light (docs/quality.md, "Twenty-seventh
+// session: the transmission's exit"). Where s + dl runs past the table the ratio is taken just
+// inside its end (tau clamped to tau_max - dtau), so light the rings bring over long chords keeps
+// the table's last slope rather than being cut to 0; a chord of 0 (no stone toward the light) is
+// left as it is (entry_cosine: the exit's own surface).
+vec3 exit_depth_share(vec3 P, vec3 P_in, float s) {
+  vec3 dtau = u_slab_sigma_t_mm * (max(light_distance_of(P) - light_distance_of(P_in), 0.0) * u_mm_per_unit);
+  vec3 tau = min(u_slab_sigma_t_mm * (s * u_mm_per_unit), max(vec3(u_slab_tau_max) - dtau, vec3(0.0)));
+  return s > 0.0 ? min(exp(slab_ln_transport(tau + dtau) - slab_ln_transport(tau)), vec3(1.0)) : vec3(1.0);
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
@@ -517,7 +544,7 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_ri
   float cos_in = entry_cosine(s_cos, NoL);
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
-  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);
+  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings) * exit_depth_share(P, P_in, s);
   vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
     // The entry, s back toward the light along its ray, is where the light's map puts it to within

@@ -547,9 +547,12 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_ri
   float cos_in = entry_cosine(s_cos, NoL);
   float away = clamp(0.5 - 0.5 * NoL, 0.0, 1.0);
   float weight = away * away;
-  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings) * exit_depth_share(P, P_in, s);
+  vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);
   vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
+    // Only here: P lies farther from the light than P_in only where N faces away from it (N.L < 0),
+    // and with no chord there is no stone to add (exit_depth_share is 1 elsewhere).
+    transport *= exit_depth_share(P, P_in, s);
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
     // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
     // from 12, or where the surface the camera sees there faces away from the light (entry_seen).

@@ -123,19 +123,22 @@ vec2 transmission_thickness(vec3 p) {
 // albedo multiplies the diffuse light later (post pass). Against Cycles' own slab renders of the
 // issue's stone it agrees within their noise at 2-20 mm; the dipole it replaced let 1.3-1.5x too
 // much red through (docs/quality.md, "Transmission from a random walk").
-// ln(T / R_inf) at optical thickness tau per channel, the table's nodes interpolated linearly
-// (clamped to the table: slab_transport sets T = 0 beyond it).
-vec3 slab_ln_transport(vec3 tau) {
-  vec3 x = sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1);
+// The table's coordinate x for optical thickness tau per channel (nodes at integer x, clamped to
+// the table), and the segment of ln(T / R_inf) that holds x: .lo its value at node floor(x), .slope
+// its rise per unit of x (ln T is linear in x between nodes).
+vec3 slab_x(vec3 tau) { return sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1); }
+void slab_segment(vec3 x, out vec3 lo, out vec3 slope) {
   ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
-  vec3 f = x - vec3(i);
-  vec3 lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
+  lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
   vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
-  return mix(lo, hi, f);
+  slope = hi - lo;
+  lo -= slope * vec3(i);  // so that ln T = lo + slope * x
 }
 vec3 slab_transport(float s_mm) {
   vec3 tau = u_slab_sigma_t_mm * s_mm;
-  return exp(slab_ln_transport(tau)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
+  vec3 x = slab_x(tau), lo, slope;
+  slab_segment(x, lo, slope);
+  return exp(lo + slope * x) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
 // The translucent shadow map's filter (Dachsbacher & Stamminger 2003): the light leaving at x is
@@ -491,7 +494,8 @@ float entry_cosine(vec2 s_cos, float NoL) {
 // side turned from the light P lies farther from the light than P_in by
 // dl = light_distance_of(P) - light_distance_of(P_in) (2 texels on a face turned straight away,
 // 0 along the light's silhouette, none on the lit side), so the light crosses s + dl of stone.
-// Returned: T(s + dl) / T(s) per channel from the slab table's own log slope (the same walk), which
+// Returned: T(s + dl) / T(s) per channel from the slab table's own log slope (the same walk: the
+// slope of the table's segment that holds s, exact while s + dl stays in it), which
 // every part of the transport (straight chord, rings, the crossed bounce) takes as one factor:
 // exact for the straight chord through a flat entry, and for the rings to first order in dl / S
 // (dl <= 2 texels, S >= 4 texels). Along the light: on a slab slanted at theta the plane's depth
@@ -508,7 +512,9 @@ float entry_cosine(vec2 s_cos, float NoL) {
 vec3 exit_depth_share(vec3 P, vec3 P_in, float s) {
   vec3 dtau = u_slab_sigma_t_mm * (max(light_distance_of(P) - light_distance_of(P_in), 0.0) * u_mm_per_unit);
   vec3 tau = min(u_slab_sigma_t_mm * (s * u_mm_per_unit), max(vec3(u_slab_tau_max) - dtau, vec3(0.0)));
-  return s > 0.0 ? min(exp(slab_ln_transport(tau + dtau) - slab_ln_transport(tau)), vec3(1.0)) : vec3(1.0);
+  vec3 x = slab_x(tau), lo, slope;
+  slab_segment(x, lo, slope);
+  return s > 0.0 ? min(exp(slope * (slab_x(tau + dtau) - x)), vec3(1.0)) : vec3(1.0);
 }
 
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the

@@ -491,24 +491,24 @@ float entry_cosine(vec2 s_cos, float NoL) {
 
 // The stone between the transmission's inward-offset exit P_in and the exit P itself. The chord s
 // is read at P_in (2 light texels inside along -N, against acne), but the walk leaves at P: on the
-// side turned from the light P lies farther from the light than P_in by
-// dl = light_distance_of(P) - light_distance_of(P_in) (2 texels on a face turned straight away,
-// 0 along the light's silhouette, none on the lit side), so the light crosses s + dl of stone.
-// Returned: T(s + dl) / T(s) per channel from the slab table's own log slope (the same walk: the
-// slope of the table's segment that holds s, exact while s + dl stays in it), which
-// every part of the transport (straight chord, rings, the crossed bounce) takes as one factor:
-// exact for the straight chord through a flat entry, and for the rings to first order in dl / S
-// (dl <= 2 texels, S >= 4 texels). Along the light: on a slab slanted at theta the plane's depth
-// (slanted_depth) grows by the whole 2 texels but this adds 2 texels cos theta of chord (the
-// slanted slab's test reads 0.96-1.02 of its thickness's law at 0-70 degrees all the same). Before session 27 the transport was read at s alone: through TransmissionSlab's 10 mm
-// slab (2 texels 0.34 mm) 1.05 / 1.09 / 1.13x (r / g / b) what the walk lets through the whole
-// slab, and in the back-lit statues (2 texels 0.68 mm at 100 mm per unit) 1.06-1.4x, part of the
-// dark body's surplus over Cycles' direct light (this factor 0.71-0.94 there; ten reference scenes'
-// mean SSIM +0.0012, buddha-back +0.0068, dragon-back +0.0032: docs/quality.md, "Twenty-seventh
-// session: the transmission's exit"). Where s + dl runs past the table the ratio is taken just
-// inside its end (tau clamped to tau_max - dtau), so light the rings bring over long chords keeps
-// the table's last slope rather than being cut to 0; a chord of 0 (no stone toward the light) is
-// left as it is (entry_cosine: the exit's own surface).
+// side turned from the light P lies farther from the light than P_in by dl = light_distance_of(P) -
+// light_distance_of(P_in) (2 texels on a face turned straight away, 0 along the light's silhouette,
+// none on the lit side), so the light crosses s + dl of stone. Returned: T(s + dl) / T(s) per
+// channel from the slab table's own log slope (the same walk: the slope of the table's segment that
+// holds s, exact while s + dl stays in it), which every part of the transport (straight chord,
+// rings, the crossed bounce) takes as one factor: exact for the straight chord through a flat
+// entry, and for the rings to first order in dl / S (dl <= 2 texels, S >= 4 texels). Along the
+// light: on a slab slanted at theta the plane's depth (slanted_depth) grows by the whole 2 texels
+// but this adds 2 texels cos theta of chord (the slanted slab's test reads 0.96-1.02 of its
+// thickness's law at 0-70 degrees all the same). Before session 27 the transport was read at s
+// alone: through TransmissionSlab's 10 mm slab (2 texels 0.34 mm) 1.05 / 1.09 / 1.13x (r / g / b)
+// what the walk lets through the whole slab, and in the back-lit statues (2 texels 0.68 mm at 100
+// mm per unit) 1.06-1.4x, part of the dark body's surplus over Cycles' direct light (this factor
+// 0.71-0.94 there; ten reference scenes' mean SSIM +0.0012, buddha-back +0.0068, dragon-back
+// +0.0032: docs/quality.md, "Twenty-seventh session: the transmission's exit"). Where s + dl runs
+// past the table the ratio is taken just inside its end (tau clamped to tau_max - dtau), so light
+// the rings bring over long chords keeps the table's last slope rather than being cut to 0; a chord
+// of 0 (no stone toward the light) is left as it is (entry_cosine: the exit's own surface).
 vec3 exit_depth_share(vec3 P, vec3 P_in, float s) {
   vec3 dtau = u_slab_sigma_t_mm * (max(light_distance_of(P) - light_distance_of(P_in), 0.0) * u_mm_per_unit);
   vec3 tau = min(u_slab_sigma_t_mm * (s * u_mm_per_unit), max(vec3(u_slab_tau_max) - dtau, vec3(0.0)));

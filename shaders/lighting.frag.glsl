@@ -114,14 +114,22 @@ vec2 transmission_thickness(vec3 p) {
 // albedo multiplies the diffuse light later (post pass). Against Cycles' own slab renders of the
 // issue's stone it agrees within their noise at 2-20 mm; the dipole it replaced let 1.3-1.5x too
 // much red through (docs/quality.md, "Transmission from a random walk").
+// The table's coordinate x for optical thickness tau per channel (nodes at integer x, clamped to
+// the table), and the segment of ln(T / R_inf) that holds x: .lo its value at node floor(x), .slope
+// its rise per unit of x (ln T is linear in x between nodes).
+vec3 slab_x(vec3 tau) { return sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1); }
+void slab_segment(vec3 x, out vec3 lo, out vec3 slope) {
+  ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
+  lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
+  vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
+  slope = hi - lo;
+  lo -= slope * vec3(i);  // so that ln T = lo + slope * x
+}
 vec3 slab_transport(float s_mm) {
   vec3 tau = u_slab_sigma_t_mm * s_mm;
-  vec3 x = sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1);
-  ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
-  vec3 f = x - vec3(i);
-  vec3 lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
-  vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
-  return exp(mix(lo, hi, f)) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
+  vec3 x = slab_x(tau), lo, slope;
+  slab_segment(x, lo, slope);
+  return exp(lo + slope * x) * vec3(lessThan(tau, vec3(u_slab_tau_max)));
 }
 
 // The translucent shadow map's filter (Dachsbacher & Stamminger 2003): the light leaving at x is
@@ -472,6 +480,34 @@ float entry_cosine(vec2 s_cos, float NoL) {
   return mix(max(NoL, 0.0), s_cos.y, smoothstep(0.0, ENTRY_OWN_TEXELS * u_light_texel_world, s_cos.x));
 }
 
+// The stone between the transmission's inward-offset exit P_in and the exit P itself. The chord s
+// is read at P_in (2 light texels inside along -N, against acne), but the walk leaves at P: on the
+// side turned from the light P lies farther from the light than P_in by dl = light_distance_of(P) -
+// light_distance_of(P_in) (2 texels on a face turned straight away, 0 along the light's silhouette,
+// none on the lit side), so the light crosses s + dl of stone. Returned: T(s + dl) / T(s) per
+// channel from the slab table's own log slope (the same walk: the slope of the table's segment that
+// holds s, exact while s + dl stays in it), which every part of the transport (straight chord,
+// rings, the crossed bounce) takes as one factor: exact for the straight chord through a flat
+// entry, and for the rings to first order in dl / S (dl <= 2 texels, S >= 4 texels). Along the
+// light: on a slab slanted at theta the plane's depth (slanted_depth) grows by the whole 2 texels
+// but this adds 2 texels cos theta of chord (the slanted slab's test reads 0.96-1.02 of its
+// thickness's law at 0-70 degrees all the same). Before session 27 the transport was read at s
+// alone: through TransmissionSlab's 10 mm slab (2 texels 0.34 mm) 1.05 / 1.09 / 1.13x (r / g / b)
+// what the walk lets through the whole slab, and in the back-lit statues (2 texels 0.68 mm at 100
+// mm per unit) 1.06-1.4x, part of the dark body's surplus over Cycles' direct light (this factor
+// 0.71-0.94 there; ten reference scenes' mean SSIM +0.0012, buddha-back +0.0068, dragon-back
+// +0.0032: docs/quality.md, "Twenty-seventh session: the transmission's exit"). Where s + dl runs
+// past the table the ratio is taken just inside its end (tau clamped to tau_max - dtau), so light
+// the rings bring over long chords keeps the table's last slope rather than being cut to 0; a chord
+// of 0 (no stone toward the light) is left as it is (entry_cosine: the exit's own surface).
+vec3 exit_depth_share(vec3 P, vec3 P_in, float s) {
+  vec3 dtau = u_slab_sigma_t_mm * (max(light_distance_of(P) - light_distance_of(P_in), 0.0) * u_mm_per_unit);
+  vec3 tau = min(u_slab_sigma_t_mm * (s * u_mm_per_unit), max(vec3(u_slab_tau_max) - dtau, vec3(0.0)));
+  vec3 x = slab_x(tau), lo, slope;
+  slab_segment(x, lo, slope);
+  return s > 0.0 ? min(exp(slope * (slab_x(tau + dtau) - x)), vec3(1.0)) : vec3(1.0);
+}
+
 // The `marble` mode, light that enters the stone here (linear HDR, irradiance / PI before the
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
@@ -511,6 +547,9 @@ vec3 marble_entering(vec3 P, vec3 N, vec3 L, vec3 P_in, vec2 s_cos, vec3 glow_ri
   vec3 transport = gathered_transport(P_in, s, cos_in, glow_rings);
   vec3 crossed = vec3(0.0);
   if (NoL < 0.0 && s > 0.0) {
+    // Only here: P lies farther from the light than P_in only where N faces away from it (N.L < 0),
+    // and with no chord there is no stone to add (exit_depth_share is 1 elsewhere).
+    transport *= exit_depth_share(P, P_in, s);
     // The entry, s back toward the light along its ray, is where the light's map puts it to within
     // the inward offset and the map's interpolation (a few texels): hidden from 4 texels on, fully
     // from 12, or where the surface the camera sees there faces away from the light (entry_seen).

@@ -78,7 +78,11 @@ std::pair<glm::vec3, glm::vec3> bounceAndOwnLight(float plate, bool fromBelow, f
 // place among the cells; physically none reaches it but by crossing, which marble models for the
 // first bounce only): the thin plate's ratios 0.91-1.21 on main, 0.94-1.29 with 48 cells (a grid per
 // facing, not kept, gave 0.67-0.74; docs/quality.md, "Twenty-fifth session: ... the radiosity's grid
-// at 48 cells").
+// at 48 cells"). 1.45 since session 27 (s27-back): the light's own share now crosses the stone
+// between the transmission's offset exit and the face too (exit_depth_share: 0.85-0.92 of what it
+// was through this plate, r / g / b), which the crossed first bounce follows but the grid's
+// blended part does not (the bounce's share 0.92-0.94 of before): the thin plate's ratios
+// 0.96-1.38 (were 0.94-1.28).
 void expectBounceCrossesAsTheLight(float plate) {
   for (float d : {0.2f, 0.35f}) {
     const auto above = bounceAndOwnLight(plate, false, d), below = bounceAndOwnLight(plate, true, d);
@@ -89,7 +93,7 @@ void expectBounceCrossesAsTheLight(float plate) {
       std::cout << "[          ] plate " << plate << ", d " << d << ", channel " << c << ": the bounce's share "
                 << bounceShare << ", the light's " << lightShare << ", ratio " << bounceShare / lightShare << "\n";
       EXPECT_GT(bounceShare / lightShare, 0.6f) << "d " << d << " channel " << c;
-      EXPECT_LT(bounceShare / lightShare, 1.35f) << "d " << d << " channel " << c;
+      EXPECT_LT(bounceShare / lightShare, 1.45f) << "d " << d << " channel " << c;
     }
   }
 }

@@ -3,11 +3,12 @@
 // pixels' resolution, and its texel nearest the hit need not lie on the hit's surface: at a depth
 // edge -- a thin part in front of another, the back-lit teapot's handle arm (two blur texels wide at
 // 800^2) before its body -- it is often the part beside it, at another depth and with other light.
-// So the 3 x 3 texels around the nearest are read and the one whose view depth (the blurred
-// texture's alpha, blur_texel.glsl) lies nearest the hit's is taken: the light of the hit's own
-// surface, the choice the depth-aware upsample makes for a pixel (Kopf et al. 2007's joint
-// bilateral upsampling with a nearest-depth rule). On one surface the nearest texel wins (ties keep
-// it), so nothing changes there but the search.
+// So where the nearest texel's view depth (the blurred texture's alpha, blur_texel.glsl) lies
+// farther from the hit's than `same_surface` (scene units: upsample_blurred's tolerance, the blur's
+// reach plus a few pixels' footprint), the 3 x 3 texels around it are read and the one nearest the
+// hit's depth is taken: the light of the hit's own surface, the choice the depth-aware upsample
+// makes for a pixel (Kopf et al. 2007's joint bilateral upsampling, its nearest-depth fallback).
+// Within the tolerance the nearest texel, as before: on one surface nothing changes.
 // Measured (docs/quality.md, "Twenty-seventh session: the mirror image's light read on the hit's own
 // surface"): teapot-back's Cycles glossy indirect light, a one-pixel line along the handle arm's inner
 // edge, was 0.3-0.5 of Cycles' in marble's self-reflection there; the ten reference scenes' mean SSIM
@@ -17,10 +18,11 @@
 // Needs nearest_texel.glsl.
 #ifndef MIRROR_HIT_LIGHT_GLSL
 #define MIRROR_HIT_LIGHT_GLSL
-vec3 mirror_hit_light(sampler2D blurred, ivec2 nearest, float hit_depth) {
+vec3 mirror_hit_light(sampler2D blurred, ivec2 nearest, float hit_depth, float same_surface) {
   ivec2 last = textureSize(blurred, 0) - 1;
   vec4 best = nearest_texel(blurred, nearest);
   float off = abs(best.a - hit_depth);
+  if (off <= same_surface) return best.rgb;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       vec4 c = nearest_texel(blurred, clamp(nearest + ivec2(dx, dy), ivec2(0), last));

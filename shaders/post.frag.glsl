@@ -124,13 +124,12 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
   // lies on a surface the march found, and the upsample's four taps cost 10.6 M instructions of the
   // dragon's 800^2 camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
-    // The blur texel on the hit's own surface (mirror_hit_light.glsl): the nearest one's view depth
-    // against the hit's, the distance along the view axis (the centre pixel's ray) as the blur stores it.
+    // The blur texel on the hit's own surface (mirror_hit_light.glsl): the nearest one unless its
+    // view depth lies farther from the hit's than one surface's (upsample_blurred's tolerance).
     ivec2 texel = min(nearest_blur_texel(hit), textureSize(u_blurred, 0) - 1);
-    vec3 at_hit = surface_point((vec2(hit) + 0.5) / vec2(textureSize(u_depth, 0)), texelFetch(u_depth, hit, 0).r);
-    vec3 view_axis = normalize(surface_point(vec2(0.5), 1.0) - u_camera_pos);
+    float hit_depth = view_depth(texelFetch(u_depth, hit, 0).r);
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) *
-             mirror_hit_light(u_blurred, texel, dot(at_hit - u_camera_pos, view_axis));
+             mirror_hit_light(u_blurred, texel, hit_depth, same_surface_tolerance_mm(hit_depth) / u_mm_per_unit);
   }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);

@@ -12,7 +12,7 @@
 // Measured (docs/quality.md, "Twenty-seventh session: the mirror image's light read on the hit's own
 // surface"): teapot-back's Cycles glossy indirect light, a one-pixel line along the handle arm's inner
 // edge, was 0.3-0.5 of Cycles' in marble's self-reflection there; the ten reference scenes' mean SSIM
-// +0.00015 (teapot-back +0.0009, no scene down more than 0.00003). The search reaches one texel: a
+// +0.00015 (teapot-back +0.0013, no scene down more than 0.00004). The search reaches one texel: a
 // hit's depth edge farther than that from its nearest texel is not met (the 3 x 3 holds the nearest
 // and its eight neighbours; 2 x 2 would miss the far side of a texel-wide part).
 // Needs nearest_texel.glsl.

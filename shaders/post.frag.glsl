@@ -32,6 +32,7 @@
 #include "deferred_common.glsl"
 #include "subsurface_common.glsl"
 #include "nearest_texel.glsl"
+#include "mirror_hit_light.glsl"
 
 #ifndef SURFACE_REUSE
 #define SURFACE_REUSE 0
@@ -119,12 +120,16 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
   precise vec3 light = upsample_blurred(u_blurred, px, depth);
   // The stone's own light mirrored in its surface (self_reflection.glsl): reflected light, but the
   // hit's albedo is taken as P's, so it joins the light the albedo multiplies. The blurred light
-  // of the blur texel nearest the hit, not the depth-aware upsample: the hit lies on a surface the
-  // march found, and the upsample's four taps cost 10.6 M instructions of the dragon's 800^2
-  // camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
+  // of one blur texel at the hit, on the hit's own surface, not the depth-aware upsample: the hit
+  // lies on a surface the march found, and the upsample's four taps cost 10.6 M instructions of the
+  // dragon's 800^2 camera frame for 0.0001 of the reference scenes' mean SSIM (docs/performance.md).
   if (hit.x >= 0) {
+    // The blur texel on the hit's own surface (mirror_hit_light.glsl): the nearest one unless its
+    // view depth lies farther from the hit's than one surface's (upsample_blurred's tolerance).
     ivec2 texel = min(nearest_blur_texel(hit), textureSize(u_blurred, 0) - 1);
-    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) * nearest_texel(u_blurred, texel).rgb;
+    float hit_depth = view_depth(texelFetch(u_depth, hit, 0).r);
+    light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) *
+             mirror_hit_light(u_blurred, texel, hit_depth, same_surface_tolerance_mm(hit_depth) / u_mm_per_unit);
   }
 #if SURFACE_REUSE == 1
   o_surface_light = vec4(light, 1.0);

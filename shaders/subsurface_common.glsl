@@ -12,6 +12,10 @@ uniform int u_scale;                          // 2: the blur runs at half resolu
 
 float view_depth(float z) { return linear_depth(z, u_near_far); }  // scene units along the view axis
 
+// How far apart in view depth two blur texels may lie and be taken for one surface, in mm at view
+// depth `depth`: the blur's own reach, plus a few pixels' footprint for slanted surfaces.
+float same_surface_tolerance_mm(float depth) { return u_reach_mm + 4.0 * depth / u_pixels_per_mm_at_unit_depth; }
+
 // The blurred light at full-resolution pixel `px` (depth-buffer value z there): the up to
 // four blur texels around it, weighted bilinearly (at full resolution: the one texel),
 // keeping only those on stone at about the same depth (a joint bilateral upsample, Kopf et
@@ -24,8 +28,7 @@ vec3 upsample_blurred(sampler2D blurred, ivec2 px, float z) {
   vec2 f = t - vec2(i0);
   ivec2 last = textureSize(blurred, 0) - 1;
   float depth = view_depth(z);
-  // Tolerance: the blur's own reach, plus a few pixels' footprint for slanted surfaces.
-  float tolerance_mm = u_reach_mm + 4.0 * depth / u_pixels_per_mm_at_unit_depth;
+  float tolerance_mm = same_surface_tolerance_mm(depth);
   vec3 sum = vec3(0.0), nearest = vec3(0.0);
   float weight = 0.0, nearestGap = 1e30;
   for (int k = 0; k < 4; ++k) {

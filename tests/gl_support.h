@@ -9,7 +9,10 @@
 #include <utility>
 #include <vector>
 
+#include "marble/gl/checked_calls.h"
 #include "marble/gl/debug_output.h"
+#include "marble/gl/draw_state_check.h"
+#include "marble/gl/handles.h"
 #include "marble/gl/headless_context.h"
 #include "marble/render/offscreen_target.h"
 #include "marble/render/renderer.h"
@@ -72,6 +75,43 @@ inline GLuint compileComputeProgram(const std::string& source) {
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   EXPECT_TRUE(ok) << "compute program did not link";
   return program;
+}
+
+// The fixture of the tests that wrap library shader files in a compute shader of their own
+// (nearest_texel_gl_test, transmission_chord_gl_test, mirror_hit_light_gl_test): compileProgram in
+// SetUp (the source after its #version line), the program deleted after the test.
+class ComputeProgramTest : public ::testing::Test {
+protected:
+  void compileProgram(const std::string& source) {
+    glContext();  // the test binary's one context, debug output on
+    program_ = compileComputeProgram("#version 450 core\n" + source);
+    ASSERT_NE(program_, 0u);
+  }
+  void TearDown() override {
+    gl::forgetProgramSamplers(program_);
+    glDeleteProgram(program_);
+  }
+  GLuint program_ = 0;
+};
+
+// Runs `program` (already bound to its textures and uniforms) once per vec4 of `in`: one work group a
+// vec4, the inputs at shader-storage binding 0 and as many vec4 results at binding 1, which it
+// returns (the tests that query one library function at a list of points: transmission_chord_gl_test,
+// mirror_hit_light_gl_test).
+inline std::vector<float> runPerVec4(GLuint program, const std::vector<float>& in) {
+  const auto bytes = static_cast<GLsizeiptr>(in.size() * sizeof(float));
+  gl::Buffer inBuf = gl::Buffer::create(), outBuf = gl::Buffer::create();
+  glNamedBufferStorage(inBuf.id(), bytes, in.data(), 0);
+  glNamedBufferStorage(outBuf.id(), bytes, nullptr, GL_MAP_READ_BIT);
+  glUseProgram(program);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, inBuf.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, outBuf.id());
+  gl::dispatchCompute(static_cast<GLuint>(in.size() / 4), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> out(in.size());
+  glGetNamedBufferSubData(outBuf.id(), 0, bytes, out.data());
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  return out;
 }
 
 inline ImageRGBA8 renderImage(Renderer& renderer, const Scene& scene) {

@@ -42,19 +42,9 @@ struct Query {
   float depth, sameSurface;
 };
 
-class MirrorHitLightGlTest : public ::testing::Test {
+class MirrorHitLightGlTest : public test::ComputeProgramTest {
 protected:
-  void SetUp() override {
-    test::glContext();
-    const std::string src = std::string("#version 450 core\n") + embeddedShaders().at("nearest_texel.glsl") +
-                            embeddedShaders().at("mirror_hit_light.glsl") + kComputeMain;
-    program_ = test::compileComputeProgram(src);
-    ASSERT_NE(program_, 0u);
-  }
-  void TearDown() override {
-    gl::forgetProgramSamplers(program_);
-    glDeleteProgram(program_);
-  }
+  void SetUp() override { compileProgram(embeddedShaders().at("nearest_texel.glsl") + embeddedShaders().at("mirror_hit_light.glsl") + kComputeMain); }
 
   // The red channel of the light read for each query over `texels` (rgb = light, a = view depth).
   std::vector<float> read(const std::vector<std::array<float, 4>>& texels, const std::vector<Query>& queries) {
@@ -62,24 +52,13 @@ protected:
     glTextureSubImage2D(blurred.id(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, texels.data());
     std::vector<float> in;
     for (const Query& q : queries) in.insert(in.end(), {static_cast<float>(q.x), static_cast<float>(q.y), q.depth, q.sameSurface});
-    gl::Buffer inBuf = gl::Buffer::create(), outBuf = gl::Buffer::create();
-    glNamedBufferStorage(inBuf.id(), static_cast<GLsizeiptr>(in.size() * sizeof(float)), in.data(), 0);
-    glNamedBufferStorage(outBuf.id(), static_cast<GLsizeiptr>(in.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
-    glUseProgram(program_);
     glBindTextureUnit(0, blurred.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, inBuf.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, outBuf.id());
-    gl::dispatchCompute(static_cast<GLuint>(queries.size()), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> result(in.size());
-    glGetNamedBufferSubData(outBuf.id(), 0, static_cast<GLsizeiptr>(result.size() * sizeof(float)), result.data());
-    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    const std::vector<float> result = test::runPerVec4(program_, in);
     std::vector<float> r;
     for (size_t i = 0; i < queries.size(); ++i) r.push_back(result[4 * i]);
     return r;
   }
 
-  GLuint program_ = 0;
 };
 
 // A thin lit part (column 2, depth 2, light 1) before a dark body (the other columns, depth 3,

@@ -39,18 +39,9 @@ void main() {
 }
 )";
 
-class NearestTexelGlTest : public ::testing::Test {
+class NearestTexelGlTest : public test::ComputeProgramTest {
 protected:
-  void SetUp() override {
-    test::glContext();  // the test binary's one context, debug output on
-    const std::string src = "#version 450 core\n" + embeddedShaders().at("nearest_texel.glsl") + kComputeMain;
-    program_ = test::compileComputeProgram(src);
-    ASSERT_NE(program_, 0u);
-  }
-  void TearDown() override {
-    gl::forgetProgramSamplers(program_);
-    glDeleteProgram(program_);
-  }
+  void SetUp() override { compileProgram(embeddedShaders().at("nearest_texel.glsl") + kComputeMain); }
 
   // Texels of `texture` (w x h) whose nearest_texel differs in any bit from texelFetch.
   int mismatches(const gl::Texture& texture, int w, int h) {
@@ -71,7 +62,6 @@ protected:
     return bad;
   }
 
-  GLuint program_ = 0;
 };
 
 struct Format {

@@ -56,19 +56,9 @@ struct Column {
   float entry, cosine;
 };
 
-class TransmissionChordGlTest : public ::testing::Test {
+class TransmissionChordGlTest : public test::ComputeProgramTest {
 protected:
-  void SetUp() override {
-    test::glContext();
-    const std::string src = std::string("#version 450 core\n") + kPreamble +
-                            embeddedShaders().at("transmission_chord.glsl") + kComputeMain;
-    program_ = test::compileComputeProgram(src);
-    ASSERT_NE(program_, 0u);
-  }
-  void TearDown() override {
-    gl::forgetProgramSamplers(program_);
-    glDeleteProgram(program_);
-  }
+  void SetUp() override { compileProgram(kPreamble + embeddedShaders().at("transmission_chord.glsl") + kComputeMain); }
 
   // (chord, cosine) at each x (y = 0, z = kExitZ) over the map of columns.
   std::vector<std::array<float, 2>> chords(const std::array<Column, kMap>& columns, const std::vector<float>& xs) {
@@ -82,29 +72,18 @@ protected:
     glTextureSubImage2D(map.id(), 0, 0, 0, kMap, kMap, GL_RG, GL_FLOAT, texels.data());
     std::vector<float> points;
     for (float x : xs) points.insert(points.end(), {x, 0.0f, kExitZ, 0.0f});
-    gl::Buffer in = gl::Buffer::create(), out = gl::Buffer::create();
-    glNamedBufferStorage(in.id(), static_cast<GLsizeiptr>(points.size() * sizeof(float)), points.data(), 0);
-    glNamedBufferStorage(out.id(), static_cast<GLsizeiptr>(points.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
-    glUseProgram(program_);
     const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     glProgramUniformMatrix4fv(program_, glGetUniformLocation(program_, "u_light_view_proj"), 1, GL_FALSE, identity);
     glProgramUniform1f(program_, glGetUniformLocation(program_, "u_light_texel_world"), kTexel);
     glProgramUniform2f(program_, glGetUniformLocation(program_, "u_light_near_far"), 0.0f, 10.0f);
     glProgramUniform1f(program_, glGetUniformLocation(program_, "u_chord_decay"), kDecay);
     glBindTextureUnit(0, map.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    gl::dispatchCompute(static_cast<GLuint>(xs.size()), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> result(points.size());
-    glGetNamedBufferSubData(out.id(), 0, static_cast<GLsizeiptr>(result.size() * sizeof(float)), result.data());
-    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    const std::vector<float> result = test::runPerVec4(program_, points);
     std::vector<std::array<float, 2>> r;
     for (size_t i = 0; i < xs.size(); ++i) r.push_back({result[4 * i], result[4 * i + 1]});
     return r;
   }
 
-  GLuint program_ = 0;
 };
 
 // The lid rim's case: left of x = 0 the light entered a surface 1 unit before the points (the

@@ -70,21 +70,6 @@ const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // visibility).
 const float BOUNCE_LOD_FINER = 3.0;
 
-// From this ring outward each sample reads its sector at two radii, 1.25 and 1.75 of the ring's
-// inner radius r0 (the middles of the ring's inner and outer halves), and stands for their mean
-// (bounce_read_pair): the ring's radial extent r0 is read at two points instead of one at 1.5 r0,
-// which striped the first bounce across buddha-side's robe where the rings' radii cross the folds
-// (0.5-2x Cycles'; docs/quality.md, "Twenty-seventh session: why the first bounce is misplaced").
-// Only the outer two rings (16-64 texels of the map's finest level from the point): nearer, a
-// pair mixes thin parts (the teapot's handle and knob, a few texels wide in the light's view) with
-// what lies beside them. Measured over four phases of the pattern (docs/quality.md, "Twenty-seventh
-// session: the outer rings read at two radii"): the ten scenes' mean +0.0007, buddha-side +0.006.
-const int BOUNCE_PAIR_FROM_RING = 4;
-// A pair whose two points are further apart along the light than 2x across it straddles a depth
-// edge of the light's view (a part in front of another): their mean would lie between the parts,
-// so the inner point alone stands for the sector (as one read at a fine level does, above).
-const float BOUNCE_PAIR_MAX_DEPTH_SLOPE = 2.0;
-
 // The glossy emitters' lobe: the light a sample reflects off its surface (Fresnel F of the entry
 // cosine, its weight a beside the normal: light_depth.frag.glsl) leaves around the mirror direction
 // of the sample's mean normal as a normalized Phong lobe (m + 1) / (2 PI) cos^m, m = BOUNCE_GLOSS.
@@ -132,29 +117,12 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
 // light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
 // (bounce_sample_lod; bilinear within the level: continuous in uv).
-// The map's (position x w, w) and (normal, a) for a sample at uv: one read, or where `duv` is not
-// zero the mean of the reads at uv - duv and uv + duv (BOUNCE_PAIR_FROM_RING) unless the two points
-// straddle a depth edge of the light's view (BOUNCE_PAIR_MAX_DEPTH_SLOPE), then the read at uv - duv.
-void bounce_read(vec2 uv, vec2 duv, float lod, out vec4 pw, out vec4 na) {
-  pw = textureLod(u_bounce_position, uv - duv, lod);  // mean of (position x w, w) over the level's texel
-  na = textureLod(u_bounce_normal, uv - duv, lod);  // mean of (normal, a)
-  if (duv == vec2(0.0)) return;  // per ring: the same branch for every texel
-  vec4 pw2 = textureLod(u_bounce_position, uv + duv, lod), na2 = textureLod(u_bounce_normal, uv + duv, lod);
-  if (pw.w > 0.0 && pw2.w > 0.0) {
-    vec3 x1 = pw.xyz / pw.w, g = pw2.xyz / pw2.w - x1, L = light_vector(x1);
-    float along = dot(g, L);
-    if (abs(along) > BOUNCE_PAIR_MAX_DEPTH_SLOPE * length(g - along * L)) return;
-  }
-  pw = 0.5 * (pw + pw2);  // an empty point (w = 0) halves the area the other stands for
-  na = 0.5 * (na + na2);
-}
-
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, vec2 duv, float texels, float lod, BounceStoneReceiver stone) {
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  vec4 pw, na;
-  bounce_read(uv, duv, lod, pw, na);
+  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
   if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
+  vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
   float nl = length(np);
   if (nl < 1e-4) return vec4(0.0);
@@ -208,7 +176,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   float inner = BOUNCE_RADIUS * exp2(-float(BOUNCE_RINGS));  // the centre sample's disk
   float centreTexels = PI * inner * inner * size * size;
   BounceStoneReceiver stone = bounce_stone_receiver(P, clip);  // once per receiver (bounce_through_stone.glsl)
-  sum += bounce_sample(P, N, R, centre, vec2(0.0), centreTexels, bounce_sample_lod(centreTexels, maxLod), stone);
+  sum += bounce_sample(P, N, R, centre, centreTexels, bounce_sample_lod(centreTexels, maxLod), stone);
   // Sample k of ring `ring` at angle 2 PI (k + turn + 0.381966 (ring + 1 + 4 - BOUNCE_RINGS)) /
   // BOUNCE_ANGLES: each ring turned 0.381966 of a step from the one inside it, counted so that the
   // outer four rings keep the angles they had when there were four (session 11): the new inner two
@@ -223,11 +191,10 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     float texels = dA * size * size, lod = bounce_sample_lod(texels, maxLod);
-    vec2 pairStep = ring >= BOUNCE_PAIR_FROM_RING ? vec2(0.25 * r0) : vec2(0.0);  // 1.25 r0 and 1.75 r0
     vec2 dir = ringDir;
     ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
-      sum += bounce_sample(P, N, R, centre + r * dir, pairStep * dir, texels, lod, stone);
+      sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, stone);
       dir = rotate2(dir, byStep);
     }
   }

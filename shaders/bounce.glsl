@@ -70,25 +70,6 @@ const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // visibility).
 const float BOUNCE_LOD_FINER = 3.0;
 
-// From this ring outward each sample reads its sector at two radii, 1.25 and 1.75 of the ring's
-// inner radius r0 (the middles of the ring's inner and outer halves), and stands for their mean
-// (bounce_sample_pair), at half the angles (each sample two sectors): the ring's radial extent is
-// read at two points instead of one at 1.5 r0, which striped the first bounce across buddha-side's
-// robe where the rings' radii cross the folds (0.5-2x Cycles'; docs/quality.md, "Twenty-seventh
-// session: why the first bounce is misplaced"), for the same number of reads. Only the outer two
-// rings (16-64 texels of the map's finest level from the point): nearer, a pair mixes thin parts
-// (the teapot's handle and knob, a few texels wide in the light's view) with what lies beside them.
-// Measured over four phases of the pattern (docs/quality.md, "Twenty-seventh session: the gather's
-// rings read at two radii"): the ten scenes' mean +0.0002, buddha-side +0.003, no scene below
-// -0.0008; the camera frame 1.5 M cheaper. Its own loop in bounce_gather: llvmpipe runs both sides
-// of a branch in the gather's loop (a per-ring choice of function cost 82 M more).
-const int BOUNCE_PAIR_FROM_RING = 4;
-// A pair whose two points are further apart along the light than 2x across it straddles a depth
-// edge of the light's view (a part in front of another, or a face steeper than 63 degrees to the
-// light): their mean would lie between the parts, so the inner point alone stands for the sector.
-// At 1x (45 degrees) buddha-side's gain is lost: the robe's folds are steep to the light.
-const float BOUNCE_PAIR_MAX_DEPTH_SLOPE = 2.0;
-
 // The glossy emitters' lobe: the light a sample reflects off its surface (Fresnel F of the entry
 // cosine, its weight a beside the normal: light_depth.frag.glsl) leaves around the mirror direction
 // of the sample's mean normal as a normalized Phong lobe (m + 1) / (2 PI) cos^m, m = BOUNCE_GLOSS.
@@ -136,9 +117,12 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
 // light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
 // (bounce_sample_lod; bilinear within the level: continuous in uv).
-// bounce_sample's emitter given its reads: pw the mean of (position x w, w), na of (normal, a).
-vec4 bounce_emitter(vec3 P, vec3 N, vec3 R, vec4 pw, vec4 na, float texels, BounceStoneReceiver stone) {
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
+  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
+  if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
+  vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
   float nl = length(np);
   if (nl < 1e-4) return vec4(0.0);
@@ -176,34 +160,6 @@ vec4 bounce_emitter(vec3 P, vec3 N, vec3 R, vec4 pw, vec4 na, float texels, Boun
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
 }
 
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
-  if (pw.w <= 0.0) return vec4(0.0);
-  return bounce_emitter(P, N, R, pw, textureLod(u_bounce_normal, uv, lod), texels, stone);  // (normal, a)
-}
-
-// The same for a sector read at uv - duv and uv + duv (BOUNCE_PAIR_FROM_RING): their mean, unless
-// the two points straddle a depth edge of the light's view (BOUNCE_PAIR_MAX_DEPTH_SLOPE), then the
-// inner point's; an empty point (w = 0) halves the area the other stands for.
-vec4 bounce_sample_pair(vec3 P, vec3 N, vec3 R, vec2 uv, vec2 duv, float texels, float lod, BounceStoneReceiver stone) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  vec4 pw = textureLod(u_bounce_position, uv - duv, lod), pw2 = textureLod(u_bounce_position, uv + duv, lod);
-  vec4 na = textureLod(u_bounce_normal, uv - duv, lod), na2 = textureLod(u_bounce_normal, uv + duv, lod);
-  bool edge = false;
-  if (pw.w > 0.0 && pw2.w > 0.0) {
-    vec3 x1 = pw.xyz / pw.w, g = pw2.xyz / pw2.w - x1, L = light_vector(x1);
-    float along = dot(g, L);
-    edge = abs(along) > BOUNCE_PAIR_MAX_DEPTH_SLOPE * length(g - along * L);
-  }
-  if (!edge) {
-    pw = 0.5 * (pw + pw2);
-    na = 0.5 * (na + na2);
-  }
-  if (pw.w <= 0.0) return vec4(0.0);
-  return bounce_emitter(P, N, R, pw, na, texels, stone);
-}
-
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
 // the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
@@ -230,7 +186,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   const vec2 byStep = vec2(cos(step), sin(step)), byRing = vec2(cos(0.381966 * step), sin(0.381966 * step));
   float phi0 = step * (turn + 0.381966 * float(1 + 4 - BOUNCE_RINGS));
   vec2 ringDir = vec2(cos(phi0), sin(phi0));
-  for (int ring = 0; ring < BOUNCE_PAIR_FROM_RING; ++ring) {
+  for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
@@ -240,20 +196,6 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
       sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, stone);
       dir = rotate2(dir, byStep);
-    }
-  }
-  // The outer rings: every other angle, each sample two sectors read at two radii (BOUNCE_PAIR_FROM_RING).
-  const vec2 byTwoSteps = vec2(cos(2.0 * step), sin(2.0 * step));
-  for (int ring = BOUNCE_PAIR_FROM_RING; ring < BOUNCE_RINGS; ++ring) {
-    float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
-    float r = 0.5 * (r0 + r1);
-    float dA = 2.0 * PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
-    float texels = dA * size * size, lod = bounce_sample_lod(texels, maxLod);
-    vec2 dir = ringDir;
-    ringDir = rotate2(ringDir, byRing);
-    for (int k = 0; k < BOUNCE_ANGLES / 2; ++k) {
-      sum += bounce_sample_pair(P, N, R, centre + r * dir, 0.25 * r0 * dir, texels, lod, stone);  // 1.25 r0, 1.75 r0
-      dir = rotate2(dir, byTwoSteps);
     }
   }
   // Radiosity albedo x E x w / A leaves the emitters; the receiver takes it in as diffuse light

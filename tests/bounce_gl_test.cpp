@@ -505,6 +505,47 @@ TEST_F(Bounce, ThinRadialEmitterAtEveryAngle) {
 
 namespace {
 
+// The wall and a strip of the plate beside it, x in [x0, x0 + w]: parallel to the wall, so in the
+// light's map (the light from above) it crosses the gather's rings along their radius.
+Mesh wallAndStrip(float x0, float w) {
+  Mesh m;
+  addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
+  addBox(m, {x0, kPlateTop - 0.2f, -1.0f}, {x0 + w, kPlateTop, 1.0f});
+  computeVertexNormals(m, 60.0f);
+  return m;
+}
+
+}  // namespace
+
+TEST_F(Bounce, StripAcrossTheOuterRingsAtEveryDistance) {
+  // A strip 0.05 wide stepped outward through the gather's ring 4 and into ring 5 (the light's map
+  // is 3.56 wide, so ring 4 spans 0.45-0.89 from the probe's projection at x = 0.1, ring 5
+  // 0.89-1.78): read at one radius per ring (1.5 r0, before session 27) the strip is found only
+  // near that radius, and got / model swings with its distance; read at two radii (bounce.glsl,
+  // BOUNCE_PAIR_FROM_RING) it is found across more of the ring. Checked: the RMS of got / model - 1
+  // over the twelve distances, 0.29 (0.50-1.33 of the model); at one radius 0.70 (0.08-2.19), which
+  // fails.
+  constexpr float kAlbedo = 0.8f, kH = 0.3f, kW = 0.05f;
+  const Scene s = cornerScene(kAlbedo, kH);
+  const glm::vec3 b = aroundTheProbe(renderedWallAlone(s), s, kH);
+  double sq = 0.0;
+  const int n = 12;
+  for (int i = 0; i < n; ++i) {
+    const float x0 = 0.5f + 0.05f * static_cast<float>(i);
+    Renderer with;
+    with.setMesh(wallAndStrip(x0, kW));
+    renderImage(with, s);
+    const double got = (aroundTheProbe(with.readHdr(), s, kH) - b).g;
+    const double ratio = got / (kAlbedo * kAlbedo * (41.0 / 42.0) * viewFactorOfPlate(kH, x0, x0 + kW));
+    std::cout << "[          ] strip at " << x0 << ": got / model " << ratio << "\n";
+    sq += (ratio - 1.0) * (ratio - 1.0) / n;
+  }
+  std::cout << "[          ] RMS of got / model - 1: " << std::sqrt(sq) << "\n";
+  EXPECT_LT(std::sqrt(sq), 0.45);
+}
+
+namespace {
+
 // The bar's light on the wall's face at the bounce pass's coarse texels' own pixels (texel i:
 // full-resolution pixel i x scale, where the upsample takes that texel alone), texels [i0, i1) x
 // [j0, j1) of the grid (j counted from the frame's bottom, as GL counts): with the bar at theta,

@@ -59,6 +59,11 @@ layout(binding = UNIT_LIGHTING_BOUNCE_NORMAL) uniform sampler2D u_bounce_normal;
 // holds nothing finer to read.
 const int BOUNCE_RINGS = 6;
 const int BOUNCE_ANGLES = 8;
+// From this ring out (4 and 5: 16-64 texels from the receiver) each sector is read at two radii
+// (bounce_sample_pair). Pairing rings 0-3 too gained nothing that held over the pattern's phases and
+// lost dragon-side 0.0058 (docs/quality.md, "Twenty-seventh session: the gather's rings read at two
+// radii").
+const int BOUNCE_PAIR_FROM_RING = 4;
 const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
 // Each sample is read BOUNCE_LOD_FINER mipmap levels finer than the level whose texel is its whole
 // sector (8^2 = 64 times fewer texels averaged): a surface point near the sector's middle stands
@@ -117,12 +122,11 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
 // light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
 // (bounce_sample_lod; bilinear within the level: continuous in uv).
-vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
-  vec4 pw = textureLod(u_bounce_position, uv, lod);  // mean of (position x w, w) over the level's texel
+// The emitter a sample read: pw, the mean of (position x w, w) over the texels it stands for; na,
+// the mean of (normal, a) (bounce_sample, bounce_sample_pair).
+vec4 bounce_from_emitter(vec3 P, vec3 N, vec3 R, vec4 pw, vec4 na, float texels, BounceStoneReceiver stone) {
   if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;
-  vec4 na = textureLod(u_bounce_normal, uv, lod);  // mean of (normal, a)
   vec3 np = na.xyz;
   float nl = length(np);
   if (nl < 1e-4) return vec4(0.0);
@@ -160,6 +164,42 @@ vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, Bou
   return falloff * vec4(diffuse, glossy * (A + 0.5 * Aa), glossy * Aa, mirrored);
 }
 
+vec4 bounce_sample(vec3 P, vec3 N, vec3 R, vec2 uv, float texels, float lod, BounceStoneReceiver stone) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
+  return bounce_from_emitter(P, N, R, textureLod(u_bounce_position, uv, lod), textureLod(u_bounce_normal, uv, lod),
+                             texels, stone);
+}
+
+// The outer rings' samples (bounce_gather, from BOUNCE_PAIR_FROM_RING on): the same sector read at two
+// radii, uv -+ duv (a quarter of the ring's inner radius along the sample's direction: 1.25 r0 and
+// 1.75 r0, the middles of the sector's inner and outer halves), and the two reads averaged. Read at
+// one radius (1.5 r0) a ring found an emitter only near that radius: across buddha-side's robe the
+// first bounce striped 0.5-2x Cycles' with the ring's distance, and four radii a ring (four times the
+// samples, +213 M instructions of the dragon's 800^2 camera frame) took the mean SSIM of the ten
+// reference scenes +0.0027 (docs/quality.md, "Twenty-seventh session: why the first bounce is
+// misplaced"). The pair is averaged only where its two points differ mainly across the light's
+// direction (one surface seen from the light, `along` at most twice `side`); where they differ mainly
+// along it they straddle a depth edge of the light's view (a part and the body behind it), whose mean
+// would be a point on neither, and the inner read alone stands for the sector. A read that saw
+// nothing (w = 0) averages in as nothing: the sector half empty.
+vec4 bounce_sample_pair(vec3 P, vec3 N, vec3 R, vec2 uv, vec2 duv, float texels, float lod, BounceStoneReceiver stone) {
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);  // off the map: no light
+  vec4 pw = textureLod(u_bounce_position, uv - duv, lod), pw2 = textureLod(u_bounce_position, uv + duv, lod);
+  vec4 na = textureLod(u_bounce_normal, uv - duv, lod), na2 = textureLod(u_bounce_normal, uv + duv, lod);
+  bool average = true;
+  if (pw.w > 0.0 && pw2.w > 0.0) {
+    vec3 g = pw2.xyz / pw2.w - pw.xyz / pw.w;
+    vec3 Lg = light_vector(pw.xyz / pw.w);
+    float along = abs(dot(g, Lg));
+    average = along <= 2.0 * length(g - dot(g, Lg) * Lg);
+  }
+  if (average) {
+    pw = 0.5 * (pw + pw2);
+    na = 0.5 * (na + na2);
+  }
+  return bounce_from_emitter(P, N, R, pw, na, texels, stone);
+}
+
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
 // the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
@@ -186,7 +226,7 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   const vec2 byStep = vec2(cos(step), sin(step)), byRing = vec2(cos(0.381966 * step), sin(0.381966 * step));
   float phi0 = step * (turn + 0.381966 * float(1 + 4 - BOUNCE_RINGS));
   vec2 ringDir = vec2(cos(phi0), sin(phi0));
-  for (int ring = 0; ring < BOUNCE_RINGS; ++ring) {
+  for (int ring = 0; ring < BOUNCE_PAIR_FROM_RING; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
     float r = 0.5 * (r0 + r1);  // the sectors' middle
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
@@ -195,6 +235,21 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
     ringDir = rotate2(ringDir, byRing);
     for (int k = 0; k < BOUNCE_ANGLES; ++k) {
       sum += bounce_sample(P, N, R, centre + r * dir, texels, lod, stone);
+      dir = rotate2(dir, byStep);
+    }
+  }
+  // The outer rings read each sector at two radii (bounce_sample_pair), in a loop of their own: in
+  // the loop above, a branch choosing the pair made every sample pay for it on llvmpipe (which runs
+  // both sides of a branch any lane takes): the camera frame +29 M against +10.9 M so.
+  for (int ring = BOUNCE_PAIR_FROM_RING; ring < BOUNCE_RINGS; ++ring) {
+    float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
+    float r = 0.5 * (r0 + r1);
+    float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
+    float texels = dA * size * size, lod = bounce_sample_lod(texels, maxLod);
+    vec2 dir = ringDir;
+    ringDir = rotate2(ringDir, byRing);
+    for (int k = 0; k < BOUNCE_ANGLES; ++k) {
+      sum += bounce_sample_pair(P, N, R, centre + r * dir, 0.25 * r0 * dir, texels, lod, stone);
       dir = rotate2(dir, byStep);
     }
   }

@@ -29,8 +29,9 @@
 //   entry) over BOUNCE_THICK_PART world units: 20 mm at the reference scenes' 100 mm a unit, where
 //   the slab passes 0.6 % of what it reflects. Measured on the ten reference scenes (session 28):
 //   every receiver tested (no gate), 0.1, 0.2 and 0.3 units within 0.00006 of each other in the
-//   mean (+0.00023 to +0.00029), buddha-back +0.0020 to +0.0021 with each; 0.2 the one that leaves
-//   dragon-back as it was. The gather reads no material parameter, so the gate is in world units:
+//   mean (+0.00023 to +0.00029), buddha-back +0.0020 to +0.0021 with each; 0.1 and 0.2 leave
+//   dragon-back as it was (no gate: -0.0002), 0.4 loses buddha-back's gain (its chest is thinner);
+//   0.2 kept for the slab's 20 mm. The gather reads no material parameter, so the gate is in world units:
 //   at other scales (mm per unit) it holds the reference scenes' thickness, not the slab's law;
 // - BOUNCE_STONE_POINTS points evenly spaced strictly inside the segment: a part thinner than the
 //   spacing between two points is stepped over (5 points measured no better than 3; the midpoint

@@ -21,7 +21,8 @@
 //   receives none. Since session 22 the camera-side gathers (which define BOUNCE_SCREEN_OCCLUSION
 //   and include bounce_screen_occlusion.glsl first) drop a sample whose way runs into stone next to
 //   the receiver, one point tested against the camera's depth buffer, and since session 23 a receiver in another
-//   part's light shadow takes no sample whose way crosses that part's stone (bounce_through_stone.glsl);
+//   part's light shadow (since session 28 also one on a part thick along the light) takes no sample
+//   whose way crosses that part's stone (bounce_through_stone.glsl);
 // - the emitter's albedo is the stone's base colour (u_pat_base_color, applied by the lighting
 //   pass: bounce_upsample.glsl), not the pattern at the emitter: the veins vary at the millimetre scale the bounce averages over;
 // - one bounce from the light's map; the further bounces (from stone lit by this one, which the
@@ -143,8 +144,9 @@ vec4 bounce_from_emitter(vec3 P, vec3 N, vec3 R, vec4 pw, vec4 na, float texels,
   // (bounce_screen_occlusion.glsl); after the cosines, so only samples that would bring light test it.
   if (bounce_occluded_near_receiver(P, xp)) return vec4(0.0);
 #endif
-  // A receiver in another part's shadow: no light through that part's stone (bounce_through_stone.glsl).
-  if (stone.behind && bounce_crosses_stone(P, stone, xp)) return vec4(0.0);
+  // A receiver in another part's shadow or on a thick part: no light through that part's stone
+  // (bounce_through_stone.glsl).
+  if (stone.tested && bounce_crosses_stone(P, stone, xp)) return vec4(0.0);
   float falloff = light_falloff(light_distance_of(xp));
   float diffuse = A * cosP * cosX / (r2 * (PI * r2 + A));
   // Glossy: flux (A + Aa / 2) F0 + Aa (1 - F0) (area x cos = w + a / 2) into the lobe around the

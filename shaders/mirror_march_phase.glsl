@@ -6,7 +6,7 @@
 // together -- teapot-back's handle arm mirrored in the body beside it, Cycles' one-pixel line of
 // glossy indirect light there, was met by 0.19-0.31 of the 800^2 pixels of the line's 200^2 pixels
 // (the rest escaped past it), and the picture's SSIM moved 0.9433 ... 0.9485 as one phase for all
-// texels went 0 ... 7/8 (docs/quality.md, "Twenty-eighth session: the mirror march's phase").
+// texels went 0 ... 7/8 (docs/quality.md, "Twenty-eighth session: ... the screen march's fixed phase").
 // A start stratified over the texels turns that aliasing into a fine dither that the pixel's
 // supersamples (and the eye) average: the phase of a 4 x 4 ordered-dither (Bayer) matrix, each of
 // the 16 offsets (k + 0.5) / 16 once in every aligned 4 x 4 block of texels, and four far-apart

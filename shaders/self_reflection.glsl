@@ -18,9 +18,10 @@
 // Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
 // JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at
 // SELF_REFLECTION_STEPS points spaced geometrically (each SELF_REFLECTION_GROWTH times the last,
-// from SELF_REFLECTION_FIRST: the mesh is normalised to 2 units across, mesh.cpp, so the last
-// point is 0.62 units out, a third of the object, and the points are densest near P, where the
-// creases are), stepped in clip space (the projection is linear in homogeneous coordinates). The
+// from SELF_REFLECTION_FIRST, slid by up to a step by the texel's phase, mirror_march_phase.glsl:
+// the mesh is normalised to 2 units across, mesh.cpp, so the last point is 0.62-1.07 units out,
+// a third to a half of the object, and the points are densest near P, where the creases are),
+// stepped in clip space (the projection is linear in homogeneous coordinates). The
 // first point behind the depth buffer's surface ends it: a hit where that surface lies within the
 // last step (plus two pixels' footprint) of the point, else the ray passed behind a part (no light);
 // a hit's step is then bisected to the crossing (self_reflection_refined, since session 25).

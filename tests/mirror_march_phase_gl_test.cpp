@@ -1,7 +1,7 @@
 // shaders/mirror_march_phase.glsl: where along its geometric steps each lighting texel's screen-space
 // mirror march starts. With one fixed start the rays of a band of texels step over a thin part
 // together (teapot-back's handle arm mirrored in its body, docs/quality.md, "Twenty-eighth session:
-// the mirror march's phase"); the start is stratified over the texels instead, a 4 x 4 ordered
+// ... the screen march's fixed phase"); the start is stratified over the texels instead, a 4 x 4 ordered
 // dither. Checked on the function itself, compiled into a compute shader: every aligned 4 x 4 block
 // of texels holds the 16 offsets (k + 0.5) / 16 once, and every aligned 2 x 2 block four of them a
 // quarter of a step apart (the texels one pixel of the 200^2 measurement covers at 800^2).

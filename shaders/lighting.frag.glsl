@@ -74,6 +74,7 @@ float thickness_at(vec3 p) {
 #include "bounce_upsample.glsl"
 #include "bounce_entry.glsl"
 #include "self_reflection.glsl"
+#include "mirror_march_phase.glsl"
 #include "transmission_chord.glsl"  // the four texels of the light's map; the transmission's chord
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
@@ -607,7 +608,7 @@ void main() {
   vec4 hidden = vec4(0.0);
   if (u_mode == MODE_MARBLE) {
     vec3 V = normalize(u_camera_pos - P);
-    if (stone) hit = self_reflection_hit(px, depth, P, N, V);
+    if (stone) hit = self_reflection_hit(px, depth, P, N, V, mirror_march_phase(ivec2(gl_FragCoord.xy)));
     // Only a ray that comes nearer the light can cross an exit face from behind it: the distance
     // to a point light along a ray is convex in t (along a directional light's travel, linear), so
     // where it grows at P (R.L <= 0) it grows all the way, and the march is skipped, exactly.

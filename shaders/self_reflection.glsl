@@ -18,9 +18,10 @@
 // Screen-space ray marching (McGuire & Mara 2014, "Efficient GPU screen-space ray tracing",
 // JCGT 3(4)): from the surface point P along the view's mirror direction R = reflect(-V, N), at
 // SELF_REFLECTION_STEPS points spaced geometrically (each SELF_REFLECTION_GROWTH times the last,
-// from SELF_REFLECTION_FIRST: the mesh is normalised to 2 units across, mesh.cpp, so the last
-// point is 0.62 units out, a third of the object, and the points are densest near P, where the
-// creases are), stepped in clip space (the projection is linear in homogeneous coordinates). The
+// from SELF_REFLECTION_FIRST, slid by up to a step by the texel's phase, mirror_march_phase.glsl:
+// the mesh is normalised to 2 units across, mesh.cpp, so the last point is 0.62-1.07 units out,
+// a third to a half of the object, and the points are densest near P, where the creases are),
+// stepped in clip space (the projection is linear in homogeneous coordinates). The
 // first point behind the depth buffer's surface ends it: a hit where that surface lies within the
 // last step (plus two pixels' footprint) of the point, else the ray passed behind a part (no light);
 // a hit's step is then bisected to the crossing (self_reflection_refined, since session 25).
@@ -104,15 +105,17 @@ ivec2 self_reflection_refined(ivec2 px, ivec2 size, vec4 clipP, vec4 clipR, floa
 // The pixel whose surface P's mirror ray meets, or ivec2(-1) where it meets none the camera sees
 // (it leaves the screen or passes behind a part), or SELF_REFLECTION_ESCAPED where it runs out of
 // steps with every point in front of the depth buffer. px: P's pixel; depth: its depth-buffer
-// value; V: toward the camera.
-ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V) {
+// value; V: toward the camera; phase (0 ... 1): the points slid by that fraction of a step, the
+// first at SELF_REFLECTION_FIRST x SELF_REFLECTION_GROWTH^phase (mirror_march_phase.glsl: a
+// start stratified over the texels, so that their rays do not step over a thin part together).
+ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float phase) {
   ivec2 size = textureSize(u_depth, 0);
   // One pixel's footprint at P, for the hit's tolerance.
   float pixel = distance(surface_point((vec2(px) + vec2(1.5, 0.5)) / vec2(size), depth), P);
   vec3 R = reflect(-V, N);
   // The ray in clip space: the projection is linear in homogeneous coordinates.
   vec4 clipP = u_view_proj * vec4(P, 1.0), clipR = u_view_proj * vec4(R, 0.0);
-  float t = SELF_REFLECTION_FIRST, previous = 0.0;
+  float t = SELF_REFLECTION_FIRST * pow(SELF_REFLECTION_GROWTH, phase), previous = 0.0;
   // The hit's pixel, bisected after the loop: llvmpipe runs a branch for its whole block of lanes
   // where any lane takes it, so inside the loop the bisection ran at each step where some lane hit
   // (the camera frame's lighting pass +15.4 M instructions on the dragon at 800^2, against +2.2 M here;

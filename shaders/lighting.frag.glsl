@@ -169,6 +169,7 @@ const int GLOW_ANGLES = 8;
 const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad reads a quarter of a ring
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
+const float DISC_TAP_RADIUS = 0.35355;  // the centre disc's area-median radius over S: (S / 2) / sqrt(2)
 
 // The gather's scale S for a chord s0 (scene units).
 float glow_scale(float s0) {
@@ -265,10 +266,22 @@ vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2
   // The centre disc (radius S / 2 round the foot, at depth p), a quarter of it here: the quad's
   // sharing adds four quarters (or scales what it takes by 4 / quarters taken) as for the rings.
   // A branch the quad takes together (`gathers` is the quad's, glow_rings_shared).
+  // The disc is read at the exit's own chord, as if stone filled all of it; where the part seen from
+  // the light is narrower than the disc (a flank beside the light's silhouette, a fin, a rim), only
+  // the covered share has entries. Each quarter takes its share from one tap of its own at the
+  // disc's area-median radius (S / (2 sqrt 2)), at the quarter's diagonal angle: e.z, the share of
+  // the light's map there that saw stone (0 beyond the light's silhouette), as the rings' taps
+  // count theirs, so the quad's four quarters give the disc times the mean of four taps. Exact
+  // where the disc is all stone or all air at each tap's quarter (a rod's or sphere's middle: the
+  // taps at 0.71 of the radius fall inside, the same light as before); coarse in between (four
+  // taps; docs/quality.md, "Twenty-eighth session: the transmission through the stone").
   float mm = u_mm_per_unit;
   vec3 sum = vec3(0.0);
   if (gathers) {
-    sum = 0.25 * cos0 * principled_entry(cos0) *
+    float phi = (float(lane) + 0.5) * (0.5 * PI);
+    vec2 u = frame.xy + DISC_TAP_RADIUS * S * (squash * vec2(cos(phi), sin(phi)));
+    float covered = light_entry_at(P_in + u.x * t1 + u.y * t2).z;
+    sum = 0.25 * covered * cos0 * principled_entry(cos0) *
           (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
   }
   // One loop over the taps, not rings x angles, to the count the quad reads: llvmpipe stops a loop

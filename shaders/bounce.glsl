@@ -121,10 +121,10 @@ float bounce_sample_lod(float texels, float maxLod) { return clamp(0.5 * log2(te
 // x, diffuse (times the albedo later); y, z, glossy (times F0 and 1 - F0 later: Schlick's
 // F0 + (1 - F0)(1 - cos)^5 split by what depends on the material); w, the radiance P's specular
 // layer reflects toward the camera (R: the view's mirror direction at P) of the emitters' diffuse
-// light, before the emitters' albedo and P's Fresnel factor. Read at level `lod`
-// (bounce_sample_lod; bilinear within the level: continuous in uv).
+// light, before the emitters' albedo and P's Fresnel factor.
 // The emitter a sample read: pw, the mean of (position x w, w) over the texels it stands for; na,
-// the mean of (normal, a) (bounce_sample, bounce_sample_pair).
+// the mean of (normal, a). Its callers (bounce_sample, bounce_sample_pair) read them at level
+// `lod` (bounce_sample_lod; bilinear within the level: continuous in uv).
 vec4 bounce_from_emitter(vec3 P, vec3 N, vec3 R, vec4 pw, vec4 na, float texels, BounceStoneReceiver stone) {
   if (pw.w <= 0.0) return vec4(0.0);
   vec3 xp = pw.xyz / pw.w;

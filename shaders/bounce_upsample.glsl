@@ -34,7 +34,9 @@ vec3 marble_bounce(vec3 P, vec3 N, ivec2 px, float mirrored) {
   // was refined or, for a coarse sample's own texel, has a refined neighbour; from the coarse grid
   // elsewhere, exactly as before the refinement. One upsample either way, its grid chosen per texel.
   BounceGrid fine = bounce_refined_grid();
-  bool refined = nearest_texel(u_bounce, fine.origin + min(px / fine.scale, fine.last)).a >= 0.0;  // GL_NEAREST
+  // px / fine.scale as a shift (the scale is 2 or 4, bounceScale / 2; px >= 0): llvmpipe divides
+  // an ivec2 by a uniform lane by lane (-0.27 M instructions of the dragon's 800^2 camera frame).
+  bool refined = nearest_texel(u_bounce, fine.origin + min(px >> findLSB(fine.scale), fine.last)).a >= 0.0;  // GL_NEAREST
   vec4 b = bounce_bilateral_in(u_bounce, refined ? fine : bounce_coarse_grid(), P, N, px);
   float F0 = f0_from_ior(u_ior).x;
   // The mirrored part: radiance emitters' albedo x b.a x F at the view's cosine. It is reflected

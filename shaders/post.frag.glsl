@@ -127,7 +127,7 @@ vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 a
     // The blur texel on the hit's own surface (mirror_hit_light.glsl): the nearest one unless its
     // view depth lies farther from the hit's than one surface's (upsample_blurred's tolerance).
     ivec2 texel = min(nearest_blur_texel(hit), textureSize(u_blurred, 0) - 1);
-    float hit_depth = view_depth(texelFetch(u_depth, hit, 0).r);
+    float hit_depth = view_depth(nearest_texel(u_depth, hit).r);  // GL_NEAREST, hit on screen
     light += fresnel_dielectric(max(dot(N, V), 0.0), u_ior) *
              mirror_hit_light(u_blurred, texel, hit_depth, same_surface_tolerance_mm(hit_depth) / u_mm_per_unit);
   }

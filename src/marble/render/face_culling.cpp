@@ -1,5 +1,7 @@
 #include "marble/render/face_culling.h"
 
+#include "marble/render/screen_cull.h"
+
 namespace marble {
 
 GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj, const glm::vec3& boundsMin,
@@ -29,6 +31,31 @@ void cullFacesHiddenFromEye(bool enabled, const GpuMesh& mesh, const glm::mat4& 
   if (hidden == GL_NONE) return;
   glEnable(GL_CULL_FACE);
   glCullFace(hidden);
+}
+
+void HiddenFaceDraw::prepare(bool enabled, bool onCpu, const GpuMesh& mesh, const glm::mat4& modelViewProj, int width,
+                             int height) {
+  const GLenum hidden =
+      enabled ? facesHiddenFromEye(mesh.winding(), modelViewProj, mesh.boundsMin(), mesh.boundsMax()) : GLenum{GL_NONE};
+  subset_ = false;
+  if (hidden == GL_NONE) return;
+  glEnable(GL_CULL_FACE);
+  glCullFace(hidden);
+  if (!onCpu) return;
+  uint32_t* kept = mesh.mapSubset();
+  if (!kept) return;  // not mapped: the whole mesh, GL culls alone
+  keptTriangles_ = trianglesGlMayDraw(mesh.screenCullMesh(), modelViewProj, width, height,
+                                      hidden == GL_BACK ? CulledSense::Clockwise : CulledSense::CounterClockwise, kept,
+                                      scratch_);
+  mesh.unmapSubset();
+  subset_ = true;
+}
+
+void HiddenFaceDraw::draw(const GpuMesh& mesh) const {
+  if (subset_)
+    mesh.drawSubset(3 * keptTriangles_);
+  else
+    mesh.draw();
 }
 
 }  // namespace marble

@@ -19,6 +19,9 @@
 // on the full meshes; from their lights, the simplified proxies show 2-10 texels of 1024^2, the
 // first hit moved by at most 6.6e-4 units, within the proxy's own half-texel error: docs/performance.md,
 // "... the light's passes cull ...").
+#include <cstddef>
+#include <vector>
+
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
@@ -39,5 +42,23 @@ GLenum facesHiddenFromEye(SurfaceWinding winding, const glm::mat4& modelViewProj
 // counter-clockwise); else leaves culling as it is (off, as every pass's state set leaves it). The
 // caller turns it off after its draws, since the other passes' state assumes it off.
 void cullFacesHiddenFromEye(bool enabled, const GpuMesh& mesh, const glm::mat4& modelViewProj);
+
+// cullFacesHiddenFromEye, and the draws after it without the triangles GL's culling would discard
+// for certain (render/screen_cull.h): the same triangles reach the rasterizer in the same order,
+// the vertex stage and setup of the others are saved. Reuses its memory from frame to frame.
+class HiddenFaceDraw {
+public:
+  // Turns culling on as cullFacesHiddenFromEye(enabled, ...); where it did and `onCpu`, chooses
+  // the triangles to draw for a viewport of width x height pixels (for several viewports, the
+  // smallest: its slack in its pixels covers the larger ones' snapping too).
+  void prepare(bool enabled, bool onCpu, const GpuMesh& mesh, const glm::mat4& modelViewProj, int width, int height);
+  // The mesh, or the triangles prepare chose.
+  void draw(const GpuMesh& mesh) const;
+
+private:
+  bool subset_ = false;
+  size_t keptTriangles_ = 0;  // in the mesh's subset buffer (GpuMesh::mapSubset)
+  std::vector<float> scratch_;
+};
 
 }  // namespace marble

@@ -49,8 +49,8 @@ void GeometryPass::run(const GpuMesh& mesh, const glm::mat4& model, const Camera
   program_.set("u_camera_position", camera.position);
   program_.set("u_valid_reflection", validReflection ? 1 : 0);
   glUseProgram(program_.id());
-  cullFacesHiddenFromEye(cullsHiddenFaces_, mesh, camera.viewProj * model);
-  mesh.draw();
+  hiddenFaceDraw_.prepare(cullsHiddenFaces_, cullsOnCpu_, mesh, camera.viewProj * model, width_, height_);
+  hiddenFaceDraw_.draw(mesh);
   glDisable(GL_CULL_FACE);  // the other passes' state (gl::set*PassState) assumes it off
   timer_.end();
 }

@@ -7,6 +7,7 @@
 //   depth   DEPTH32F       4 bytes  (position is reconstructed from it)
 // The albedo (RGBA8, 4 bytes) is added by the AlbedoPass.
 #include "marble/gl/program.h"
+#include "marble/render/face_culling.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/pass_timer.h"
 #include "marble/render/view_setup.h"
@@ -23,6 +24,9 @@ public:
   void run(const GpuMesh& mesh, const glm::mat4& model, const CameraMatrices& camera, bool validReflection);
   // For tests: whether hidden faces are culled (on by default).
   void setCullsHiddenFaces(bool on) { cullsHiddenFaces_ = on; }
+  // For tests: whether the triangles GL's culling would discard are first dropped on the CPU
+  // (render/screen_cull.h; on by default, only where hidden faces are culled).
+  void setCullsOnCpu(bool on) { cullsOnCpu_ = on; }
   GLuint normalTexture() const { return normal_.id(); }
   // The normal for the reflection terms: the bent one where the last run stored it, else the normal.
   GLuint specularNormalTexture() const { return validReflection_ ? specularNormal_.id() : normal_.id(); }
@@ -38,6 +42,8 @@ private:
   bool validReflection_ = false;
   bool drawBuffersSet_ = false;  // fbo_'s draw buffers match validReflection_
   bool cullsHiddenFaces_ = true;
+  bool cullsOnCpu_ = true;
+  HiddenFaceDraw hiddenFaceDraw_;
   PassTimer timer_;
 };
 

@@ -1,8 +1,12 @@
 #pragma once
-// A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer.
+// A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer. The
+// positions and indices stay on the CPU too, for the mesh passes' cull before GL (screen_cull.h).
+#include <cstdint>
+
 #include "marble/gl/handles.h"
 #include "marble/mesh/closed_surface.h"
 #include "marble/mesh/mesh.h"
+#include "marble/render/screen_cull.h"
 
 namespace marble {
 
@@ -11,6 +15,13 @@ public:
   GpuMesh() = default;
   explicit GpuMesh(const Mesh& mesh);
   void draw() const;
+  // A second index buffer of the mesh's size, for a subset of its triangles (screen_cull.h):
+  // mapSubset gives it to be written (write only, its old contents invalidated), unmapSubset
+  // hands it back, drawSubset draws its first `count` indices (at most the mesh's own count).
+  uint32_t* mapSubset() const;
+  void unmapSubset() const;
+  void drawSubset(size_t count) const;
+  const ScreenCullMesh& screenCullMesh() const { return screenCull_; }
   size_t triangleCount() const { return indexCount_ / 3; }
   size_t bytes() const { return bytes_; }
   bool empty() const { return indexCount_ == 0; }
@@ -25,7 +36,8 @@ public:
   SurfaceWinding winding() const { return winding_; }
 
 private:
-  gl::Buffer vertices_, indices_;
+  gl::Buffer vertices_, indices_, subsetIndices_;
+  ScreenCullMesh screenCull_;
   gl::VertexArray vao_;
   GLsizei indexCount_ = 0;
   size_t bytes_ = 0;

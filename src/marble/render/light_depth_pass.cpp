@@ -47,7 +47,10 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   // Both faces where the mesh may show either to the light (a mesh with holes must still block
   // it); else only those facing it: the nearest surface is the same (face_culling.h).
   gl::setMeshPassState();
-  cullFacesHiddenFromEye(cullsHiddenFaces_, mesh, light.viewProj * model);
+  // The triangles GL culls are dropped before it (face_culling.h, HiddenFaceDraw), chosen once
+  // for both maps at the smaller one's size.
+  const int smaller = std::min(m.size, m.bounceSize);
+  hiddenFaceDraw_.prepare(cullsHiddenFaces_, true, mesh, light.viewProj * model, smaller, smaller);
   // "Nothing hit": a distance beyond every surface, no light entering.
   const float farValue[4] = {light.far + 1e3f, 0.0f, 0.0f, 0.0f};
   gl::clearFramebuffer(m.fbo.id(), GL_COLOR, 0, farValue);
@@ -55,7 +58,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   gl::clearFramebuffer(m.fbo.id(), GL_DEPTH, 0, &one);
   setLightViewUniforms(program_, model, light);
   glUseProgram(program_.id());
-  mesh.draw();
+  hiddenFaceDraw_.draw(mesh);
   // The reflective shadow map: nothing there, nothing re-emitted (w = 0).
   glBindFramebuffer(GL_FRAMEBUFFER, m.bounceFbo.id());
   glViewport(0, 0, m.bounceSize, m.bounceSize);
@@ -63,7 +66,7 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   gl::clearFramebuffer(m.bounceFbo.id(), GL_COLOR, 1, zero);
   gl::clearFramebuffer(m.bounceFbo.id(), GL_COLOR, 2, zero);
   gl::clearFramebuffer(m.bounceFbo.id(), GL_DEPTH, 0, &one);
-  mesh.draw();
+  hiddenFaceDraw_.draw(mesh);
   glDisable(GL_CULL_FACE);  // the layers draw both faces, and the other passes assume it off
   glGenerateTextureMipmap(m.bouncePosition.id());
   glGenerateTextureMipmap(m.bounceNormal.id());

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "marble/gl/program.h"
+#include "marble/render/face_culling.h"
 #include "marble/render/gpu_mesh.h"
 #include "marble/render/light_maps.h"
 #include "marble/render/pass_timer.h"
@@ -56,6 +57,7 @@ private:
   const LightMaps& maps() const { return reducedInUse_ ? *reduced_ : full_; }
   LightMaps& maps() { return reducedInUse_ ? *reduced_ : full_; }
   bool cullsHiddenFaces_ = true;
+  HiddenFaceDraw hiddenFaceDraw_;
   PassTimer timer_;
 };
 

@@ -94,14 +94,16 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   // again only when they change, not each time the camera or the light moves.
   if (!slabFor_ || slabFor_->first != m.sigma_a_mm || slabFor_->second != m.sigma_s_mm) {
     slab_ = slabTransportFor(m);
+    // The transmission's chord across an edge of the light's map (transmission_chord.glsl): its
+    // decay per mm, kept above 0.001 (a stone that absorbs nothing, where it is the texels' mean
+    // chord).
+    chordDecayMm_ = std::max(diffusionAttenuationMm(m), 1.0e-3f);
     slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
   }
   glProgramUniform3fv(p.id(), p.location("u_slab_ln_t"), kSlabTransportNodes, &slab_.lnT[0].x);
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
-  // The transmission's chord across an edge of the light's map (transmission_chord.glsl); kept
-  // above 0.001 per mm (a stone that absorbs nothing), where it is the texels' mean chord.
-  p.set("u_chord_decay", std::max(diffusionAttenuationMm(m), 1.0e-3f) * scene.mm_per_unit);
+  p.set("u_chord_decay", chordDecayMm_ * scene.mm_per_unit);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setBounceGridUniforms(p, in.bounceGrid);
   setEnvironmentUniforms(p, settings, environment);

@@ -58,6 +58,7 @@ private:
   gl::VertexArray emptyVao_;  // core profile needs a VAO bound even for attribute-less draws
   PassTimer timer_;
   SlabTransport slab_;  // the transmission's table for the scattering coefficients in slabFor_
+  float chordDecayMm_ = 0.0f;  // transmission_chord.glsl's decay per mm, for the coefficients in slabFor_
   std::optional<std::pair<glm::vec3, glm::vec3>> slabFor_;  // (sigma_a_mm, sigma_s_mm)
 };
 

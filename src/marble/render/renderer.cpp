@@ -585,6 +585,11 @@ void Renderer::setGeometryCullsHiddenFaces(bool on) {
   passes_->geometry.setCullsHiddenFaces(on);
   invalidate();
 }
+
+void Renderer::setGeometryCullsOnCpu(bool on) {
+  passes_->geometry.setCullsOnCpu(on);
+  invalidate();
+}
 void Renderer::setLightCullsHiddenFaces(bool on) {
   passes_->lightDepth.setCullsHiddenFaces(on);
   invalidate();

@@ -161,6 +161,9 @@ public:
   // For tests: whether the geometry pass culls the faces no camera ray meets first
   // (GeometryPass::setCullsHiddenFaces; on by default).
   void setGeometryCullsHiddenFaces(bool on);
+  // For tests: whether the geometry pass drops on the CPU the triangles GL's culling would
+  // discard (GeometryPass::setCullsOnCpu, render/screen_cull.h; on by default).
+  void setGeometryCullsOnCpu(bool on);
   // For tests: whether the light-depth pass's depth map and reflective shadow map cull the faces
   // no ray from the light meets first (LightDepthPass::setCullsHiddenFaces; on by default).
   void setLightCullsHiddenFaces(bool on);

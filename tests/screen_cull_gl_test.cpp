@@ -14,6 +14,8 @@
 #include "dense_mesh.h"
 #include "gl_support.h"
 #include "principled_stone.h"
+#include "marble/gl/software_rasterizer.h"
+#include "marble/render/gpu_mesh.h"
 #include "marble/render/screen_cull.h"
 
 using namespace marble;
@@ -150,6 +152,8 @@ ImageRGBF frame(Renderer& r, const Scene& s, const glm::mat4& model) {
 
 void expectTheSameFrame(const glm::mat4& model) {
   glContext();
+  // Elsewhere the mesh prepares no cull before GL, and both renderers would be GL's alone.
+  if (!gl::rasterizesInSoftware()) GTEST_SKIP() << "the cull before GL runs only on a software rasterizer";
   Scene s;
   s.render.width = 203;
   s.render.height = 151;
@@ -173,6 +177,13 @@ void expectTheSameFrame(const glm::mat4& model) {
 }
 
 }  // namespace
+
+TEST(ScreenCull, AMeshCullsOnTheCpuExactlyWhereGlRasterizesInSoftware) {
+  glContext();
+  const GpuMesh mesh(builtinMesh(kDefaultBuiltinMesh));
+  EXPECT_EQ(mesh.cullsOnCpu(), gl::rasterizesInSoftware());
+  EXPECT_EQ(mesh.screenCullMesh().indices.size(), mesh.cullsOnCpu() ? 3 * mesh.triangleCount() : 0u);
+}
 
 TEST(ScreenCull, TheSculptureIsTheFrameGlCullsAlone) { expectTheSameFrame(glm::mat4(1.0f)); }
 

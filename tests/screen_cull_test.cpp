@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "marble/gl/software_rasterizer.h"
 #include "marble/render/screen_cull.h"
 
 namespace marble {
@@ -60,4 +61,15 @@ TEST(ScreenCull, KeepsTrianglesWithACornerOutsideTheViewVolume) {
 }
 
 }  // namespace
+TEST(SoftwareRasterizer, TellsMesasAndGooglesCpuRasterizersFromGpus) {
+  EXPECT_TRUE(gl::isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_TRUE(gl::isSoftwareRenderer("zink (llvmpipe (LLVM 15.0.6, 256 bits))"));
+  EXPECT_TRUE(gl::isSoftwareRenderer("softpipe"));
+  EXPECT_TRUE(gl::isSoftwareRenderer("Google SwiftShader"));
+  EXPECT_FALSE(gl::isSoftwareRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+  EXPECT_FALSE(gl::isSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6, DRM 3.52)"));
+  EXPECT_FALSE(gl::isSoftwareRenderer("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+  EXPECT_FALSE(gl::isSoftwareRenderer(nullptr));
+}
+
 }  // namespace marble

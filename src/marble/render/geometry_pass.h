@@ -25,7 +25,8 @@ public:
   // For tests: whether hidden faces are culled (on by default).
   void setCullsHiddenFaces(bool on) { cullsHiddenFaces_ = on; }
   // For tests: whether the triangles GL's culling would discard are first dropped on the CPU
-  // (render/screen_cull.h; on by default, only where hidden faces are culled).
+  // (render/screen_cull.h; on by default, only where hidden faces are culled and GL rasterizes in
+  // software: GpuMesh::cullsOnCpu).
   void setCullsOnCpu(bool on) { cullsOnCpu_ = on; }
   GLuint normalTexture() const { return normal_.id(); }
   // The normal for the reflection terms: the bent one where the last run stored it, else the normal.

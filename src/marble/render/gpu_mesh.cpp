@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "marble/gl/checked_calls.h"
+#include "marble/gl/software_rasterizer.h"
 
 namespace marble {
 
@@ -10,7 +11,6 @@ GpuMesh::GpuMesh(const Mesh& mesh)
     : vertices_(gl::Buffer::create()),
       indices_(gl::Buffer::create()),
       subsetIndices_(gl::Buffer::create()),
-      screenCull_(mesh),
       vao_(gl::VertexArray::create()) {
   std::vector<float> interleaved;
   interleaved.reserve(mesh.positions.size() * 6);
@@ -22,8 +22,14 @@ GpuMesh::GpuMesh(const Mesh& mesh)
   const auto ibytes = static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t));
   glNamedBufferStorage(vertices_.id(), vbytes, interleaved.data(), 0);
   glNamedBufferStorage(indices_.id(), ibytes, mesh.indices.data(), 0);
-  glNamedBufferStorage(subsetIndices_.id(), ibytes, nullptr, GL_MAP_WRITE_BIT);
-  bytes_ = static_cast<size_t>(vbytes + 2 * ibytes);  // the index buffer and the subset's
+  bytes_ = static_cast<size_t>(vbytes + ibytes);
+  // The cull before GL, only where GL rasterizes on the CPU (gl/software_rasterizer.h): its copy of
+  // the positions, indices and planes and the subset's index buffer are not made on a GPU.
+  if (gl::rasterizesInSoftware() && !mesh.indices.empty()) {
+    screenCull_ = ScreenCullMesh(mesh);
+    glNamedBufferStorage(subsetIndices_.id(), ibytes, nullptr, GL_MAP_WRITE_BIT);
+    bytes_ += static_cast<size_t>(ibytes);
+  }
   glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, 6 * sizeof(float));
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
   glEnableVertexArrayAttrib(vao_.id(), 0);
@@ -50,6 +56,7 @@ void GpuMesh::draw() const {
 }
 
 uint32_t* GpuMesh::mapSubset() const {
+  if (!cullsOnCpu()) return nullptr;
   // Written in place: no copy of the subset (a glBufferSubData of the dragon's 140,000 indices
   // was 0.66 M instructions of its camera frame).
   return static_cast<uint32_t*>(glMapNamedBufferRange(subsetIndices_.id(), 0,

@@ -1,6 +1,7 @@
 #pragma once
-// A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer. The
-// positions and indices stay on the CPU too, for the mesh passes' cull before GL (screen_cull.h).
+// A Mesh uploaded to the GPU once: interleaved position+normal and a 32-bit index buffer. Where GL
+// rasterizes in software, the positions and indices stay on the CPU too, for the mesh passes' cull
+// before GL (screen_cull.h, gl/software_rasterizer.h).
 #include <cstdint>
 
 #include "marble/gl/handles.h"
@@ -15,9 +16,12 @@ public:
   GpuMesh() = default;
   explicit GpuMesh(const Mesh& mesh);
   void draw() const;
-  // A second index buffer of the mesh's size, for a subset of its triangles (screen_cull.h):
-  // mapSubset gives it to be written (write only, its old contents invalidated), unmapSubset
-  // hands it back, drawSubset draws its first `count` indices (at most the mesh's own count).
+  // Whether the cull before GL is prepared (a software rasterizer, a mesh with triangles).
+  bool cullsOnCpu() const { return !screenCull_.indices.empty(); }
+  // Where cullsOnCpu, a second index buffer of the mesh's size, for a subset of its triangles
+  // (screen_cull.h): mapSubset gives it to be written (write only, its old contents invalidated;
+  // nullptr where there is none), unmapSubset hands it back, drawSubset draws its first `count`
+  // indices (at most the mesh's own count).
   uint32_t* mapSubset() const;
   void unmapSubset() const;
   void drawSubset(size_t count) const;

@@ -47,8 +47,8 @@ void LightDepthPass::run(const GpuMesh& mesh, const glm::mat4& model, const Ligh
   // Both faces where the mesh may show either to the light (a mesh with holes must still block
   // it); else only those facing it: the nearest surface is the same (face_culling.h).
   gl::setMeshPassState();
-  // The triangles GL culls are dropped before it (face_culling.h, HiddenFaceDraw), chosen once
-  // for both maps at the smaller one's size.
+  // The triangles GL culls are dropped before it where GL rasterizes in software (face_culling.h,
+  // HiddenFaceDraw; GpuMesh::cullsOnCpu), chosen once for both maps at the smaller one's size.
   const int smaller = std::min(m.size, m.bounceSize);
   hiddenFaceDraw_.prepare(cullsHiddenFaces_, true, mesh, light.viewProj * model, smaller, smaller);
   // "Nothing hit": a distance beyond every surface, no light entering.

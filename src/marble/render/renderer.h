@@ -162,7 +162,8 @@ public:
   // (GeometryPass::setCullsHiddenFaces; on by default).
   void setGeometryCullsHiddenFaces(bool on);
   // For tests: whether the geometry pass drops on the CPU the triangles GL's culling would
-  // discard (GeometryPass::setCullsOnCpu, render/screen_cull.h; on by default).
+  // discard (GeometryPass::setCullsOnCpu, render/screen_cull.h; on by default where GL rasterizes
+  // in software, gl/software_rasterizer.h).
   void setGeometryCullsOnCpu(bool on);
   // For tests: whether the light-depth pass's depth map and reflective shadow map cull the faces
   // no ray from the light meets first (LightDepthPass::setCullsHiddenFaces; on by default).

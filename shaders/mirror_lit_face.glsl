@@ -27,9 +27,13 @@
 const float MIRROR_LIT_FACE_GAP = 0.03;     // scene units behind the visible face
 const float MIRROR_LIT_FACE_TEXELS = 6.0;   // light-map texels from the light's entry surface
 
-// Whether the ray's point on the hit pixel, gap behind the visible face and below beyond the light's
-// entry surface (light_texel: the light map's texel in scene units), meets a lit face hidden there.
+// Whether the ray's point on the hit pixel, gap behind the visible face, has passed behind it.
+bool mirror_behind_visible_face(float gap) { return gap > MIRROR_LIT_FACE_GAP; }
+// Whether that point, below beyond the light's entry surface (light_texel: the light map's texel in
+// scene units), lies at the lit face.
+bool mirror_at_light_entry(float below, float light_texel) { return abs(below) < MIRROR_LIT_FACE_TEXELS * light_texel; }
+// Both: the ray meets a lit face hidden behind the visible one.
 bool mirror_meets_lit_face(float gap, float below, float light_texel) {
-  return gap > MIRROR_LIT_FACE_GAP && abs(below) < MIRROR_LIT_FACE_TEXELS * light_texel;
+  return mirror_behind_visible_face(gap) && mirror_at_light_entry(below, light_texel);
 }
 #endif

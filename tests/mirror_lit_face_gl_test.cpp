@@ -2,10 +2,11 @@
 // but the ray has passed behind it into a face the camera cannot see, lit by the light (teapot-back's
 // shoulder and body edge mirroring the spout's and the handle arm's sides toward the body,
 // docs/quality.md, "Twenty-eighth session: ... the lit face behind the mirror hit"). Checked on the
-// function itself, compiled into a compute shader: the test that tells the hidden lit face from the
-// visible one by the ray point's two distances (behind the visible face, from the light's entry).
-// Negative control, checked by hand: mirror_meets_lit_face returning false (main's behaviour: the
-// visible face kept for every hit), rebuilt: TellsTheLitFaceBehindFromTheVisibleFace fails.
+// functions themselves, compiled into a compute shader: the test that tells the hidden lit face from
+// the visible one by the ray point's two distances (behind the visible face, from the light's entry),
+// and its two halves as the lighting pass runs them (the second only where the first holds).
+// Negative control, checked by hand: mirror_behind_visible_face returning false (main's behaviour:
+// the visible face kept for every hit), rebuilt: both tests fail.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -24,7 +25,8 @@ layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
 void main() {
   uint i = gl_GlobalInvocationID.x;
   vec4 q = queries[i];  // gap, below, the light map's texel
-  results[i] = vec4(mirror_meets_lit_face(q.x, q.y, q.z) ? 1.0 : 0.0, 0.0, 0.0, 0.0);
+  results[i] = vec4(mirror_meets_lit_face(q.x, q.y, q.z) ? 1.0 : 0.0,
+                    mirror_behind_visible_face(q.x) && mirror_at_light_entry(q.y, q.z) ? 1.0 : 0.0, 0.0, 0.0);
 }
 )";
 
@@ -48,6 +50,22 @@ TEST_F(MirrorLitFaceGlTest, TellsTheLitFaceBehindFromTheVisibleFace) {
   const std::vector<float> out = run(in);
   for (size_t i = 0; i < cases.size(); ++i)
     EXPECT_EQ(out[4 * i], cases[i].lit ? 1.0f : 0.0f) << "gap " << cases[i].gap << " below " << cases[i].below;
+}
+
+// The lighting pass tests the gap first and reads the light's map only behind the visible face: the
+// two halves together decide as the whole test does.
+TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
+  const float texel = 0.00338f;
+  std::vector<float> in;
+  for (float gap = 0.0f; gap < 0.08f; gap += 0.005f)
+    for (float below = -0.06f; below < 0.2f; below += 0.01f) in.insert(in.end(), {gap, below, texel, 1.0f});
+  const std::vector<float> out = run(in);
+  int lit = 0;
+  for (size_t i = 0; i < in.size() / 4; ++i) {
+    EXPECT_EQ(out[4 * i + 1], out[4 * i]) << "gap " << in[4 * i] << " below " << in[4 * i + 1];
+    lit += out[4 * i] > 0.5f ? 1 : 0;
+  }
+  EXPECT_GT(lit, 0);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // docs/quality.md, "Twenty-eighth session: ... the lit face behind the mirror hit"). Checked on the
 // functions themselves, compiled into a compute shader: the test that tells the hidden lit face from
 // the visible one by the ray point's two distances (behind the visible face, from the light's entry),
-// and its two halves as the lighting pass runs them (the second only where the first holds).
+// and its two halves, each a test of its own distance.
 // Negative control, checked by hand: mirror_behind_visible_face returning false (main's behaviour:
 // the visible face kept for every hit), rebuilt: both tests fail.
 #include <gtest/gtest.h>
@@ -52,8 +52,7 @@ TEST_F(MirrorLitFaceGlTest, TellsTheLitFaceBehindFromTheVisibleFace) {
     EXPECT_EQ(out[4 * i], cases[i].lit ? 1.0f : 0.0f) << "gap " << cases[i].gap << " below " << cases[i].below;
 }
 
-// The lighting pass tests the gap first and reads the light's map only behind the visible face: the
-// two halves together decide as the whole test does.
+// The two halves (behind the visible face; at the light's entry) together decide as the whole test.
 TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
   const float texel = 0.00338f;
   std::vector<float> in;

@@ -75,6 +75,7 @@ float thickness_at(vec3 p) {
 #include "bounce_entry.glsl"
 #include "self_reflection.glsl"
 #include "mirror_march_phase.glsl"
+#include "mirror_lit_face.glsl"
 #include "transmission_chord.glsl"  // the four texels of the light's map; the transmission's chord
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
@@ -618,15 +619,23 @@ void main() {
   // against the light's layers (hidden_mirror.glsl; its light added here), shared by the quad, so
   // before any texel returns.
   ivec2 hit = ivec2(-1);
+  float hit_t = 0.0;
   vec4 hidden = vec4(0.0);
   if (u_mode == MODE_MARBLE) {
     vec3 V = normalize(u_camera_pos - P);
-    if (stone) hit = self_reflection_hit(px, depth, P, N, V, mirror_march_phase(ivec2(gl_FragCoord.xy)));
+    if (stone) hit = self_reflection_hit(px, depth, P, N, V, mirror_march_phase(ivec2(gl_FragCoord.xy)), hit_t);
     // Only a ray that comes nearer the light can cross an exit face from behind it: the distance
     // to a point light along a ray is convex in t (along a directional light's travel, linear), so
     // where it grows at P (R.L <= 0) it grows all the way, and the march is skipped, exactly.
     vec3 R = reflect(-V, N);
     hidden = hidden_mirror_shared(stone, stone && hit.x < 0 && dot(R, light_vector(P)) > 0.0, P, R);
+    // Where the ray passed behind the visible face it hit into a lit face the camera cannot see, that
+    // face's light instead (hidden_mirror.glsl, hidden_lit_face_behind).
+    vec4 lit = hidden_lit_face_behind(hit, hit_t, P, R);
+    if (lit.a > 0.0) {
+      hidden = lit;
+      hit = ivec2(-1);
+    }
   }
   if (!stone) {
     // No surface: zero light (the linear HDR image and --hdr keep 0 there); the post pass

@@ -84,7 +84,8 @@ const float SELF_REFLECTION_ESCAPED_TAIL = 0.06;
 // crossing there; one in front moves the bracket on (a bisection of the crossing step, the usual
 // refinement of a screen-space march's hit).
 const int SELF_REFLECTION_REFINE = 4;
-ivec2 self_reflection_refined(ivec2 px, ivec2 size, vec4 clipP, vec4 clipR, float before, float behind, ivec2 q) {
+// behind: in, the step's far end; out, the ray's parameter at the crossing's point behind q's surface.
+ivec2 self_reflection_refined(ivec2 px, ivec2 size, vec4 clipP, vec4 clipR, float before, inout float behind, ivec2 q) {
   for (int b = 0; b < SELF_REFLECTION_REFINE; ++b) {
     float mid = 0.5 * (before + behind);
     vec4 clip = clipP + mid * clipR;
@@ -108,7 +109,10 @@ ivec2 self_reflection_refined(ivec2 px, ivec2 size, vec4 clipP, vec4 clipR, floa
 // value; V: toward the camera; phase (0 ... 1): the points slid by that fraction of a step, the
 // first at SELF_REFLECTION_FIRST x SELF_REFLECTION_GROWTH^phase (mirror_march_phase.glsl: a
 // start stratified over the texels, so that their rays do not step over a thin part together).
-ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float phase) {
+// hit_t: where the march hit, the ray's parameter at its point behind the hit pixel's surface
+// (mirror_lit_face.glsl reads how far behind); else 0.
+ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float phase, out float hit_t) {
+  hit_t = 0.0;
   ivec2 size = textureSize(u_depth, 0);
   // One pixel's footprint at P, for the hit's tolerance.
   float pixel = distance(surface_point((vec2(px) + vec2(1.5, 0.5)) / vec2(size), depth), P);
@@ -142,5 +146,7 @@ ivec2 self_reflection_hit(ivec2 px, float depth, vec3 P, vec3 N, vec3 V, float p
   }
   if (hit.x < 0) return SELF_REFLECTION_ESCAPED;  // every point in front of the depth buffer
   // The march hit: `previous` and `t` bracket the crossing.
-  return self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
+  hit = self_reflection_refined(px, size, clipP, clipR, previous, t, hit);
+  hit_t = t;
+  return hit;
 }

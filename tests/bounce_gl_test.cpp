@@ -707,14 +707,29 @@ namespace {
 // lit (the block's and eave's shadows fall toward the wall).
 constexpr float kFarBlockNear = 0.3f, kFarBlockFar = 0.5f, kFarBlockTop = kPlateTop + kHeight + 0.05f;
 constexpr float kEaveOut = 0.25f, kEaveLow = kPlateTop + kHeight + 0.1f, kTiltDeg = 20.0f;
-Mesh shadowedCorner(bool block, float plateEnd) {
+Mesh blockedCorner(bool eave, bool block, float plateEnd) {
   Mesh m;
   addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-  addBox(m, {kWall, kEaveLow, -1.0f}, {kEaveOut, kEaveLow + 0.1f, 1.0f});
+  if (eave) addBox(m, {kWall, kEaveLow, -1.0f}, {kEaveOut, kEaveLow + 0.1f, 1.0f});
   addBox(m, {kWall, kPlateTop - 0.2f, -1.0f}, {plateEnd, kPlateTop, 1.0f});
   if (block) addBox(m, {kFarBlockNear, kPlateTop, -1.0f}, {kFarBlockFar, kFarBlockTop, 1.0f});
   computeVertexNormals(m, 60.0f);
   return m;
+}
+
+// The light the plate beyond the block brings the probe at q (the picture with the plate less the
+// picture with it ending at kFarBlockFar), with the block and without it: with it, under a fifth.
+void expectTheBlockStopsThePlatesLight(const Scene& s, const glm::vec3& q, bool eave) {
+  const HdrPair blocked = renderHdrPair(s, blockedCorner(eave, true, 1.0f), blockedCorner(eave, true, kFarBlockFar));
+  const HdrPair open = renderHdrPair(s, blockedCorner(eave, false, 1.0f), blockedCorner(eave, false, kFarBlockFar));
+  const glm::vec3 throughTheBlock = linearRgbAround(blocked.first, s, q) - linearRgbAround(blocked.second, s, q);
+  const glm::vec3 unobstructed = linearRgbAround(open.first, s, q) - linearRgbAround(open.second, s, q);
+  std::cout << "[          ] the plate beyond the block brings " << throughTheBlock.g << " through it, "
+            << unobstructed.g << " without it (" << throughTheBlock.g / unobstructed.g << ")\n";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(unobstructed[c], 0.0f) << "channel " << c;
+    EXPECT_LT(throughTheBlock[c], 0.2f * unobstructed[c]) << "channel " << c;
+  }
 }
 }  // namespace
 
@@ -730,17 +745,7 @@ TEST_F(Bounce, NoneThroughAnotherPartsStoneInItsShadow) {
   s.light.position = {std::sin(t), std::cos(t), 0.0f};
   s.camera.position = {4.0f, probe(kHeight).y + 3.9f * 0.45f, 0.0f};
   s.camera.target = probe(kHeight);
-  const glm::vec3 q = probe(kHeight);
-  const HdrPair blocked = renderHdrPair(s, shadowedCorner(true, 1.0f), shadowedCorner(true, kFarBlockFar));
-  const HdrPair open = renderHdrPair(s, shadowedCorner(false, 1.0f), shadowedCorner(false, kFarBlockFar));
-  const glm::vec3 throughTheBlock = linearRgbAround(blocked.first, s, q) - linearRgbAround(blocked.second, s, q);
-  const glm::vec3 unobstructed = linearRgbAround(open.first, s, q) - linearRgbAround(open.second, s, q);
-  std::cout << "[          ] the plate beyond the block brings " << throughTheBlock.g << " through it, "
-            << unobstructed.g << " without it (" << throughTheBlock.g / unobstructed.g << ")\n";
-  for (int c = 0; c < 3; ++c) {
-    EXPECT_GT(unobstructed[c], 0.0f) << "channel " << c;
-    EXPECT_LT(throughTheBlock[c], 0.2f * unobstructed[c]) << "channel " << c;
-  }
+  expectTheBlockStopsThePlatesLight(s, probe(kHeight), true);
 }
 
 TEST_F(Bounce, TheLightThroughItsOwnPartStays) {
@@ -783,23 +788,5 @@ TEST_F(Bounce, NoneThroughTheStoneToAThickPartsDarkSide) {
   const float t = glm::radians(kDarkSideTiltDeg);
   s.light.position = {-std::sin(t), std::cos(t), 0.0f};
   s.camera.position = {4.0f, 2.5f, 0.0f};
-  const glm::vec3 q = probe(kHeight);
-  const auto darkSideCorner = [](bool block, float plateEnd) {
-    Mesh m;
-    addBox(m, {-kWall, kPlateTop, -1.0f}, {kWall, 1.0f, 1.0f});
-    addBox(m, {kWall, kPlateTop - 0.2f, -1.0f}, {plateEnd, kPlateTop, 1.0f});
-    if (block) addBox(m, {kFarBlockNear, kPlateTop, -1.0f}, {kFarBlockFar, kFarBlockTop, 1.0f});
-    computeVertexNormals(m, 60.0f);
-    return m;
-  };
-  const HdrPair blocked = renderHdrPair(s, darkSideCorner(true, 1.0f), darkSideCorner(true, kFarBlockFar));
-  const HdrPair open = renderHdrPair(s, darkSideCorner(false, 1.0f), darkSideCorner(false, kFarBlockFar));
-  const glm::vec3 throughTheBlock = linearRgbAround(blocked.first, s, q) - linearRgbAround(blocked.second, s, q);
-  const glm::vec3 unobstructed = linearRgbAround(open.first, s, q) - linearRgbAround(open.second, s, q);
-  std::cout << "[          ] the plate beyond the block brings " << throughTheBlock.g << " through it, "
-            << unobstructed.g << " without it (" << throughTheBlock.g / unobstructed.g << ")\n";
-  for (int c = 0; c < 3; ++c) {
-    EXPECT_GT(unobstructed[c], 0.0f) << "channel " << c;
-    EXPECT_LT(throughTheBlock[c], 0.2f * unobstructed[c]) << "channel " << c;
-  }
+  expectTheBlockStopsThePlatesLight(s, probe(kHeight), false);  // no eave: behind no other part
 }

@@ -4,6 +4,7 @@
 // render-to-image helper.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <utility>
@@ -51,12 +52,11 @@ inline HeadlessContext& glContext() {
   return *ctx;
 }
 
-// A compute program from one source string, for the tests that wrap a library file in a shader
-// of their own (pattern_gl_test, nearest_texel_gl_test): the compiler's log as a test failure and
-// 0 where it does not compile; a link failure is a test failure too. The caller deletes it.
-inline GLuint compileComputeProgram(const std::string& source) {
+// One shader stage from its source: the compiler's log as a test failure and 0 where it does not
+// compile. The caller deletes it.
+inline GLuint compileShaderStage(GLenum stage, const std::string& source) {
   const char* text = source.c_str();
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
@@ -64,17 +64,31 @@ inline GLuint compileComputeProgram(const std::string& source) {
   if (!ok) {
     char log[4096];
     glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    ADD_FAILURE() << "compute shader: " << log;
+    ADD_FAILURE() << "shader stage " << stage << ": " << log;
     glDeleteShader(shader);
     return 0;
   }
+  return shader;
+}
+
+// A program of the given compiled stages, which it deletes: a link failure is a test failure.
+inline GLuint linkTestProgram(std::initializer_list<GLuint> stages) {
   const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
+  for (GLuint stage : stages) glAttachShader(program, stage);
   glLinkProgram(program);
-  glDeleteShader(shader);
+  for (GLuint stage : stages) glDeleteShader(stage);
+  GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  EXPECT_TRUE(ok) << "compute program did not link";
+  EXPECT_TRUE(ok) << "test program did not link";
   return program;
+}
+
+// A compute program from one source string, for the tests that wrap a library file in a shader
+// of their own (pattern_gl_test, nearest_texel_gl_test): 0 where it does not compile, a compile or
+// link failure a test failure. The caller deletes it.
+inline GLuint compileComputeProgram(const std::string& source) {
+  const GLuint shader = compileShaderStage(GL_COMPUTE_SHADER, source);
+  return shader ? linkTestProgram({shader}) : 0;
 }
 
 // The fixture of the tests that wrap library shader files in a compute shader of their own

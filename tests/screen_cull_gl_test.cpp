@@ -23,41 +23,18 @@ using namespace marble::test;
 
 namespace {
 
-GLuint compileStage(GLenum stage, const char* source) {
-  const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    ADD_FAILURE() << log;
-  }
-  return shader;
-}
-
 // Counts each primitive's fragments (gl_PrimitiveID: the triangle's place in the draw, culled
 // ones included) in the storage buffer at binding 0.
 GLuint countingProgram() {
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, R"(#version 450 core
+  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, R"(#version 450 core
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_mvp;
 void main() { gl_Position = u_mvp * vec4(a_position, 1.0); })");
-  const GLuint fs = compileStage(GL_FRAGMENT_SHADER, R"(#version 450 core
+  const GLuint fs = compileShaderStage(GL_FRAGMENT_SHADER, R"(#version 450 core
 layout(std430, binding = 0) buffer Counts { uint counts[]; };
 out vec4 o_color;
 void main() { atomicAdd(counts[gl_PrimitiveID], 1u); o_color = vec4(1.0); })");
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  EXPECT_TRUE(ok);
-  return program;
+  return linkTestProgram({vs, fs});
 }
 
 // How many fragments GL draws of each triangle, back faces culled, into a size x size viewport.

@@ -94,7 +94,7 @@
 // light_distance_of, light_irradiance, light_entry_at, slab_transport, principled_entry,
 // u_mm_per_unit, u_translucency, quad_across_x, quad_across_y.
 
-// u_light_layers (entry, exit): declared by transmission_air_gap.glsl, which lighting.frag.glsl includes first.
+layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_light_layers;  // entry, exit
 
 const int HIDDEN_MIRROR_STEPS = 12;     // 3 per texel of the quad
 const float HIDDEN_MIRROR_FIRST = 2.0;  // layer texels

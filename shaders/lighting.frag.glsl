@@ -77,7 +77,6 @@ float thickness_at(vec3 p) {
 #include "mirror_march_phase.glsl"
 #include "mirror_lit_face.glsl"
 #include "transmission_chord.glsl"  // the four texels of the light's map; the transmission's chord
-#include "transmission_air_gap.glsl"  // whether a point lies beyond the first part along the light
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -282,10 +281,7 @@ vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2
   if (gathers) {
     float phi = (float(lane) + 0.5) * (0.5 * PI);
     vec2 u = frame.xy + DISC_TAP_RADIUS * S * (squash * vec2(cos(phi), sin(phi)));
-    // Nor where the light reaching it crossed air after a first part (transmission_air_gap.glsl).
-    vec3 q = P_in + u.x * t1 + u.y * t2;
-    vec3 eq = light_entry_at(q);
-    float covered = eq.z * (1.0 - air_on_way(P_in, q, light_distance_of(q) - eq.x));
+    float covered = light_entry_at(P_in + u.x * t1 + u.y * t2).z;
     sum = 0.25 * covered * cos0 * principled_entry(cos0) *
           (slab_transport(p * mm) - slab_transport(sqrt(p * p + 0.25 * S * S) * mm));
   }
@@ -307,7 +303,6 @@ vec3 glow_ring_quarter(vec3 P_in, float cos0, float p, float S, vec3 t1, vec3 t2
       vec3 q = P_in + u.x * t1 + u.y * t2;
       vec3 e = light_entry_at(q);
       float sk = light_distance_of(q) - e.x;
-      e.z *= 1.0 - air_on_way(P_in, q, sk);  // no light through air behind a first part (transmission_air_gap.glsl)
       // d >= 0, so the kernel distances below are >= a: the ring count's bound (glow_rings_shared).
       float d = sqrt(max(dot(u, u) + sk * sk - rho * rho, 0.0));
       vec3 ring = slab_transport(sqrt(d * d + a * a) * mm);
@@ -416,7 +411,7 @@ vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos, vec3 N) {
 // the chord: there the plane's depth is not checked (slanted_frame runs in the gather's quads only).
 vec3 gathered_transport(vec3 P_in, float s0, float cos0, vec3 rings) {
   float mm = u_mm_per_unit;
-  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm) * (1.0 - air_on_way(P_in, P_in, s0));
+  vec3 straight = cos0 * principled_entry(cos0) * slab_transport(s0 * mm);
   float blend = smoothstep(GLOW_FROM_MM, 2.0 * GLOW_FROM_MM, s0 * mm);
   if (blend <= 0.0) return straight;  // most of a lit or thin picture
   return mix(straight, rings, blend);

@@ -92,7 +92,7 @@
 // instructions (docs/performance.md, "Twenty-second session: a second pair of light layers").
 // Needs from the includer: u_light_distance, u_light_view_proj, u_light_texel_world,
 // light_distance_of, light_irradiance, light_entry_at, slab_transport, principled_entry,
-// u_mm_per_unit, u_translucency, quad_across_x, quad_across_y.
+// u_mm_per_unit, u_translucency, quad_across_x, quad_across_y, u_lit_face_ring_mm.
 
 layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_light_layers;  // entry, exit
 
@@ -214,8 +214,20 @@ vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
     // The light's entry above X: its distance and cosine, the light map's texel (as thickness_at).
     vec4 clip = u_light_view_proj * vec4(X, 1.0);
     vec2 entry = textureLod(u_light_distance, clip.xy / clip.w * 0.5 + 0.5, 0.0).rg;
-    if (mirror_meets_lit_face(gap, light_distance_of(X) - entry.x, u_light_texel_world))
-      found = vec4(light_irradiance(entry.x) / PI * (entry.y * principled_entry(entry.y)), 1.0);
+    if (mirror_meets_lit_face(gap, light_distance_of(X) - entry.x, u_light_texel_world)) {
+      // Spread by the walk as the blur spreads a face the camera sees (mirror_lit_face.glsl,
+      // lit_face_spread): a ring of the light map's texels u_lit_face_ring_mm around X's.
+      float ring = u_lit_face_ring_mm / u_mm_per_unit;
+      float du = ring / (u_light_texel_world * float(textureSize(u_light_distance, 0).x));
+      vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+      vec2 sum = vec2(0.0);
+      for (int i = 0; i < LIT_FACE_RING_TAPS; ++i) {
+        float a = float(i) * (2.0 * PI / float(LIT_FACE_RING_TAPS));
+        vec2 tap = textureLod(u_light_distance, uv + du * vec2(cos(a), sin(a)), 0.0).rg;  // GL_NEAREST
+        sum += lit_face_ring_tap(tap.x, tap.y * principled_entry(tap.y), entry.x, ring);
+      }
+      found = vec4(light_irradiance(entry.x) / PI * lit_face_spread(entry.y * principled_entry(entry.y), sum), 1.0);
+    }
   }
   return found;
 }

@@ -222,8 +222,7 @@ vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
       vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
       vec2 sum = vec2(0.0);
       for (int i = 0; i < LIT_FACE_RING_TAPS; ++i) {
-        float a = float(i) * (2.0 * PI / float(LIT_FACE_RING_TAPS));
-        vec2 tap = textureLod(u_light_distance, uv + du * vec2(cos(a), sin(a)), 0.0).rg;  // GL_NEAREST
+        vec2 tap = textureLod(u_light_distance, uv + du * LIT_FACE_RING[i], 0.0).rg;  // GL_NEAREST
         sum += lit_face_ring_tap(tap.x, tap.y * principled_entry(tap.y), entry.x, ring);
       }
       found = vec4(light_irradiance(entry.x) / PI * lit_face_spread(entry.y * principled_entry(entry.y), sum), 1.0);

@@ -61,6 +61,11 @@ bool mirror_meets_lit_face(float gap, float below, float light_texel) {
 // Measured: docs/quality.md, "Twenty-ninth session: the lit face's light spread by the walk".
 const int LIT_FACE_RING_TAPS = 8;
 const float LIT_FACE_OWN_WEIGHT = float(LIT_FACE_RING_TAPS);  // the inner half: the ring's taps together
+// The ring's directions, every 45 degrees (constants: no cos and sin per tap).
+const vec2 LIT_FACE_RING[LIT_FACE_RING_TAPS] = vec2[](vec2(1.0, 0.0), vec2(0.70710678, 0.70710678), vec2(0.0, 1.0),
+                                                      vec2(-0.70710678, 0.70710678), vec2(-1.0, 0.0),
+                                                      vec2(-0.70710678, -0.70710678), vec2(0.0, -1.0),
+                                                      vec2(0.70710678, -0.70710678));
 
 // One ring tap (its entry distance and coupling) against the face's entry distance: (coupling, 1)
 // where it lies on the face's part, within two ring radii along the light, else (0, 0).

@@ -59,13 +59,12 @@ bool mirror_meets_lit_face(float gap, float below, float light_texel) {
 // mean), the 1 / r near field for the tilt's cancellation, the outer half's weight exactly half.
 // Counting the left-out taps as unlit surface instead (0) lost 0.0002 on teapot-back against main.
 // Measured: docs/quality.md, "Twenty-ninth session: the lit face's light spread by the walk".
-const int LIT_FACE_RING_TAPS = 8;
+const int LIT_FACE_RING_TAPS = 4;
 const float LIT_FACE_OWN_WEIGHT = float(LIT_FACE_RING_TAPS);  // the inner half: the ring's taps together
-// The ring's directions, every 45 degrees (constants: no cos and sin per tap).
-const vec2 LIT_FACE_RING[LIT_FACE_RING_TAPS] = vec2[](vec2(1.0, 0.0), vec2(0.70710678, 0.70710678), vec2(0.0, 1.0),
-                                                      vec2(-0.70710678, 0.70710678), vec2(-1.0, 0.0),
-                                                      vec2(-0.70710678, -0.70710678), vec2(0.0, -1.0),
-                                                      vec2(0.70710678, -0.70710678));
+// The ring's directions, along the light map's axes (constants: no cos and sin per tap). Four taps,
+// not eight: on the ten reference scenes the same to 0.00001 of SSIM (teapot-back 0.95002 against
+// 0.95003), for 1.9 M instructions of the dragon's 800^2 camera frame instead of 3.4 M.
+const vec2 LIT_FACE_RING[LIT_FACE_RING_TAPS] = vec2[](vec2(1.0, 0.0), vec2(0.0, 1.0), vec2(-1.0, 0.0), vec2(0.0, -1.0));
 
 // One ring tap (its entry distance and coupling) against the face's entry distance: (coupling, 1)
 // where it lies on the face's part, within two ring radii along the light, else (0, 0).

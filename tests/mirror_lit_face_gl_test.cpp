@@ -70,7 +70,7 @@ TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
   EXPECT_GT(lit, 0);
 }
 
-// The face's light spread by the walk (lit_face_spread): its own coupling and a ring of eight taps,
+// The face's light spread by the walk (lit_face_spread): its own coupling and a ring of taps,
 // each query's taps alike (their coupling, their entry's distance from the face's along the light).
 const char* kSpreadMain = R"(
 layout(local_size_x = 1) in;

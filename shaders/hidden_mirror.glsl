@@ -195,13 +195,15 @@ vec4 hidden_mirror_shared(bool stone, bool marches, vec3 P, vec3 R) {
 // light's entry surface, the face the ray meets is that lit one, and its light is the direct light
 // entering it, as the lighting pass gives a lit face it sees (marble_surface_entering: E cos
 // principled_entry / pi; the entry's distance and cosine from the light map's texel above the point,
-// as thickness_at reads it); its indirect light is taken as P's diffuse bounce, as for the exit faces
+// as thickness_at reads it), spread by the walk over a ring of the light map's texels around it as the
+// blur spreads a face the camera sees (mirror_lit_face.glsl, lit_face_spread); its indirect light is taken as P's diffuse bounce, as for the exit faces
 // above. Returns (light, 1) there, else 0. Tried only for rays that come nearer the light and run
 // away from the camera (R.V < 0: P's N.V below 0.71, the grazing parts where a ray gets behind a face
 // the camera sees; the teapot's line: R.L 0.77-0.81, near the silhouette): on the ten reference scenes
 // the others changed no scene by more than 0.00004. Cost (docs/performance.md, "Twenty-eighth
 // session: the lit face behind the mirror hit"): +3.1 M instructions of the dragon's 800^2 camera
-// frame. A plain `if`: on llvmpipe, which runs the draw's lanes through both ways of it, loops whose
+// frame; the ring that spreads the face's light by the walk (lit_face_spread, since session 29) +1.9 M
+// more ("Twenty-ninth session: the hidden lit face's light spread by the walk"). A plain `if`: on llvmpipe, which runs the draw's lanes through both ways of it, loops whose
 // trip count is 0 where the work is not needed cost more here (+3.55 M with the light map's read in a
 // loop of its own, +3.4 M in one loop; +2.24 M with the loop's gate never true).
 vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {

@@ -92,7 +92,7 @@
 // instructions (docs/performance.md, "Twenty-second session: a second pair of light layers").
 // Needs from the includer: u_light_distance, u_light_view_proj, u_light_texel_world,
 // light_distance_of, light_irradiance, light_entry_at, slab_transport, principled_entry,
-// u_mm_per_unit, u_translucency, quad_across_x, quad_across_y.
+// u_mm_per_unit, u_translucency, quad_across_x, quad_across_y, u_lit_face_ring_mm.
 
 layout(binding = UNIT_LIGHTING_LIGHT_LAYERS) uniform sampler2D u_light_layers;  // entry, exit
 
@@ -195,13 +195,15 @@ vec4 hidden_mirror_shared(bool stone, bool marches, vec3 P, vec3 R) {
 // light's entry surface, the face the ray meets is that lit one, and its light is the direct light
 // entering it, as the lighting pass gives a lit face it sees (marble_surface_entering: E cos
 // principled_entry / pi; the entry's distance and cosine from the light map's texel above the point,
-// as thickness_at reads it); its indirect light is taken as P's diffuse bounce, as for the exit faces
+// as thickness_at reads it), spread by the walk over a ring of the light map's texels around it as the
+// blur spreads a face the camera sees (mirror_lit_face.glsl, lit_face_spread); its indirect light is taken as P's diffuse bounce, as for the exit faces
 // above. Returns (light, 1) there, else 0. Tried only for rays that come nearer the light and run
 // away from the camera (R.V < 0: P's N.V below 0.71, the grazing parts where a ray gets behind a face
 // the camera sees; the teapot's line: R.L 0.77-0.81, near the silhouette): on the ten reference scenes
 // the others changed no scene by more than 0.00004. Cost (docs/performance.md, "Twenty-eighth
 // session: the lit face behind the mirror hit"): +3.1 M instructions of the dragon's 800^2 camera
-// frame. A plain `if`: on llvmpipe, which runs the draw's lanes through both ways of it, loops whose
+// frame; the ring that spreads the face's light by the walk (lit_face_spread, since session 29) +1.9 M
+// more ("Twenty-ninth session: the hidden lit face's light spread by the walk"). A plain `if`: on llvmpipe, which runs the draw's lanes through both ways of it, loops whose
 // trip count is 0 where the work is not needed cost more here (+3.55 M with the light map's read in a
 // loop of its own, +3.4 M in one loop; +2.24 M with the loop's gate never true).
 vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
@@ -210,12 +212,23 @@ vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
     vec3 X = P + R * hit_t;
     // View depths: the clip w of X (u_view_proj's last row) against the hit pixel's surface.
     vec4 w_row = vec4(u_view_proj[0][3], u_view_proj[1][3], u_view_proj[2][3], u_view_proj[3][3]);
-    float gap = dot(w_row, vec4(X, 1.0)) - linear_depth(texelFetch(u_depth, hit, 0).r, u_camera_near_far);
+    float gap = dot(w_row, vec4(X, 1.0)) - linear_depth(nearest_texel(u_depth, hit).r, u_camera_near_far);  // GL_NEAREST, hit on screen
     // The light's entry above X: its distance and cosine, the light map's texel (as thickness_at).
     vec4 clip = u_light_view_proj * vec4(X, 1.0);
     vec2 entry = textureLod(u_light_distance, clip.xy / clip.w * 0.5 + 0.5, 0.0).rg;
-    if (mirror_meets_lit_face(gap, light_distance_of(X) - entry.x, u_light_texel_world))
-      found = vec4(light_irradiance(entry.x) / PI * (entry.y * principled_entry(entry.y)), 1.0);
+    if (mirror_meets_lit_face(gap, light_distance_of(X) - entry.x, u_light_texel_world)) {
+      // Spread by the walk as the blur spreads a face the camera sees (mirror_lit_face.glsl,
+      // lit_face_spread): a ring of the light map's texels u_lit_face_ring_mm around X's.
+      float ring = u_lit_face_ring_mm / u_mm_per_unit;
+      float du = ring / (u_light_texel_world * float(textureSize(u_light_distance, 0).x));
+      vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+      vec2 sum = vec2(0.0);
+      for (int i = 0; i < LIT_FACE_RING_TAPS; ++i) {
+        vec2 tap = textureLod(u_light_distance, uv + du * LIT_FACE_RING[i], 0.0).rg;  // GL_NEAREST
+        sum += lit_face_ring_tap(tap.x, tap.y * principled_entry(tap.y), entry.x, ring);
+      }
+      found = vec4(light_irradiance(entry.x) / PI * lit_face_spread(entry.y * principled_entry(entry.y), sum), 1.0);
+    }
   }
   return found;
 }

@@ -41,6 +41,7 @@ uniform int u_mode;
 
 // Physically based marble (mode `marble`).
 uniform float u_mm_per_unit;     // millimetres per scene unit
+uniform float u_lit_face_ring_mm;  // the walk's ring for a hidden lit face (subsurface_profile.h, walkRingRadiusMm)
 // The random walk's slab transport cut to the material (marble::SlabTransport): ln(T / R_inf) per
 // channel at optical thicknesses tau_i = u_slab_tau_max (i / (SLAB_NODES - 1))^2, tau = sigma_t s.
 const int SLAB_NODES = 40;  // marble::kSlabTransportNodes

@@ -4,9 +4,12 @@
 // docs/quality.md, "Twenty-eighth session: ... the lit face behind the mirror hit"). Checked on the
 // functions themselves, compiled into a compute shader: the test that tells the hidden lit face from
 // the visible one by the ray point's two distances (behind the visible face, from the light's entry),
-// and its two halves, each a test of its own distance.
-// Negative control, checked by hand: mirror_behind_visible_face returning false (main's behaviour:
-// the visible face kept for every hit), rebuilt: both tests fail.
+// and its two halves, each a test of its own distance; and the face's light spread by the walk
+// (session 29).
+// Negative controls, checked by hand: mirror_behind_visible_face returning false (main's behaviour:
+// the visible face kept for every hit), rebuilt: both tests fail; lit_face_spread returning the
+// face's own coupling (main's behaviour before session 29), rebuilt: SpreadsTheRingsLightIntoTheFace
+// fails (0.4 for 0.65).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -65,6 +68,44 @@ TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
     lit += out[4 * i] > 0.5f ? 1 : 0;
   }
   EXPECT_GT(lit, 0);
+}
+
+// The face's light spread by the walk (lit_face_spread): its own coupling and a ring of taps,
+// each query's taps alike (their coupling, their entry's distance from the face's along the light).
+const char* kSpreadMain = R"(
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };
+layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  vec4 q = queries[i];  // own coupling, the taps' coupling, their entry offset, the ring's radius
+  vec2 sum = vec2(0.0);
+  for (int k = 0; k < LIT_FACE_RING_TAPS; ++k) sum += lit_face_ring_tap(1.0 + q.z, q.y, 1.0, q.w);
+  results[i] = vec4(lit_face_spread(q.x, sum), 0.0, 0.0, 0.0);
+}
+)";
+
+class MirrorLitFaceSpreadGlTest : public test::ComputeProgramTest {
+protected:
+  void SetUp() override { compileProgram(embeddedShaders().at("mirror_lit_face.glsl") + kSpreadMain); }
+  std::vector<float> run(const std::vector<float>& in) { return test::runPerVec4(program_, in); }
+};
+
+// A face lit at a grazing cosine beside its part's back lit head-on (teapot-back's hidden faces: own
+// coupling about 0.4, the ring 0.9): the walk brings half its light from the ring, so the face
+// reads the mean of the two halves, not its own (what it read before session 29). A face lit alike
+// all round keeps its own light; taps on another part (their entry more than two ring radii away
+// along the light) are left out, and with none left the face keeps its own.
+TEST_F(MirrorLitFaceSpreadGlTest, SpreadsTheRingsLightIntoTheFace) {
+  const float ring = 0.0206f;  // the issue's stone at 100 mm per unit, scene units
+  const std::vector<float> out = run({0.4f, 0.9f, 0.005f, ring,     //
+                                      0.6f, 0.6f, -0.01f, ring,     //
+                                      0.4f, 0.9f, 3.0f * ring, ring,  //
+                                      0.4f, 0.9f, -3.0f * ring, ring});
+  EXPECT_NEAR(out[0], 0.65f, 1e-5f) << "a grazing-lit face beside a head-on-lit back";
+  EXPECT_NEAR(out[4], 0.6f, 1e-5f) << "lit alike all round";
+  EXPECT_NEAR(out[8], 0.4f, 1e-5f) << "the ring on a part behind";
+  EXPECT_NEAR(out[12], 0.4f, 1e-5f) << "the ring on a part in front";
 }
 
 }  // namespace

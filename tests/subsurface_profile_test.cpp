@@ -110,6 +110,27 @@ TEST(SubsurfaceProfile, TheKernelKeepsTheWalksCoreInATexelsSquare) {
   }
 }
 
+// The ring a hidden lit face's light is spread over (shaders/mirror_lit_face.glsl): per channel the
+// walk leaves 3/4 of its light inside the square of the ring's equal-area half-width, and the radius
+// is the channels' luminance-weighted mean (the stone: 2.06 mm).
+TEST(SubsurfaceProfile, TheLitFaceRingHoldsThreeQuartersOfTheWalk) {
+  const WalkShape walk = walkShape(test::principledStone());
+  const glm::vec3 luminance{0.2126f, 0.7152f, 0.0722f};
+  float radius = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    // The channel's own ring: its half-width where the square holds 3/4, by bisection here too.
+    float lo = 0.0f, hi = 12.0f;
+    for (int k = 0; k < 40; ++k) {
+      const float mid = 0.5f * (lo + hi);
+      (walkSquareShare(walk.albedo[c], mid) < 0.75f ? lo : hi) = mid;
+    }
+    EXPECT_NEAR(walkSquareShare(walk.albedo[c], hi), 0.75f, 1e-3f) << "channel " << c;
+    radius += luminance[c] * hi * walk.meanFreePathMm[c] * 2.0f / std::sqrt(3.14159265f);
+  }
+  EXPECT_NEAR(walkRingRadiusMm(walk), radius, 1e-3f);
+  EXPECT_NEAR(walkRingRadiusMm(walk), 2.06f, 0.01f);
+}
+
 // The table's rows are the walk's: the share within t mean free paths rises with t, is the
 // tabulated value at a row, and reaches 1.
 TEST(SubsurfaceProfile, WalkAxisShareFollowsTheTable) {

@@ -6,6 +6,7 @@
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
+#include "marble/render/subsurface_profile.h"
 #include "marble/scene/material_scattering.h"
 #include "marble/scene/slab_transport.h"
 
@@ -98,12 +99,15 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     // decay per mm, kept above 0.001 (a stone that absorbs nothing, where it is the texels' mean
     // chord).
     chordDecayMm_ = std::max(diffusionAttenuationMm(m), 1.0e-3f);
+    // A hidden lit face's light spread by the walk (shaders/mirror_lit_face.glsl).
+    litFaceRingMm_ = walkRingRadiusMm(walkShape(m));
     slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
   }
   glProgramUniform3fv(p.id(), p.location("u_slab_ln_t"), kSlabTransportNodes, &slab_.lnT[0].x);
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_chord_decay", chordDecayMm_ * scene.mm_per_unit);
+  p.set("u_lit_face_ring_mm", litFaceRingMm_);
   p.set("u_scale", marble ? enteringScale_ : 1);
   setBounceGridUniforms(p, in.bounceGrid);
   setEnvironmentUniforms(p, settings, environment);

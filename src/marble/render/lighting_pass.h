@@ -59,6 +59,7 @@ private:
   PassTimer timer_;
   SlabTransport slab_;  // the transmission's table for the scattering coefficients in slabFor_
   float chordDecayMm_ = 0.0f;  // transmission_chord.glsl's decay per mm, for the coefficients in slabFor_
+  float litFaceRingMm_ = 0.0f;  // mirror_lit_face.glsl's ring (walkRingRadiusMm), for the coefficients in slabFor_
   std::optional<std::pair<glm::vec3, glm::vec3>> slabFor_;  // (sigma_a_mm, sigma_s_mm)
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/common.hpp>
 
@@ -123,6 +124,22 @@ float subsurfaceReachMm(const Material& m) {
     reach = std::max(reach, hi * w.meanFreePathMm[c]);
   }
   return reach;
+}
+
+float walkRingRadiusMm(const WalkShape& walk) {
+  const glm::vec3 luminance{0.2126f, 0.7152f, 0.0722f};
+  const float last = kSquareH[kSquareHs - 1];
+  float radius = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    // The share rises with h: bisect for 3/4 (held at the table's last h, 12 mean free paths).
+    float lo = 0.0f, hi = last;
+    for (int k = 0; k < 40; ++k) {
+      const float mid = 0.5f * (lo + hi);
+      (walkSquareShare(walk.albedo[c], mid) < 0.75f ? lo : hi) = mid;
+    }
+    radius += luminance[c] * hi * walk.meanFreePathMm[c] * 2.0f / std::sqrt(std::numbers::pi_v<float>);
+  }
+  return radius;
 }
 
 SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps, float coreHalfWidthMm) {

@@ -80,6 +80,12 @@ struct SubsurfaceKernel {
 // single-scattering albedo `alpha` (tools/walk_profile.cpp's walk, 400,000 walks per row;
 // interpolated as walkAxisShare; h from 0.25 to 3 mean free paths, linear to 0 below, held above).
 float walkSquareShare(float alpha, float h);
+// The radius (mm) of the ring that stands for the outer half of the walk's light where the lighting
+// pass spreads a hidden lit face's light (shaders/mirror_lit_face.glsl, lit_face_spread): per
+// channel, the half-width h where walkSquareShare reaches 3/4 (the outer half's median), as the radius
+// of the disc of the square's area (h 2 / sqrt(pi)); the channels weighed by luminance (Rec. 709:
+// the light is near white, SSIM reads luminance). The stone: 2.06 mm.
+float walkRingRadiusMm(const WalkShape& walk);
 // coreHalfWidthMm: half a blur texel at the object's distance (the square the core is matched in);
 // 0: no core, the product of marginals alone.
 SubsurfaceKernel subsurfaceKernel(const WalkShape& walk, float reachMm, int taps, float coreHalfWidthMm);

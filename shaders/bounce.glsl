@@ -66,6 +66,13 @@ const int BOUNCE_ANGLES = 8;
 // radii").
 const int BOUNCE_PAIR_FROM_RING = 4;
 const float BOUNCE_RADIUS = 0.5;  // of the light map's width (its uv)
+// Rings 0 to BOUNCE_STRATIFIED_RINGS - 1 (1-8 texels from the receiver) are read at one of four radii
+// per texel of a 2 x 2 block (bounce_gather's `stratum`, bounce_radial_stratum.glsl), the rest at the
+// sectors' middle (ring 3) or in pairs (rings 4, 5). Ring 3 stratified too lost teapot-back 0.0019 of
+// SSIM over four phases of the pattern, its handle's inner side and the body beside the lid, already
+// darker than Cycles', darker still (docs/quality.md, "Twenty-ninth session: the inner rings' radius
+// stratified over the 2 x 2 block"; s27-bounce2 found the same ring read coarser lose the same blocks).
+const int BOUNCE_STRATIFIED_RINGS = 3;
 // Each sample is read BOUNCE_LOD_FINER mipmap levels finer than the level whose texel is its whole
 // sector (8^2 = 64 times fewer texels averaged): a surface point near the sector's middle stands
 // for the sector, rather than the mean position and normal over it, which mixes parts at different
@@ -203,12 +210,14 @@ vec4 bounce_sample_pair(vec3 P, vec3 N, vec3 R, vec2 uv, vec2 duv, float texels,
 }
 
 // Irradiance / PI that one bounce brings to P (normal N), per unit of the light's radiance,
-// the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl),
+// the pattern turned by `turn` of its angular step (bounce_gather.frag.glsl) and the inner rings read at
+// the radius of their equal-area stratum `stratum` (0 ... 1; bounce_radial_stratum.glsl), or at their
+// middle where `stratum` is BOUNCE_RADIAL_MIDDLE (< 0),
 // before P's own albedo and entry, and before the emitters' albedo (x) and Fresnel factors (y, z)
 // (bounce_merge.frag.glsl applies those: the gather then reads no material parameter, and a colour
 // or ior change re-runs only the bounce pass's last draw and the lighting); w, the radiance P's specular layer mirrors toward
 // the camera at V, before the emitters' albedo and P's Fresnel factor.
-vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
+vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn, float stratum) {
   vec3 R = reflect(-V, N);
   vec4 clip = u_light_view_proj * vec4(P, 1.0);
   vec2 centre = clip.xy / clip.w * 0.5 + 0.5;
@@ -230,7 +239,12 @@ vec4 bounce_gather(vec3 P, vec3 N, vec3 V, float turn) {
   vec2 ringDir = vec2(cos(phi0), sin(phi0));
   for (int ring = 0; ring < BOUNCE_PAIR_FROM_RING; ++ring) {
     float r0 = inner * exp2(float(ring)), r1 = 2.0 * r0;
-    float r = 0.5 * (r0 + r1);  // the sectors' middle
+    // The sectors' middle, or the radius inside which the fraction u of the ring's area lies,
+    // r0 sqrt(1 + 3 u), u the texel's stratum moved on by the golden ratio's fraction per ring
+    // (bounce_radial_stratum.glsl): over the four strata an even cover of the ring's area, where each
+    // sample stands for its sector's area.
+    float u = fract(stratum + 0.618034 * float(ring));
+    float r = stratum < 0.0 || ring >= BOUNCE_STRATIFIED_RINGS ? 0.5 * (r0 + r1) : r0 * sqrt(1.0 + 3.0 * u);
     float dA = PI * (r1 * r1 - r0 * r0) / float(BOUNCE_ANGLES);
     float texels = dA * size * size, lod = bounce_sample_lod(texels, maxLod);
     vec2 dir = ringDir;

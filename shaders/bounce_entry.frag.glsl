@@ -20,6 +20,7 @@ const float PI = 3.14159265358979;  // before deferred_common.glsl, which needs 
 #include "deferred_common.glsl"
 #include "rotation.glsl"
 #include "bounce.glsl"
+#include "bounce_radial_stratum.glsl"
 #include "fresnel_f0.glsl"
 
 uniform vec3 u_pat_base_color;  // the stone's albedo between veins: the emitters' albedo
@@ -42,7 +43,7 @@ void main() {
   vec3 N = normalize(n);
   ivec2 q = t & 1;
   // V = N: the mirrored part (w) is the camera's, not wanted here.
-  vec4 b = bounce_gather(P, N, N, 0.25 * float(q.x + 2 * q.y));
+  vec4 b = bounce_gather(P, N, N, 0.25 * float(q.x + 2 * q.y), BOUNCE_RADIAL_MIDDLE);  // not evened out (bounce_radial_stratum.glsl)
   float F0 = f0_from_ior(u_ior).x;
   o_entry = vec4(u_pat_base_color * b.x + F0 * b.y + (1.0 - F0) * b.z, 1.0);
 }

@@ -16,6 +16,7 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 #define BOUNCE_SCREEN_OCCLUSION
 #include "bounce_screen_occlusion.glsl"
 #include "bounce.glsl"
+#include "bounce_radial_stratum.glsl"
 
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
 uniform int u_scale;  // full-resolution pixels per texel of this pass
@@ -45,7 +46,9 @@ void main() {
   // The fixed pattern alone swung SSIM against Cycles by up to 0.03 with its turn (bunny-side
   // 0.892-0.921 over four turns; docs/quality.md, "Eleventh session"), the interleaved one is at or
   // above the four turns' mean in every scene. The next step evens the four turns out over each
-  // block (bounce_deinterleave.frag.glsl) before the further bounces and the merge read them.
+  // block (bounce_deinterleave.frag.glsl) before the further bounces and the merge read them; the
+  // block's four texels also read the inner rings at four radii (bounce_radial_stratum.glsl).
   ivec2 q = ivec2(gl_FragCoord.xy) & 1;
-  o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y));
+  o_bounce = bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y),
+                           bounce_radial_stratum(ivec2(gl_FragCoord.xy)));
 }

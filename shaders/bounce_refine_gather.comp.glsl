@@ -14,6 +14,7 @@ layout(binding = UNIT_LIGHTING_DEPTH) uniform sampler2D u_depth;
 #define BOUNCE_SCREEN_OCCLUSION
 #include "bounce_screen_occlusion.glsl"
 #include "bounce.glsl"
+#include "bounce_radial_stratum.glsl"
 
 layout(local_size_x = BOUNCE_REFINE_GROUP) in;
 layout(binding = UNIT_LIGHTING_NORMAL) uniform sampler2D u_normal;
@@ -36,5 +37,6 @@ void main() {
   // luck moves the scenes by at most 0.001 of SSIM (docs/quality.md, "Twenty-first session: the
   // further bounces' pattern evened out").
   ivec2 q = t & 1;
-  imageStore(u_refined_first, t, bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y) + 0.125));
+  imageStore(u_refined_first, t, bounce_gather(P, N, normalize(u_camera_pos - P), 0.25 * float(q.x + 2 * q.y) + 0.125,
+                                                     BOUNCE_RADIAL_MIDDLE));  // not evened out: bounce_radial_stratum.glsl
 }

@@ -208,9 +208,9 @@ vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
   vec4 found = vec4(0.0);
   if (hit.x >= 0 && dot(R, light_vector(P)) > 0.0 && dot(R, normalize(u_camera_pos - P)) < 0.0) {
     vec3 X = P + R * hit_t;
-    // View depths: the clip w of X (u_view_proj's last row) against the hit pixel's surface.
-    vec4 w_row = vec4(u_view_proj[0][3], u_view_proj[1][3], u_view_proj[2][3], u_view_proj[3][3]);
-    float gap = dot(w_row, vec4(X, 1.0)) - linear_depth(texelFetch(u_depth, hit, 0).r, u_camera_near_far);
+    // View depths: the clip w of X (u_view_depth_row) against the hit pixel's surface (GL_NEAREST,
+    // the hit on screen: nearest_texel.glsl).
+    float gap = dot(u_view_depth_row, vec4(X, 1.0)) - linear_depth(nearest_texel(u_depth, hit).r, u_camera_near_far);
     // The light's entry above X: its distance and cosine, the light map's texel (as thickness_at).
     vec4 clip = u_light_view_proj * vec4(X, 1.0);
     vec2 entry = textureLod(u_light_distance, clip.xy / clip.w * 0.5 + 0.5, 0.0).rg;

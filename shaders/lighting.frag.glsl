@@ -643,7 +643,7 @@ void main() {
     o_color = vec4(0.0);
     return;
   }
-  vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
+  vec3 albedo = nearest_texel(u_albedo, px).rgb;  // GL_NEAREST, px on screen (nearest_texel.glsl)
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
 

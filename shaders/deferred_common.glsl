@@ -3,6 +3,7 @@
 // marble::setFrameUniforms (src/marble/render/frame_uniforms.h).
 uniform mat4 u_inv_view_proj;
 uniform mat4 u_view_proj;  // world to the camera's clip space (the inverse of the above)
+uniform vec4 u_view_depth_row;  // u_view_proj's last row: dot(it, (X, 1)) is X's clip w, its view depth
 uniform vec3 u_camera_pos;
 uniform mat4 u_light_view_proj;
 #include "light_geometry.glsl"

@@ -180,11 +180,14 @@ vec4 hidden_mirror_shared(bool stone, bool marches, vec3 P, vec3 R) {
   if (any_.x > 0.0) mine = hidden_mirror_quarter(P, R, lane);  // a branch the quad takes together
   mine = stone && !any(isnan(mine)) ? mine : vec4(0.0);
   vec4 x = quad_across_x(mine), y = quad_across_y(mine), xy = quad_across_y(x);
-  // By quarter: quarter q is lane q's; lane ^ 1 is across x, lane ^ 2 across y, lane ^ 3 both.
-  vec4 byQuarter[4] = vec4[4](mine, x, y, xy);
+  // By quarter: quarter q is lane q's; lane ^ 1 is across x, lane ^ 2 across y, lane ^ 3 both. Chosen
+  // by selects, not read from an array indexed by the lane, which llvmpipe reads lane by lane: the
+  // lighting pass of the dragon's 800^2 camera frame 0.83 M instructions fewer (docs/performance.md,
+  // "Twenty-ninth session: ... s29-cost").
   vec4 found = vec4(0.0);
   for (int q = 3; q >= 0; --q) {
-    vec4 v = byQuarter[q ^ lane];
+    int from = q ^ lane;
+    vec4 v = from == 0 ? mine : from == 1 ? x : from == 2 ? y : xy;
     found = v.a > 0.5 ? v : found;  // the earliest quarter that meets something wins
   }
   return found.a > 0.5 && found.a < 1.5 ? found : vec4(0.0);
@@ -210,9 +213,9 @@ vec4 hidden_lit_face_behind(ivec2 hit, float hit_t, vec3 P, vec3 R) {
   vec4 found = vec4(0.0);
   if (hit.x >= 0 && dot(R, light_vector(P)) > 0.0 && dot(R, normalize(u_camera_pos - P)) < 0.0) {
     vec3 X = P + R * hit_t;
-    // View depths: the clip w of X (u_view_proj's last row) against the hit pixel's surface.
-    vec4 w_row = vec4(u_view_proj[0][3], u_view_proj[1][3], u_view_proj[2][3], u_view_proj[3][3]);
-    float gap = dot(w_row, vec4(X, 1.0)) - linear_depth(nearest_texel(u_depth, hit).r, u_camera_near_far);  // GL_NEAREST, hit on screen
+    // View depths: the clip w of X (u_view_depth_row) against the hit pixel's surface (GL_NEAREST,
+    // the hit on screen: nearest_texel.glsl).
+    float gap = dot(u_view_depth_row, vec4(X, 1.0)) - linear_depth(nearest_texel(u_depth, hit).r, u_camera_near_far);
     // The light's entry above X: its distance and cosine, the light map's texel (as thickness_at).
     vec4 clip = u_light_view_proj * vec4(X, 1.0);
     vec2 entry = textureLod(u_light_distance, clip.xy / clip.w * 0.5 + 0.5, 0.0).rg;

@@ -45,7 +45,13 @@ uniform float u_lit_face_ring_mm;  // the walk's ring for a hidden lit face (sub
 // The random walk's slab transport cut to the material (marble::SlabTransport): ln(T / R_inf) per
 // channel at optical thicknesses tau_i = u_slab_tau_max (i / (SLAB_NODES - 1))^2, tau = sigma_t s.
 const int SLAB_NODES = 40;  // marble::kSlabTransportNodes
-uniform vec3 u_slab_ln_t[SLAB_NODES];
+// The slab table's ln(T / R_inf) per channel as segments between nodes k and k + 1 (LightingPass):
+// a segment's two ends in one indexed read per channel, not two reads of the node array: the
+// lighting pass of the dragon's 800^2 camera frame 0.74 M instructions fewer (llvmpipe reads an array
+// indexed per lane lane by lane; docs/performance.md, "Twenty-ninth session: ... s29-cost").
+uniform vec2 u_slab_segment_r[SLAB_NODES - 1];
+uniform vec2 u_slab_segment_g[SLAB_NODES - 1];
+uniform vec2 u_slab_segment_b[SLAB_NODES - 1];
 uniform float u_slab_tau_max;
 uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
 uniform float u_translucency;
@@ -123,8 +129,9 @@ vec2 transmission_thickness(vec3 p) {
 vec3 slab_x(vec3 tau) { return sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1); }
 void slab_segment(vec3 x, out vec3 lo, out vec3 slope) {
   ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
-  lo = vec3(u_slab_ln_t[i.r].r, u_slab_ln_t[i.g].g, u_slab_ln_t[i.b].b);
-  vec3 hi = vec3(u_slab_ln_t[i.r + 1].r, u_slab_ln_t[i.g + 1].g, u_slab_ln_t[i.b + 1].b);
+  vec2 r = u_slab_segment_r[i.r], g = u_slab_segment_g[i.g], b = u_slab_segment_b[i.b];
+  lo = vec3(r.x, g.x, b.x);
+  vec3 hi = vec3(r.y, g.y, b.y);
   slope = hi - lo;
   lo -= slope * vec3(i);  // so that ln T = lo + slope * x
 }
@@ -644,7 +651,7 @@ void main() {
     o_color = vec4(0.0);
     return;
   }
-  vec3 albedo = texelFetch(u_albedo, px, 0).rgb;
+  vec3 albedo = nearest_texel(u_albedo, px).rgb;  // GL_NEAREST, px on screen (nearest_texel.glsl)
   vec3 V = normalize(u_camera_pos - P);
   vec3 L = light_vector(P);
 

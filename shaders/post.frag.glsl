@@ -105,17 +105,17 @@ ivec2 nearest_blur_texel(ivec2 p) {
 // albedo it used (source 2: the stored one), for the retro-reflection (marble_compose).
 vec3 marble_diffuse(ivec2 px, float depth, vec3 N, vec3 V, ivec2 hit, out vec3 albedo) {
 #if DIFFUSE_SOURCE == 2
-  albedo = texelFetch(u_albedo, px, 0).rgb;
-  return texelFetch(u_diffuse, px, 0).rgb;
+  albedo = nearest_texel(u_albedo, px).rgb;  // GL_NEAREST, px on screen (nearest_texel.glsl)
+  return nearest_texel(u_diffuse, px).rgb;
 #else
 #if DIFFUSE_SOURCE == 0
   albedo = as_stored_unorm8(albedo_at_pixel(v_uv, depth, N));
   o_albedo = vec4(albedo, 1.0);
 #else
-  albedo = texelFetch(u_albedo, px, 0).rgb;
+  albedo = nearest_texel(u_albedo, px).rgb;
 #endif
 #if SURFACE_REUSE == 2
-  vec3 light = texelFetch(u_surface_light, px, 0).rgb;
+  vec3 light = nearest_texel(u_surface_light, px).rgb;
 #else
   precise vec3 light = upsample_blurred(u_blurred, px, depth);
   // The stone's own light mirrored in its surface (self_reflection.glsl): reflected light, but the
@@ -181,7 +181,7 @@ vec3 marble_compose(float depth, vec3 N, vec3 bx, vec3 ax, vec3 by, vec3 ay) {
   vec3 V = vec3(0.0);
   ivec2 hit = ivec2(-1);
 #if SURFACE_REUSE == 2
-  vec4 stored = texelFetch(u_surface_reflected, px, 0);
+  vec4 stored = nearest_texel(u_surface_reflected, px);  // GL_NEAREST, px on screen
   vec3 reflected = stored.rgb;
   float retro = stored.a;
 #else

@@ -9,8 +9,6 @@
 // 13,575) and culling the other faces (both sculpture tests: 13,575) each fail their test.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl_support.h"
@@ -29,27 +27,6 @@ Scene scene() {
   return s;
 }
 
-ImageRGBF frame(Renderer& r, const Scene& s, const glm::mat4& model) {
-  OffscreenTarget target(s.render.width, s.render.height);
-  r.render(s, model, target.fbo(), target.width(), target.height());
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  return r.readHdr();
-}
-
-size_t differingValues(const ImageRGBF& a, const ImageRGBF& b) {
-  EXPECT_EQ(a.pixels.size(), b.pixels.size());
-  size_t differ = 0;
-  for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i) differ += a.pixels[i] != b.pixels[i];
-  return differ;
-}
-
-// Pixels with any light: the background is black in the HDR frame.
-size_t litPixels(const ImageRGBF& hdr) {
-  size_t n = 0;
-  for (size_t i = 0; i + 2 < hdr.pixels.size(); i += 3) n += hdr.pixels[i] + hdr.pixels[i + 1] + hdr.pixels[i + 2] > 0.0f;
-  return n;
-}
-
 // The frame with hidden faces culled and with both faces drawn, each read back before the other draws.
 void expectCullingChangesNothing(const Mesh& mesh, const Scene& s, const glm::mat4& model, size_t minCovered) {
   glContext();
@@ -57,10 +34,9 @@ void expectCullingChangesNothing(const Mesh& mesh, const Scene& s, const glm::ma
   both.setGeometryCullsHiddenFaces(false);
   culled.setMesh(mesh);
   both.setMesh(mesh);
-  const ImageRGBF a = frame(culled, s, model);
-  const ImageRGBF b = frame(both, s, model);
-  EXPECT_GE(litPixels(b), minCovered) << "the view must see the mesh";
-  EXPECT_EQ(differingValues(a, b), 0u);
+  const FramePairDifference d = compareFrames(culled, both, s, model);
+  EXPECT_GE(d.litPixels, minCovered) << "the view must see the mesh";
+  EXPECT_EQ(d.differingValues, 0u);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // render-to-image helper.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -134,6 +135,34 @@ inline ImageRGBA8 renderImage(Renderer& renderer, const Scene& scene) {
   renderer.render(scene, glm::mat4(1.0f), target.fbo(), target.width(), target.height());
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   return target.read();
+}
+
+// The HDR frame of `scene` drawn by `renderer` with the model matrix `model`, read back.
+inline ImageRGBF renderHdr(Renderer& renderer, const Scene& scene, const glm::mat4& model) {
+  OffscreenTarget target(scene.render.width, scene.render.height);
+  renderer.render(scene, model, target.fbo(), target.width(), target.height());
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  return renderer.readHdr();
+}
+
+// One scene drawn by two renderers that must give the same frame (a saving that may not change a
+// value: face_culling_gl_test, screen_cull_gl_test), each frame read back before the other draws.
+// differingValues: the values (pixel channels) that are not bit-equal; litPixels: the second
+// frame's pixels with any light (the HDR frame's background is black), to show the view saw the mesh.
+struct FramePairDifference {
+  size_t differingValues = 0;
+  size_t litPixels = 0;
+};
+inline FramePairDifference compareFrames(Renderer& first, Renderer& second, const Scene& scene,
+                                         const glm::mat4& model) {
+  glContext();
+  const ImageRGBF a = renderHdr(first, scene, model);
+  const ImageRGBF b = renderHdr(second, scene, model);
+  EXPECT_EQ(a.pixels.size(), b.pixels.size());
+  FramePairDifference d;
+  for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i) d.differingValues += a.pixels[i] != b.pixels[i];
+  for (size_t i = 0; i + 2 < b.pixels.size(); i += 3) d.litPixels += b.pixels[i] + b.pixels[i + 1] + b.pixels[i + 2] > 0.0f;
+  return d;
 }
 
 // The HDR pictures of one scene drawn with two meshes (a fresh renderer each): a test that isolates

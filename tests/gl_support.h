@@ -109,6 +109,16 @@ protected:
   GLuint program_ = 0;
 };
 
+// The compute shader main of a runPerVec4 test: one invocation a query, `q` the query's vec4 (binding
+// 0), `body` the statements that write `results[i]` (binding 1).
+inline std::string perVec4Main(const std::string& body) {
+  return "layout(local_size_x = 1) in;\n"
+         "layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };\n"
+         "void main() {\n  uint i = gl_GlobalInvocationID.x;\n  vec4 q = queries[i];\n" +
+         body + "\n}\n";
+}
+
 // Runs `program` (already bound to its textures and uniforms) once per vec4 of `in`: one work group a
 // vec4, the inputs at shader-storage binding 0 and as many vec4 results at binding 1, which it
 // returns (the tests that query one library function at a list of points: transmission_chord_gl_test,

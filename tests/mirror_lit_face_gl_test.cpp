@@ -21,22 +21,28 @@
 namespace marble {
 namespace {
 
-const char* kComputeMain = R"(
-layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  vec4 q = queries[i];  // gap, below, the light map's texel
+// Query: gap, below, the light map's texel.
+const char* kDecide = R"(
   results[i] = vec4(mirror_meets_lit_face(q.x, q.y, q.z) ? 1.0 : 0.0,
                     mirror_behind_visible_face(q.x) && mirror_at_light_entry(q.y, q.z) ? 1.0 : 0.0, 0.0, 0.0);
-}
 )";
 
+// The face's light spread by the walk (lit_face_spread): its own coupling and a ring of taps, each
+// query's taps alike. Query: own coupling, the taps' coupling, their entry offset, the ring's radius.
+const char* kSpread = R"(
+  vec2 sum = vec2(0.0);
+  for (int k = 0; k < LIT_FACE_RING_TAPS; ++k) sum += lit_face_ring_tap(1.0 + q.z, q.y, 1.0, q.w);
+  results[i] = vec4(lit_face_spread(q.x, sum), 0.0, 0.0, 0.0);
+)";
+
+// mirror_lit_face.glsl's functions, run once per query by the compute shader main `body`.
 class MirrorLitFaceGlTest : public test::ComputeProgramTest {
 protected:
-  void SetUp() override { compileProgram(embeddedShaders().at("mirror_lit_face.glsl") + kComputeMain); }
-  std::vector<float> run(const std::vector<float>& in) { return test::runPerVec4(program_, in); }
+  std::vector<float> run(const char* body, const std::vector<float>& in) {
+    compileProgram(embeddedShaders().at("mirror_lit_face.glsl") + test::perVec4Main(body));
+    if (program_ == 0) return {};
+    return test::runPerVec4(program_, in);
+  }
 };
 
 // Behind the visible face by more than the bisection leaves and at the light's entry surface: the lit
@@ -50,7 +56,7 @@ TEST_F(MirrorLitFaceGlTest, TellsTheLitFaceBehindFromTheVisibleFace) {
                                    {0.045f, -0.05f, false}};
   std::vector<float> in;
   for (const Case& c : cases) in.insert(in.end(), {c.gap, c.below, texel, 1.0f});
-  const std::vector<float> out = run(in);
+  const std::vector<float> out = run(kDecide, in);
   for (size_t i = 0; i < cases.size(); ++i)
     EXPECT_EQ(out[4 * i], cases[i].lit ? 1.0f : 0.0f) << "gap " << cases[i].gap << " below " << cases[i].below;
 }
@@ -61,7 +67,7 @@ TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
   std::vector<float> in;
   for (float gap = 0.0f; gap < 0.08f; gap += 0.005f)
     for (float below = -0.06f; below < 0.2f; below += 0.01f) in.insert(in.end(), {gap, below, texel, 1.0f});
-  const std::vector<float> out = run(in);
+  const std::vector<float> out = run(kDecide, in);
   int lit = 0;
   for (size_t i = 0; i < in.size() / 4; ++i) {
     EXPECT_EQ(out[4 * i + 1], out[4 * i]) << "gap " << in[4 * i] << " below " << in[4 * i + 1];
@@ -70,35 +76,14 @@ TEST_F(MirrorLitFaceGlTest, HalvesDecideAsTheWhole) {
   EXPECT_GT(lit, 0);
 }
 
-// The face's light spread by the walk (lit_face_spread): its own coupling and a ring of taps,
-// each query's taps alike (their coupling, their entry's distance from the face's along the light).
-const char* kSpreadMain = R"(
-layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer Queries { vec4 queries[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  vec4 q = queries[i];  // own coupling, the taps' coupling, their entry offset, the ring's radius
-  vec2 sum = vec2(0.0);
-  for (int k = 0; k < LIT_FACE_RING_TAPS; ++k) sum += lit_face_ring_tap(1.0 + q.z, q.y, 1.0, q.w);
-  results[i] = vec4(lit_face_spread(q.x, sum), 0.0, 0.0, 0.0);
-}
-)";
-
-class MirrorLitFaceSpreadGlTest : public test::ComputeProgramTest {
-protected:
-  void SetUp() override { compileProgram(embeddedShaders().at("mirror_lit_face.glsl") + kSpreadMain); }
-  std::vector<float> run(const std::vector<float>& in) { return test::runPerVec4(program_, in); }
-};
-
 // A face lit at a grazing cosine beside its part's back lit head-on (teapot-back's hidden faces: own
 // coupling about 0.4, the ring 0.9): the walk brings half its light from the ring, so the face
 // reads the mean of the two halves, not its own (what it read before session 29). A face lit alike
 // all round keeps its own light; taps on another part (their entry more than two ring radii away
 // along the light) are left out, and with none left the face keeps its own.
-TEST_F(MirrorLitFaceSpreadGlTest, SpreadsTheRingsLightIntoTheFace) {
+TEST_F(MirrorLitFaceGlTest, SpreadsTheRingsLightIntoTheFace) {
   const float ring = 0.0206f;  // the issue's stone at 100 mm per unit, scene units
-  const std::vector<float> out = run({0.4f, 0.9f, 0.005f, ring,     //
+  const std::vector<float> out = run(kSpread, {0.4f, 0.9f, 0.005f, ring,     //
                                       0.6f, 0.6f, -0.01f, ring,     //
                                       0.4f, 0.9f, 3.0f * ring, ring,  //
                                       0.4f, 0.9f, -3.0f * ring, ring});

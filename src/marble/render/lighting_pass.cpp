@@ -1,7 +1,6 @@
 #include "marble/render/lighting_pass.h"
 
 #include <algorithm>
-#include <array>
 
 #include "marble/gl/checked_calls.h"
 #include "marble/render/frame_uniforms.h"
@@ -102,16 +101,15 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     chordDecayMm_ = std::max(diffusionAttenuationMm(m), 1.0e-3f);
     // A hidden lit face's light spread by the walk (shaders/mirror_lit_face.glsl).
     litFaceRingMm_ = walkRingRadiusMm(walkShape(m));
+    // The table per channel as segments, (ln T at node k, at node k + 1): the shader reads a
+    // segment's two ends in one indexed read per channel (slab_segment in lighting.frag.glsl).
+    for (int k = 0; k + 1 < kSlabTransportNodes; ++k)
+      for (int c = 0; c < 3; ++c) slabSegments_[c][k] = glm::vec2(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
     slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
   }
-  // The table per channel as segments, (ln T at node k, at node k + 1): the shader reads a segment's
-  // two ends in one indexed read per channel (slab_segment in lighting.frag.glsl).
-  std::array<glm::vec2, kSlabTransportNodes - 1> segments[3];
-  for (int k = 0; k + 1 < kSlabTransportNodes; ++k)
-    for (int c = 0; c < 3; ++c) segments[c][k] = glm::vec2(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, &segments[0][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, &segments[1][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, &segments[2][0].x);
+  glProgramUniform2fv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, &slabSegments_[0][0].x);
+  glProgramUniform2fv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, &slabSegments_[1][0].x);
+  glProgramUniform2fv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, &slabSegments_[2][0].x);
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_chord_decay", chordDecayMm_ * scene.mm_per_unit);

@@ -4,6 +4,7 @@
 // `--hdr`) -- or, for `marble`, the light entering the stone (read by the subsurface blur and
 // the post pass, which adds the reflected light), at the blur's resolution (half by default):
 // the blur spreads it over millimetres, so a quarter of the pixels carry it.
+#include <array>
 #include <optional>
 #include <utility>
 
@@ -59,6 +60,8 @@ private:
   PassTimer timer_;
   SlabTransport slab_;  // the transmission's table for the scattering coefficients in slabFor_
   float chordDecayMm_ = 0.0f;  // transmission_chord.glsl's decay per mm, for the coefficients in slabFor_
+  // slab_ per channel as segments (ln T at nodes k, k + 1), as lighting.frag.glsl's u_slab_segment_*
+  std::array<std::array<glm::vec2, kSlabTransportNodes - 1>, 3> slabSegments_{};
   float litFaceRingMm_ = 0.0f;  // mirror_lit_face.glsl's ring (walkRingRadiusMm), for the coefficients in slabFor_
   std::optional<std::pair<glm::vec3, glm::vec3>> slabFor_;  // (sigma_a_mm, sigma_s_mm)
 };

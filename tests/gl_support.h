@@ -84,6 +84,18 @@ inline GLuint linkTestProgram(std::initializer_list<GLuint> stages) {
   return program;
 }
 
+// Deletes a test's program. GL keeps a deleted program in use while it is current (OpenGL 4.5,
+// 7.3), so it is unbound first: left current, the next test's first clear would check its samplers
+// against units its owner no longer fills (the draw state check reports it, as NVIDIA's driver
+// would). Its sampler record goes too, since GL reuses the name.
+inline void deleteTestProgram(GLuint program) {
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  if (static_cast<GLuint>(current) == program) glUseProgram(0);
+  gl::forgetProgramSamplers(program);
+  glDeleteProgram(program);
+}
+
 // A compute program from one source string, for the tests that wrap a library file in a shader
 // of their own (pattern_gl_test, nearest_texel_gl_test): 0 where it does not compile, a compile or
 // link failure a test failure. The caller deletes it.
@@ -102,10 +114,7 @@ protected:
     program_ = compileComputeProgram("#version 450 core\n" + source);
     ASSERT_NE(program_, 0u);
   }
-  void TearDown() override {
-    gl::forgetProgramSamplers(program_);
-    glDeleteProgram(program_);
-  }
+  void TearDown() override { deleteTestProgram(program_); }
   GLuint program_ = 0;
 };
 

@@ -129,16 +129,9 @@ protected:
     return test::compileComputeProgram(src);
   }
 
-  // Deletes a program built above; the draw state check's list of its samplers goes with it
-  // (GL reuses the name).
-  static void deleteProgram(GLuint program) {
-    gl::forgetProgramSamplers(program);
-    glDeleteProgram(program);
-  }
-
   void TearDown() override {
     glDeleteBuffers(3, buffers_);
-    deleteProgram(program_);
+    test::deleteTestProgram(program_);
   }
 
   std::vector<glm::vec4> run(const Material& m, GLuint program) {
@@ -254,7 +247,7 @@ TEST_F(PatternGlTest, TurbulenceGridMatchesTheReference) {
       ASSERT_NE(program, 0u);
       glBindTextureUnit(kTurbulenceGridUnit, texture);
       const std::vector<glm::vec4> gpu = run(m, program);
-      deleteProgram(program);
+      test::deleteTestProgram(program);
       float worst = 0.0f;
       for (int i = 0; i < kPoints; ++i) {
         const glm::vec3 p(positions_[static_cast<size_t>(i)]);
@@ -295,7 +288,7 @@ TEST_F(PatternGlTest, VeinModelGpuMatchesCpu) {
         glBindTextureUnit(kTurbulenceGridUnit, texture.update(m));
       }
       const std::vector<glm::vec4> gpu = run(m, program);
-      if (grid) deleteProgram(program);
+      if (grid) test::deleteTestProgram(program);
       int off = 0;
       double sum = 0.0;
       for (int i = 0; i < kPoints; ++i) {
@@ -342,7 +335,7 @@ TEST_F(PatternGlTest, SeenThroughVeinsGpuMatchCpu) {
                                         kSeenComputeMain);
     ASSERT_NE(program, 0u);
     const std::vector<glm::vec4> gpu = run(m, program);
-    deleteProgram(program);
+    test::deleteTestProgram(program);
     int off = 0, seenDiffers = 0;
     double sum = 0.0;
     for (int i = 0; i < kPoints; ++i) {

@@ -69,8 +69,7 @@ std::vector<uint32_t> fragmentsPerTriangle(const std::vector<glm::vec3>& positio
   std::vector<uint32_t> out(zero.size());
   glGetNamedBufferSubData(counts.id(), 0, static_cast<GLsizeiptr>(out.size() * sizeof(uint32_t)), out.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glUseProgram(0);
-  glDeleteProgram(program);
+  test::deleteTestProgram(program);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   return out;
 }

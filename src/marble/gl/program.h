@@ -43,6 +43,9 @@ public:
   void set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
   void set(const char* name, const glm::vec2& v) const { glProgramUniform2f(id(), location(name), v.x, v.y); }
   void set(const char* name, const glm::vec3& v) const { glProgramUniform3f(id(), location(name), v.x, v.y, v.z); }
+  void set(const char* name, const glm::vec4& v) const {
+    glProgramUniform4f(id(), location(name), v.x, v.y, v.z, v.w);
+  }
   void set(const char* name, const glm::mat4& m) const {
     glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, &m[0][0]);
   }

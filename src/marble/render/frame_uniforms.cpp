@@ -9,8 +9,7 @@ void setFrameUniforms(const gl::Program& p, const CameraMatrices& camera, const 
   p.set("u_inv_view_proj", camera.invViewProj);
   p.set("u_view_proj", camera.viewProj);
   // Its last row, the clip w of a point (its view depth): set once, not rebuilt per pixel.
-  const glm::vec4 depthRow = glm::row(camera.viewProj, 3);
-  glProgramUniform4f(p.id(), p.location("u_view_depth_row"), depthRow.x, depthRow.y, depthRow.z, depthRow.w);
+  p.set("u_view_depth_row", glm::row(camera.viewProj, 3));
   p.set("u_camera_pos", camera.position);
   p.set("u_light_view_proj", lightM.viewProj);
   p.set("u_light_pos", lightM.position);

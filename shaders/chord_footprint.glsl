@@ -21,17 +21,22 @@
 #ifndef CHORD_FOOTPRINT_GLSL
 #define CHORD_FOOTPRINT_GLSL
 
-// Where the chord's texels are read for the exit P (normal N; P_in its inward-offset exit): on a
-// face turned from the light, P's own light ray at P_in's distance from the light (P - 2 texels
-// (N.L) L: the offset's part along the light only), blended in over N.L 0 ... -0.2 so the read
-// moves continuously where the face turns. On a lit face (N.L >= 0) P_in itself, as before: the
-// chord there is 0 or the light's silhouette, where the offset is the guard against acne and the
-// sideways part is what keeps the read off the face's own texels.
-vec3 chord_read_point(vec3 P, vec3 N, vec3 P_in) {
-  vec3 L = light_vector(P);
-  float NoL = dot(N, L);
-  float turned = smoothstep(0.0, 0.2, -NoL);
-  return mix(P_in, P - (2.0 * u_light_texel_world * NoL) * L, turned);
+// Where the chord's texels are read for the exit P on its own light ray (L toward the light, NoL =
+// N.L < 0: a face turned from the light), at P_in's distance from the light: P - 2 texels (N.L) L,
+// the inward offset's part along the light only.
+vec3 chord_read_point(vec3 P, vec3 L, float NoL) {
+  return P - (2.0 * u_light_texel_world * NoL) * L;
+}
+
+// How much of the exit's own ray's read (chord s_at) replaces P_in's (s_in). Where the entry is the
+// exit face's parallel (a slab, a sheet, a shell, a body's far side: what the gather and the tests
+// TransmissionSlab, TransmissionShell, TransmissionSheet model) P_in's ray finds the shorter chord,
+// (T - 2 texels) / c against T / c - 2 texels c (c = -N.L, T the thickness along the normal), and
+// P_in's read is kept as it was. Only where P_in's read finds the longer chord has its sideways step
+// crossed onto a surface nearer the light (a shadow's caster: teapot-back's knob beside its lid rim),
+// and there the exit's own ray's read is taken, over one texel of disagreement.
+float chord_own_ray_share(float s_in, float s_at) {
+  return smoothstep(0.0, u_light_texel_world, s_in - s_at);
 }
 
 // The short chord's footprint: below `from` of chord (scene units; blended out by 2 from, as the

@@ -182,10 +182,19 @@ const float DISC_TAP_RADIUS = 0.35355;  // the centre disc's area-median radius 
 // light ray, not two texels sideways across a shadow edge) and, below GLOW_FROM_MM, spread over the
 // walk's footprint of entries (chord_footprint; chord_footprint.glsl says why and what it costs).
 vec2 transmission_thickness(vec3 P, vec3 N, vec3 P_in) {
-  vec3 at = chord_read_point(P, N, P_in);
-  vec2 s_cos = transmission_chord(P_in, at);
-  s_cos.x = chord_footprint(at, light_distance_of(P_in), s_cos.x, u_lit_face_ring_mm / u_mm_per_unit,
-                            GLOW_FROM_MM / u_mm_per_unit);
+  vec2 s_cos = transmission_chord(P_in, P_in);
+  vec3 L = light_vector(P);
+  float NoL = dot(N, L);
+  if (NoL < 0.0) {
+    vec3 at = chord_read_point(P, L, NoL);
+    vec2 own = transmission_chord(P_in, at);
+    float share = chord_own_ray_share(s_cos.x, own.x);
+    if (share > 0.0) {
+      own.x = chord_footprint(at, light_distance_of(P_in), own.x, u_lit_face_ring_mm / u_mm_per_unit,
+                              GLOW_FROM_MM / u_mm_per_unit);
+      s_cos = mix(s_cos, own, share);
+    }
+  }
   return s_cos;
 }
 

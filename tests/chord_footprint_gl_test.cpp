@@ -10,7 +10,8 @@
 // Negative control, checked by hand: chord_read_point returning P_in (main's read) fails
 // TheReadStaysOnTheExitsOwnLightRay (the chord read is the shadow's 0.75, not the rim's 0.3);
 // chord_footprint returning s (no footprint) fails AShadowWithinTheWalksRingDarkensAShortChord;
-// both pass OnOneSurfaceTheFootprintKeepsTheChord and ALitFaceKeepsItsRead.
+// chord_own_ray_share returning 0 (P_in's read kept everywhere) fails
+// TheOwnRaysReadOnlyWhereTheOffsetCrossedOntoANearerEntry; all pass OnOneSurfaceTheFootprintKeepsTheChord.
 #include <gtest/gtest.h>
 
 #include <epoxy/gl.h>
@@ -48,7 +49,7 @@ vec3 light_vector(vec3 p) { return vec3(0.0, 0.0, -1.0); }
 )";
 
 // Per exit (P, N): .x the chord read at chord_read_point, .y after chord_footprint, .z the chord
-// read at P_in itself (main's read before the change).
+// read at P_in itself (main's read before the change), .w chord_own_ray_share of the two.
 const char* kComputeMain = R"(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer Points { vec4 points[]; };
@@ -59,10 +60,11 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   vec3 P = points[2 * i].xyz, N = points[2 * i + 1].xyz;
   vec3 P_in = P - N * (2.0 * u_light_texel_world);
-  vec3 at = chord_read_point(P, N, P_in);
-  float s = transmission_chord(P_in, at).x;
-  results[i] = vec4(s, chord_footprint(at, light_distance_of(P_in), s, u_ring, u_from),
-                    transmission_chord(P_in, P_in).x, 0.0);
+  vec3 L = light_vector(P);
+  vec3 at = chord_read_point(P, L, dot(N, L));
+  float s = transmission_chord(P_in, at).x, s_in = transmission_chord(P_in, P_in).x;
+  results[i] = vec4(s, chord_footprint(at, light_distance_of(P_in), s, u_ring, u_from), s_in,
+                    chord_own_ray_share(s_in, s));
 }
 )";
 
@@ -79,7 +81,7 @@ protected:
 
   // The map: entryAt(x of the texel's centre) in every row; cosine 1.
   template <class Entry>
-  std::vector<std::array<float, 3>> read(Entry entryAt, const std::vector<Exit>& exits) {
+  std::vector<std::array<float, 4>> read(Entry entryAt, const std::vector<Exit>& exits) {
     std::vector<float> texels(2 * kMap * kMap);
     for (int y = 0; y < kMap; ++y)
       for (int x = 0; x < kMap; ++x) {
@@ -99,8 +101,8 @@ protected:
     glProgramUniform1f(program_, glGetUniformLocation(program_, "u_from"), kFrom);
     glBindTextureUnit(0, map.id());
     const std::vector<float> result = test::runPerVec4(program_, points);
-    std::vector<std::array<float, 3>> r;
-    for (size_t i = 0; i < exits.size(); ++i) r.push_back({result[4 * i], result[4 * i + 1], result[4 * i + 2]});
+    std::vector<std::array<float, 4>> r;
+    for (size_t i = 0; i < exits.size(); ++i) r.push_back({result[4 * i], result[4 * i + 1], result[4 * i + 2], result[4 * i + 3]});
     return r;
   }
 };
@@ -141,11 +143,15 @@ TEST_F(ChordFootprintGlTest, OnOneSurfaceTheFootprintKeepsTheChord) {
   EXPECT_EQ(longChord[0][1], longChord[0][0]);
 }
 
-// On a face toward the light (N.L > 0) the read is P_in's, as before: the offset's sideways part
-// is what keeps the read off the face's own texels there.
-TEST_F(ChordFootprintGlTest, ALitFaceKeepsItsRead) {
-  const auto got = read(rimBesideShadow, {{0.5f * kTexel, 0.0f, 0.8f, -0.6f}});
-  EXPECT_EQ(got[0][0], got[0][2]);
+// Where P_in's sideways step finds a nearer entry than the exit's own ray (the shadow's caster) the
+// own ray's read is taken whole; where both find the same surface (here one entry plane across the
+// light: the same chord), P_in's read is kept, as before the change.
+TEST_F(ChordFootprintGlTest, TheOwnRaysReadOnlyWhereTheOffsetCrossedOntoANearerEntry) {
+  const auto edge = read(rimBesideShadow, {{0.5f * kTexel, 0.0f, 0.8f, 0.6f}});
+  EXPECT_EQ(edge[0][3], 1.0f);
+  const auto flat = read([](float) { return kRimEntry; }, {{0.5f * kTexel, 0.0f, 0.8f, 0.6f}});
+  EXPECT_NEAR(flat[0][0], flat[0][2], 1e-5);
+  EXPECT_EQ(flat[0][3], 0.0f);
 }
 
 }  // namespace

@@ -16,7 +16,15 @@
 // of them are in the shadow. So below a short chord half the light is the straight chord's and
 // half the mean over a ring of the light map's texels at the walk's radius, each tap's own chord
 // (as s29-teapot's lit_face_spread splits the walk: the inner half at the entry, the outer half at
-// its median radius).
+// its median radius). Both only where P_in's read finds the longer chord (chord_own_ray_share):
+// elsewhere P_in's read as before, which the gather's slanted slab, shell and sheet tests hold to.
+// Ten reference scenes against main: teapot-back +0.0034 SSIM, the mean +0.0003, buddha-side -0.0006
+// the largest fall. Cost (docs/performance.md, same title): +7.8 M instructions of the dragon's
+// 800^2 camera frame (a second transmission_chord read and the ring; llvmpipe runs both ways of the
+// branch). Known leftover: where the lid's open gap lets the light ray from a face turned away pass
+// no stone (teapot-back rows 83-84, x 122-123), the map's texel is the face itself, seen from behind
+// (a mesh with holes draws both faces into the map), and its chord is a fraction of a mm: a faint
+// spot 0.025 against Cycles' 0.010 (Cycles has the spot too; SSIM there above main's).
 
 #ifndef CHORD_FOOTPRINT_GLSL
 #define CHORD_FOOTPRINT_GLSL

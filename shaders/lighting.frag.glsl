@@ -177,10 +177,11 @@ const float DISC_TAP_RADIUS = 0.35355;  // the centre disc's area-median radius 
 // map the four texels' chords are averaged by the light each lets through, not their entries.
 // Also returns, in .y, the cosine at which the light entered there (interpolated with the same
 // weights; light_depth.frag.glsl stores it beside the distance). transmission_chord.glsl: the reads.
-// For the exit P (normal N) the chord is P_in's (P_in = P - 2 texels N, against acne: its distance
-// from the light), its texels read at chord_read_point (on a face turned from the light P's own
-// light ray, not two texels sideways across a shadow edge) and, below GLOW_FROM_MM, spread over the
-// walk's footprint of entries (chord_footprint; chord_footprint.glsl says why and what it costs).
+// For the exit P (normal N) the chord is P_in's (P_in = P - 2 texels N, against acne), read around
+// P_in; on a face turned from the light also along P's own light ray (chord_read_point), which is
+// taken where P_in's sideways step found a longer chord, a shadow's caster (chord_own_ray_share),
+// and there, below GLOW_FROM_MM, spread over the walk's footprint of entries (chord_footprint;
+// chord_footprint.glsl says why, what it gains and what it costs).
 vec2 transmission_thickness(vec3 P, vec3 N, vec3 P_in) {
   vec2 s_cos = transmission_chord(P_in, P_in);
   vec3 L = light_vector(P);

@@ -7,11 +7,12 @@
 // Checked on the functions themselves, compiled into a compute shader with a light travelling
 // along +z over a small map of our own: a shadow caster's entries left of x = 0 (a long chord),
 // a thin rim's right of it (a short one).
-// Negative control, checked by hand: chord_read_point returning P_in (main's read) fails
-// TheReadStaysOnTheExitsOwnLightRay (the chord read is the shadow's 0.75, not the rim's 0.3);
-// chord_footprint returning s (no footprint) fails AShadowWithinTheWalksRingDarkensAShortChord;
-// chord_own_ray_share returning 0 (P_in's read kept everywhere) fails
-// TheOwnRaysReadOnlyWhereTheOffsetCrossedOntoANearerEntry; all pass OnOneSurfaceTheFootprintKeepsTheChord.
+// Negative controls, checked by hand (each rebuilt): chord_read_point stepping two texels sideways
+// of the exit's ray, as P_in's read does, fails TheReadStaysOnTheExitsOwnLightRay (and the two
+// tests after it); chord_footprint returning s (no footprint) fails only
+// AShadowWithinTheWalksRingDarkensAShortChord; chord_own_ray_share returning 0 (P_in's read kept
+// everywhere, main's behaviour) fails only TheOwnRaysReadOnlyWhereTheOffsetCrossedOntoANearerEntry.
+// OnOneSurfaceTheFootprintKeepsTheChord passes in all three (it guards the footprint's neutrality).
 #include <gtest/gtest.h>
 
 #include <epoxy/gl.h>

@@ -84,6 +84,7 @@ float thickness_at(vec3 p) {
 #include "mirror_march_phase.glsl"
 #include "mirror_lit_face.glsl"
 #include "transmission_chord.glsl"  // the four texels of the light's map; the transmission's chord
+#include "chord_footprint.glsl"     // where the chord is read at a rim; the walk's footprint of a short chord
 
 // Where the light entered the stone along the light's ray through p, read from the light's map
 // as transmission_thickness() does (the four texels around p, bilinear, texels that saw nothing
@@ -97,22 +98,6 @@ vec3 light_entry_at(vec3 p) {
   float weight = w.x + w.y + w.z + w.w;
   if (weight <= 0.0) return vec3(0.0);
   return vec3(dot(w, entered) / weight, dot(w, cosines) / weight, weight);
-}
-
-// The thickness the transmission uses: as thickness_at(), but the light's distance map is
-// interpolated bilinearly between the four texels around p instead of read at the nearest one.
-// Within one texel the true entry distance changes by a texel times the surface's slope seen
-// from the light; read nearest, those steps (several texels' worth at grazing light, where the
-// inward offset cannot hide them) come out of exp(-sigma_tr s) as speckle on the lit side and as
-// jagged edges where the glow fades (seen on the built-in torus at 100 mm per unit). Texels that
-// saw nothing are left out (blending in their "nothing hit" distance would invent huge entry
-// distances: the reason the map itself is sampled nearest); where none of the four saw the
-// object, nothing is in the way and s = 0, as in thickness_at(). Across an edge of the light's
-// map the four texels' chords are averaged by the light each lets through, not their entries.
-// Also returns, in .y, the cosine at which the light entered there (interpolated with the same
-// weights; light_depth.frag.glsl stores it beside the distance). transmission_chord.glsl: the reads.
-vec2 transmission_thickness(vec3 p) {
-  return transmission_chord(p);
 }
 
 // Light carried through s mm of stone, relative to what the same stone reflects: Cycles' random
@@ -179,6 +164,40 @@ const int GLOW_LANE_ANGLES = GLOW_ANGLES / 4;  // each texel of a 2 x 2 quad rea
 const float GLOW_MIN_RADIUS_MM = 2.0;  // S's floor (and 4 light texels)
 const float GLOW_FROM_MM = 3.0;
 const float DISC_TAP_RADIUS = 0.35355;  // the centre disc's area-median radius over S: (S / 2) / sqrt(2)
+
+// The thickness the transmission uses: as thickness_at(), but the light's distance map is
+// interpolated bilinearly between the four texels around p instead of read at the nearest one.
+// Within one texel the true entry distance changes by a texel times the surface's slope seen
+// from the light; read nearest, those steps (several texels' worth at grazing light, where the
+// inward offset cannot hide them) come out of exp(-sigma_tr s) as speckle on the lit side and as
+// jagged edges where the glow fades (seen on the built-in torus at 100 mm per unit). Texels that
+// saw nothing are left out (blending in their "nothing hit" distance would invent huge entry
+// distances: the reason the map itself is sampled nearest); where none of the four saw the
+// object, nothing is in the way and s = 0, as in thickness_at(). Across an edge of the light's
+// map the four texels' chords are averaged by the light each lets through, not their entries.
+// Also returns, in .y, the cosine at which the light entered there (interpolated with the same
+// weights; light_depth.frag.glsl stores it beside the distance). transmission_chord.glsl: the reads.
+// For the exit P (normal N) the chord is P_in's (P_in = P - 2 texels N, against acne), read around
+// P_in; on a face turned from the light also along P's own light ray (chord_read_point), which is
+// taken where P_in's sideways step found a longer chord, a shadow's caster (chord_own_ray_share),
+// and there, below GLOW_FROM_MM, spread over the walk's footprint of entries (chord_footprint;
+// chord_footprint.glsl says why, what it gains and what it costs).
+vec2 transmission_thickness(vec3 P, vec3 N, vec3 P_in) {
+  vec2 s_cos = transmission_chord(P_in, P_in);
+  vec3 L = light_vector(P);
+  float NoL = dot(N, L);
+  if (NoL < 0.0) {
+    vec3 at = chord_read_point(P, L, NoL);
+    vec2 own = transmission_chord(P_in, at);
+    float share = chord_own_ray_share(s_cos.x, own.x);
+    if (share > 0.0) {
+      own.x = chord_footprint(at, light_distance_of(P_in), own.x, u_lit_face_ring_mm / u_mm_per_unit,
+                              GLOW_FROM_MM / u_mm_per_unit);
+      s_cos = mix(s_cos, own, share);
+    }
+  }
+  return s_cos;
+}
 
 // The gather's scale S for a chord s0 (scene units).
 float glow_scale(float s0) {
@@ -342,7 +361,7 @@ vec4 quad_across_y(vec4 v) {
 // pass's cost of the gather about a quarter of the 24-tap one (docs/quality.md, "Eleventh
 // session"). Must run in uniform control flow (derivatives): main() calls it before any texel
 // returns, and background texels take part with nothing (`stone` false; main() keeps NaNs out of
-// their P_in and s_cos with a select). s_cos: transmission_thickness(P_in), from main(); N the
+// their P_in and s_cos with a select). s_cos: transmission_thickness(P, N, P_in), from main(); N the
 // exit's normal (slanted_frame's parallel-faces check).
 vec3 glow_rings_shared(bool stone, vec3 P_in, vec2 s_cos, vec3 N) {
   float s0 = s_cos.x, cos0 = s_cos.y;
@@ -535,7 +554,7 @@ vec3 exit_depth_share(vec3 P, vec3 P_in, float s) {
 // albedo): through the surface from the light and the environment, and through the stone from
 // the light's far side. What the surface reflects is added by the post pass
 // (marble_reflected), so changing only the gloss re-runs neither this pass nor the blur.
-// P_in and s_cos: the transmission's exit and transmission_thickness(P_in), computed once in main()
+// P_in and s_cos: the transmission's exit and transmission_thickness(P, N, P_in), computed once in main()
 // for this and glow_rings_shared. bounce: light bounced off the object's other lit parts
 // (marble_bounce, bounce.glsl, gathered by the bounce pass), computed in main(), which also lends it
 // to the hidden mirror's face (hidden_mirror.glsl).
@@ -619,7 +638,7 @@ void main() {
   vec3 glow_rings = vec3(0.0);
   if (u_mode == MODE_MARBLE) {
     P_in = P - N * (2.0 * u_light_texel_world);
-    s_cos = transmission_thickness(P_in);
+    s_cos = transmission_thickness(P, N, P_in);
     // Before any texel returns: the quad shares it (derivatives need all four in step).
     glow_rings = glow_rings_shared(stone, P_in, s_cos, N);
   }

@@ -52,9 +52,11 @@ vec4 light_texels_at(vec3 p, out vec4 entered, out vec4 cosines) {
 // an open wall or a grazing face, s26-teapot2) tells nothing of the light reaching p and is left
 // out, as a texel that saw nothing is; where all four are such, the bilinear read as before (its
 // zero chord takes the exit's own cosine, entry_cosine in lighting.frag.glsl).
-vec2 transmission_chord(vec3 p) {
+// The texels are read around `at`, the chords taken from p's distance to the light: at = p, or p
+// moved across the light (chord_footprint.glsl, chord_read_point: the exit's own light ray).
+vec2 transmission_chord(vec3 p, vec3 at) {
   vec4 entered, cosines;
-  vec4 w = light_texels_at(p, entered, cosines);
+  vec4 w = light_texels_at(at, entered, cosines);
   float weight = w.x + w.y + w.z + w.w;
   if (weight <= 0.0) return vec2(0.0);
   float d = light_distance_of(p);

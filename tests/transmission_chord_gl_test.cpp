@@ -47,7 +47,7 @@ layout(std430, binding = 0) readonly buffer Points { vec4 points[]; };
 layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  results[i] = vec4(transmission_chord(points[i].xyz), 0.0, 0.0);
+  results[i] = vec4(transmission_chord(points[i].xyz, points[i].xyz), 0.0, 0.0);
 }
 )";
 

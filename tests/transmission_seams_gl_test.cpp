@@ -319,9 +319,9 @@ void expectSeamsWithBrokenShader(const std::string& file, const ShaderEdits& edi
 TEST(TransmissionSeamsControl, WithoutTheInwardOffsetThereAreSeams) {
   expectSeamsWithBrokenShader("lighting.frag.glsl",
                               {{"P_in = P - N * (2.0 * u_light_texel_world);\n"
-                                "    s_cos = transmission_thickness(P_in);",
+                                "    s_cos = transmission_thickness(P, N, P_in);",
                                 "P_in = P;\n"
-                                "    s_cos = vec2(transmission_thickness(P_in).x, 1.0);"},
+                                "    s_cos = vec2(transmission_thickness(P, N, P_in).x, 1.0);"},
                                {"return mix(max(NoL, 0.0), s_cos.y,", "return mix(s_cos.y, s_cos.y,"}},
                               "no-offset");
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "marble/gl/checked_calls.h"
+#include "marble/gl/packed_float_pair.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -102,14 +103,15 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     // A hidden lit face's light spread by the walk (shaders/mirror_lit_face.glsl).
     litFaceRingMm_ = walkRingRadiusMm(walkShape(m));
     // The table per channel as segments, (ln T at node k, at node k + 1): the shader reads a
-    // segment's two ends in one indexed read per channel (slab_segment in lighting.frag.glsl).
+    // segment's two ends in one indexed read per channel (slab_segment in lighting.frag.glsl), the
+    // two floats' bits packed into one 64-bit element (node k in the low word: unpackDouble2x32's x).
     for (int k = 0; k + 1 < kSlabTransportNodes; ++k)
-      for (int c = 0; c < 3; ++c) slabSegments_[c][k] = glm::vec2(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
+      for (int c = 0; c < 3; ++c) slabSegments_[c][k] = gl::packFloatPair(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
     slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
   }
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, &slabSegments_[0][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, &slabSegments_[1][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, &slabSegments_[2][0].x);
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, slabSegments_[0].data());
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, slabSegments_[1].data());
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, slabSegments_[2].data());
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_chord_decay", chordDecayMm_ * scene.mm_per_unit);

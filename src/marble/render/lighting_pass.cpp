@@ -17,18 +17,20 @@ LightingPass::LightingPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
   // The default mode's, so a broken shader shows at once.
-  programs_.get(variantFor(RenderMode::Marble, environmentDefine(RenderSettings{}, nullptr)));
+  programs_.get(variantFor(RenderMode::Marble, environmentDefine(RenderSettings{}, nullptr), Light{}.type == LightType::Directional));
 }
 
-std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment) {
-  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment};
+std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment, bool directional) {
+  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment,
+          std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
 }
 
 void LightingPass::compileAll() {
   for (size_t i = 0; i < renderModeNames().size(); ++i)
     for (int kind : {kEnvStudio, kEnvMap})
       if (static_cast<RenderMode>(i) != RenderMode::Floor)
-        programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind)));
+        for (bool directional : {false, true})
+          programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind), directional));
 }
 
 void LightingPass::resize(int width, int height, int enteringScale, GLuint depthTexture, GLuint enteringDepth) {
@@ -84,9 +86,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_ENTRY, in.bounceEntry);
   glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_LAYERS, in.lightLayers);
   const int envKind = environmentKind(settings, environment);
-  const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
-    return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));
-  });
+  const gl::Program& p = programs_.get(
+      (static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind)) * 2u + (lightM.directional ? 1u : 0u),
+      [&] { return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind), lightM.directional); });
   setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));

@@ -51,7 +51,8 @@ public:
   void compileAll();
 
 private:
-  static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment);
+  // The light's kind a constant of the program (LIGHT_DIRECTIONAL, shaders/light_geometry.glsl).
+  static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment, bool directional);
   gl::ProgramVariants programs_;
   gl::Texture hdr_, entering_, mirrorHit_;
   gl::Framebuffer fbo_, enteringFbo_;

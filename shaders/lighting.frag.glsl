@@ -49,9 +49,14 @@ const int SLAB_NODES = 40;  // marble::kSlabTransportNodes
 // a segment's two ends in one indexed read per channel, not two reads of the node array: the
 // lighting pass of the dragon's 800^2 camera frame 0.74 M instructions fewer (llvmpipe reads an array
 // indexed per lane lane by lane; docs/performance.md, "Twenty-ninth session: ... s29-cost").
-uniform vec2 u_slab_segment_r[SLAB_NODES - 1];
-uniform vec2 u_slab_segment_g[SLAB_NODES - 1];
-uniform vec2 u_slab_segment_b[SLAB_NODES - 1];
+// Each segment's two floats packed into one 64-bit uniform (bits, not a value: ln T at node k in
+// the low word, at node k + 1 in the high; LightingPass), so that llvmpipe's lane-by-lane read
+// loads one 64-bit element per lane, not two floats: the lighting pass of the same frame 1.4 M
+// fewer, the pictures byte-equal (docs/performance.md, "Thirtieth session: ... s30-cost").
+uniform double u_slab_segment_r[SLAB_NODES - 1];
+uniform double u_slab_segment_g[SLAB_NODES - 1];
+uniform double u_slab_segment_b[SLAB_NODES - 1];
+vec2 slab_segment_ends(double bits) { return uintBitsToFloat(unpackDouble2x32(bits)); }
 uniform float u_slab_tau_max;
 uniform vec3 u_slab_sigma_t_mm;  // extinction sigma_a + sigma_s per mm
 uniform float u_translucency;
@@ -114,7 +119,8 @@ vec3 light_entry_at(vec3 p) {
 vec3 slab_x(vec3 tau) { return sqrt(clamp(tau / u_slab_tau_max, 0.0, 1.0)) * float(SLAB_NODES - 1); }
 void slab_segment(vec3 x, out vec3 lo, out vec3 slope) {
   ivec3 i = min(ivec3(x), ivec3(SLAB_NODES - 2));
-  vec2 r = u_slab_segment_r[i.r], g = u_slab_segment_g[i.g], b = u_slab_segment_b[i.b];
+  vec2 r = slab_segment_ends(u_slab_segment_r[i.r]), g = slab_segment_ends(u_slab_segment_g[i.g]),
+       b = slab_segment_ends(u_slab_segment_b[i.b]);
   lo = vec3(r.x, g.x, b.x);
   vec3 hi = vec3(r.y, g.y, b.y);
   slope = hi - lo;

@@ -54,6 +54,22 @@ TEST_F(PassFixture, GlossChangeReRunsOnlyThePostPassAndStillChangesThePicture) {
   EXPECT_EQ(meanAbsDiff(after, freshRender("sphere", s)), 0.0);
 }
 
+// The lighting and post passes compile the light's kind into their programs (LIGHT_DIRECTIONAL,
+// shaders/light_geometry.glsl): a renderer whose light turns from a point light to a directional
+// one and back must draw what fresh renderers draw, so each frame used the program of its own kind.
+TEST_F(PassFixture, LightKindChangeUsesTheProgramOfThatKindAndMatchesAFreshRender) {
+  renderer.setMesh(builtinMesh("sphere"));
+  Scene s = marbleScene("sphere", 64);
+  const ImageRGBA8 point = renderImage(renderer, s);
+  EXPECT_EQ(meanAbsDiff(point, freshRender("sphere", s)), 0.0);
+  s.light.type = LightType::Directional;
+  const ImageRGBA8 directional = renderImage(renderer, s);
+  EXPECT_GT(meanAbsDiff(point, directional), 0.2) << "another light: another picture";
+  EXPECT_EQ(meanAbsDiff(directional, freshRender("sphere", s)), 0.0);
+  s.light.type = LightType::Point;
+  EXPECT_EQ(meanAbsDiff(renderImage(renderer, s), point), 0.0);
+}
+
 // isCurrent: whether a target holding a frame still holds what render() would draw (the viewer
 // and the benchmark skip such frames). Any change of the scene, model or size, of what the
 // renderer holds (mesh, environment), or a later frame drawn elsewhere makes it false; a target

@@ -28,16 +28,32 @@ void setBounceGridUniforms(const gl::Program& program, const BounceGridLayout& g
 }
 
 BouncePass::BouncePass(const ShaderLibrary& shaders)
-    : program_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
+    : gatherPrograms_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_gather.frag.glsl"}}),
       deinterleaveProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_deinterleave.frag.glsl"}}),
       mergeProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_merge.frag.glsl"}}),
       entryProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_entry.frag.glsl"}}),
       gridDepthProgram_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "bounce_grid_depth.frag.glsl"}}),
       markProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_mark.comp.glsl"}}),
-      refineProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       refineMergeProgram_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_merge.comp.glsl"}}),
+      refinePrograms_(shaders, {{GL_COMPUTE_SHADER, "bounce_refine_gather.comp.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
+  // The default light's, so a broken shader shows at once.
+  const bool directional = Light{}.type == LightType::Directional;
+  gatherProgram(directional);
+  refineProgram(directional);
   clearFurtherGrid();
+}
+
+const gl::Program& BouncePass::gatherProgram(bool directional) {
+  return gatherPrograms_.get(directional ? 1u : 0u, [&] {
+    return std::vector<std::string>{std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+  });
+}
+
+const gl::Program& BouncePass::refineProgram(bool directional) {
+  return refinePrograms_.get(directional ? 1u : 0u, [&] {
+    return std::vector<std::string>{std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+  });
 }
 
 void BouncePass::clearFurtherGrid() {
@@ -94,7 +110,9 @@ void BouncePass::run(const BounceInputs& in, const CameraMatrices& camera, const
   // light's map: view_setup.h).
   glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_LAYERS, in.lightLayers);
   const float layerTexel = 2.0f * kBoundingRadius / static_cast<float>(std::max(in.lightLayersSize, 1));
-  for (const gl::Program* p : {&program_, &refineProgram_, &entryProgram_}) p->set("u_light_layer_texel_world", layerTexel);
+  for (const gl::Program* p :
+       std::initializer_list<const gl::Program*>{&gatherProgram(lightM.directional), &refineProgram(lightM.directional), &entryProgram_})
+    p->set("u_light_layer_texel_world", layerTexel);
   // A run without the gather has the last gather's view (only the material changed since).
   if (gather || gridDepthsStale_) {
     fillGridDepths(rect);
@@ -165,9 +183,10 @@ void BouncePass::markRefined(const CameraMatrices& camera, const LightMatrices& 
 void BouncePass::gatherRefined(const CameraMatrices& camera, const LightMatrices& lightM, const Light& light,
                                float lightTexelWorld) {
   glBindImageTexture(shader::IMAGE_BOUNCE_REFINED_FIRST, refinedFirst_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  setFrameUniforms(refineProgram_, camera, lightM, light, lightTexelWorld);
-  refineProgram_.set("u_scale", scale_ / 2);
-  glUseProgram(refineProgram_.id());
+  const gl::Program& refine = refineProgram(lightM.directional);
+  setFrameUniforms(refine, camera, lightM, light, lightTexelWorld);
+  refine.set("u_scale", scale_ / 2);
+  glUseProgram(refine.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, refineList_.id());
   gl::dispatchComputeIndirect(0);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -258,9 +277,10 @@ void BouncePass::gatherBounces(const CameraMatrices& camera, const LightMatrices
   glViewport(0, 0, width_, height_);
   gl::clearFramebuffer(firstFbo_.id(), GL_COLOR, 0, kNone);
   scissorTo(scaledDown(rect, scale_));
-  setFrameUniforms(program_, camera, lightM, light, lightTexelWorld);
-  program_.set("u_scale", scale_);
-  gl::drawFullscreenTriangle(program_.id(), emptyVao_.id());
+  const gl::Program& gather = gatherProgram(lightM.directional);
+  setFrameUniforms(gather, camera, lightM, light, lightTexelWorld);
+  gather.set("u_scale", scale_);
+  gl::drawFullscreenTriangle(gather.id(), emptyVao_.id());
   // Off before the next clear, which the scissor would cut too. Texels outside the cut keep an
   // earlier frame's values (or a new texture's undefined ones); the readers did not reach them
   // while every texel of a draw's rectangle was shaded, but the background skip (BounceGridDepth)

@@ -29,6 +29,7 @@
 // texels whose pixel is stone, as the lighting pass does: about half of each grid's scissor
 // rectangle is background on the dragon.
 #include "marble/gl/program.h"
+#include "marble/gl/program_variants.h"
 #include "marble/render/further_radiosity.h"
 #include "marble/render/bounce_grid_depth.h"
 #include "marble/render/pass_timer.h"
@@ -112,8 +113,15 @@ private:
                     float lightTexelWorld);
   // The further bounces' grid on its unit, and its matrix, for a merge program.
   void bindFurtherGrid(const gl::Program& program) const;
-  gl::Program program_, deinterleaveProgram_, mergeProgram_, entryProgram_, gridDepthProgram_;
-  gl::Program markProgram_, refineProgram_, refineMergeProgram_;
+  // The first bounce's gather and the refinement's gather for the light's kind, a constant of their
+  // programs (LIGHT_DIRECTIONAL, shaders/light_geometry.glsl): they ask for the light's vector and
+  // distance at every sample.
+  const gl::Program& gatherProgram(bool directional);
+  const gl::Program& refineProgram(bool directional);
+  gl::ProgramVariants gatherPrograms_;  // gatherProgram()
+  gl::Program deinterleaveProgram_, mergeProgram_, entryProgram_, gridDepthProgram_;
+  gl::Program markProgram_, refineMergeProgram_;
+  gl::ProgramVariants refinePrograms_;  // refineProgram()
   gl::VertexArray emptyVao_;
   gl::Texture first_, evened_, bounce_, entry_, refinedFirst_;  // evened: the pattern evened out
   gl::Framebuffer firstFbo_, evenedFbo_, fbo_, entryFbo_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "marble/gl/checked_calls.h"
+#include "marble/gl/packed_float_pair.h"
 #include "marble/render/frame_uniforms.h"
 #include "marble/render/material_uniforms.h"
 #include "marble/render/shader_constants.h"
@@ -16,18 +17,20 @@ LightingPass::LightingPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "lighting.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
   // The default mode's, so a broken shader shows at once.
-  programs_.get(variantFor(RenderMode::Marble, environmentDefine(RenderSettings{}, nullptr)));
+  programs_.get(variantFor(RenderMode::Marble, environmentDefine(RenderSettings{}, nullptr), Light{}.type == LightType::Directional));
 }
 
-std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment) {
-  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment};
+std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment, bool directional) {
+  return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment,
+          std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
 }
 
 void LightingPass::compileAll() {
   for (size_t i = 0; i < renderModeNames().size(); ++i)
     for (int kind : {kEnvStudio, kEnvMap})
       if (static_cast<RenderMode>(i) != RenderMode::Floor)
-        programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind)));
+        for (bool directional : {false, true})
+          programs_.get(variantFor(static_cast<RenderMode>(i), "ENV_KIND " + std::to_string(kind), directional));
 }
 
 void LightingPass::resize(int width, int height, int enteringScale, GLuint depthTexture, GLuint enteringDepth) {
@@ -83,9 +86,9 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
   glBindTextureUnit(shader::UNIT_LIGHTING_BOUNCE_ENTRY, in.bounceEntry);
   glBindTextureUnit(shader::UNIT_LIGHTING_LIGHT_LAYERS, in.lightLayers);
   const int envKind = environmentKind(settings, environment);
-  const gl::Program& p = programs_.get(static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind), [&] {
-    return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind));
-  });
+  const gl::Program& p = programs_.get(
+      (static_cast<uint32_t>(settings.mode) * 2u + static_cast<uint32_t>(envKind)) * 2u + (lightM.directional ? 1u : 0u),
+      [&] { return variantFor(settings.mode, "ENV_KIND " + std::to_string(envKind), lightM.directional); });
   setFrameUniforms(p, camera, lightM, light, lightTexelWorld);
   p.set("u_camera_near_far", glm::vec2(camera.near, camera.far));
   p.set("u_light_near_far", glm::vec2(lightM.near, lightM.far));
@@ -102,14 +105,15 @@ void LightingPass::run(const LightingInputs& in, const CameraMatrices& camera, c
     // A hidden lit face's light spread by the walk (shaders/mirror_lit_face.glsl).
     litFaceRingMm_ = walkRingRadiusMm(walkShape(m));
     // The table per channel as segments, (ln T at node k, at node k + 1): the shader reads a
-    // segment's two ends in one indexed read per channel (slab_segment in lighting.frag.glsl).
+    // segment's two ends in one indexed read per channel (slab_segment in lighting.frag.glsl), the
+    // two floats' bits packed into one 64-bit element (node k in the low word: unpackDouble2x32's x).
     for (int k = 0; k + 1 < kSlabTransportNodes; ++k)
-      for (int c = 0; c < 3; ++c) slabSegments_[c][k] = glm::vec2(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
+      for (int c = 0; c < 3; ++c) slabSegments_[c][k] = gl::packFloatPair(slab_.lnT[k][c], slab_.lnT[k + 1][c]);
     slabFor_ = std::pair(m.sigma_a_mm, m.sigma_s_mm);
   }
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, &slabSegments_[0][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, &slabSegments_[1][0].x);
-  glProgramUniform2fv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, &slabSegments_[2][0].x);
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_r"), kSlabTransportNodes - 1, slabSegments_[0].data());
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_g"), kSlabTransportNodes - 1, slabSegments_[1].data());
+  glProgramUniform1dv(p.id(), p.location("u_slab_segment_b"), kSlabTransportNodes - 1, slabSegments_[2].data());
   p.set("u_slab_tau_max", slab_.tauMax);
   p.set("u_slab_sigma_t_mm", slab_.sigmaTMm);
   p.set("u_chord_decay", chordDecayMm_ * scene.mm_per_unit);

@@ -51,7 +51,8 @@ public:
   void compileAll();
 
 private:
-  static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment);
+  // The light's kind a constant of the program (LIGHT_DIRECTIONAL, shaders/light_geometry.glsl).
+  static std::vector<std::string> variantFor(RenderMode mode, const std::string& environment, bool directional);
   gl::ProgramVariants programs_;
   gl::Texture hdr_, entering_, mirrorHit_;
   gl::Framebuffer fbo_, enteringFbo_;
@@ -60,8 +61,9 @@ private:
   PassTimer timer_;
   SlabTransport slab_;  // the transmission's table for the scattering coefficients in slabFor_
   float chordDecayMm_ = 0.0f;  // transmission_chord.glsl's decay per mm, for the coefficients in slabFor_
-  // slab_ per channel as segments (ln T at nodes k, k + 1), as lighting.frag.glsl's u_slab_segment_*
-  std::array<std::array<glm::vec2, kSlabTransportNodes - 1>, 3> slabSegments_{};
+  // slab_ per channel as segments (ln T at nodes k, k + 1), as lighting.frag.glsl's u_slab_segment_*:
+  // the two floats' bits in one double (packFloatPair), not a value
+  std::array<std::array<double, kSlabTransportNodes - 1>, 3> slabSegments_{};
   float litFaceRingMm_ = 0.0f;  // mirror_lit_face.glsl's ring (walkRingRadiusMm), for the coefficients in slabFor_
   std::optional<std::pair<glm::vec3, glm::vec3>> slabFor_;  // (sigma_a_mm, sigma_s_mm)
 };

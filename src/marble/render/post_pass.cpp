@@ -23,9 +23,10 @@ float fxaaLuma(const glm::vec3& displayColor) { return glm::dot(displayColor, gl
 
 namespace {
 std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource source, const Material& material,
-                                        GLuint turbulenceGrid, SurfaceReuse reuse) {
+                                        GLuint turbulenceGrid, SurfaceReuse reuse, bool directional) {
   std::vector<std::string> d = {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", "ENV_KIND " + std::to_string(envKind),
-                                "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2)};
+                                "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2),
+                                std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
   if (marble && source == DiffuseSource::Pattern) {
     for (std::string& p : patternDefines(material, turbulenceGrid)) d.push_back(std::move(p));
     d.push_back("SURFACE_REUSE " + std::to_string(static_cast<int>(reuse)));
@@ -38,18 +39,21 @@ PostPass::PostPass(const ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "post.frag.glsl"}}),
       emptyVao_(gl::VertexArray::create()) {
   // The default material's first frame, so a broken shader shows at once.
-  program(true, kEnvStudio, DiffuseSource::Pattern, Material{}, 0);
+  program(true, kEnvStudio, DiffuseSource::Pattern, Material{}, 0, Light{}.type == LightType::Directional);
 }
 
 const gl::Program& PostPass::program(bool marble, int envKind, DiffuseSource source, const Material& material,
-                                     GLuint turbulenceGrid, SurfaceReuse reuse) {
+                                     GLuint turbulenceGrid, bool directional, SurfaceReuse reuse) {
+  directional = marble && directional;  // only the marble composition lights anything here
   const bool pattern = marble && source == DiffuseSource::Pattern;
   const uint32_t s = marble ? static_cast<uint32_t>(source) : 2u;
   const uint32_t r = pattern ? static_cast<uint32_t>(reuse) : 0u;
   const uint32_t patternKey = pattern ? patternVariantKey(material, turbulenceGrid) : 0u;
-  const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | r << 4 | patternKey << 6;
+  const uint32_t key = (marble ? 1u : 0u) | static_cast<uint32_t>(envKind) << 1 | s << 2 | r << 4 |
+                       (directional ? 1u : 0u) << 6 | patternKey << 7;
   return programs_.get(key, [&] {
-    return variantDefines(marble, envKind, source, material, turbulenceGrid, pattern ? reuse : SurfaceReuse::None);
+    return variantDefines(marble, envKind, source, material, turbulenceGrid, pattern ? reuse : SurfaceReuse::None,
+                          directional);
   });
 }
 
@@ -64,26 +68,28 @@ GLuint PostPass::surfaceReflectedTexture() {
 }
 
 void PostPass::compileAll() {
-  for (int kind : {kEnvStudio, kEnvMap}) {
-    program(false, kind, DiffuseSource::Stored, Material{}, 0);
-    program(true, kind, DiffuseSource::Stored, Material{}, 0);
-    program(true, kind, DiffuseSource::StoredAlbedo, Material{}, 0);
-    for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
-      for (PatternMapping m : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
+  for (bool d : {false, true}) {  // the light's kind (LIGHT_DIRECTIONAL)
+    for (int kind : {kEnvStudio, kEnvMap}) {
+      program(false, kind, DiffuseSource::Stored, Material{}, 0, d);
+      program(true, kind, DiffuseSource::Stored, Material{}, 0, d);
+      program(true, kind, DiffuseSource::StoredAlbedo, Material{}, 0, d);
+      for (NoiseBasis b : {NoiseBasis::Value, NoiseBasis::Perlin})
+        for (PatternMapping m : {PatternMapping::Planar, PatternMapping::Triplanar, PatternMapping::Solid}) {
+          Material material;
+          material.basis = b;
+          material.mapping = m;
+          program(true, kind, DiffuseSource::Pattern, material, 0, d);
+          if (turbulenceGridDimensions(material) > 0) program(true, kind, DiffuseSource::Pattern, material, 1, d);
+        }
+      // A pattern-only frame's two (SurfaceReuse), for the default material.
+      program(true, kind, DiffuseSource::Pattern, Material{}, 0, d, SurfaceReuse::Store);
+      program(true, kind, DiffuseSource::Pattern, Material{}, 0, d, SurfaceReuse::Read);
+      for (VeinModel v : {VeinModel::Network, VeinModel::Breccia}) {  // solid whatever the mapping
         Material material;
-        material.basis = b;
-        material.mapping = m;
-        program(true, kind, DiffuseSource::Pattern, material, 0);
-        if (turbulenceGridDimensions(material) > 0) program(true, kind, DiffuseSource::Pattern, material, 1);
+        material.vein_model = v;
+        program(true, kind, DiffuseSource::Pattern, material, 0, d);
+        program(true, kind, DiffuseSource::Pattern, material, 1, d);
       }
-    // A pattern-only frame's two (SurfaceReuse), for the default material.
-    program(true, kind, DiffuseSource::Pattern, Material{}, 0, SurfaceReuse::Store);
-    program(true, kind, DiffuseSource::Pattern, Material{}, 0, SurfaceReuse::Read);
-    for (VeinModel v : {VeinModel::Network, VeinModel::Breccia}) {  // solid whatever the mapping
-      Material material;
-      material.vein_model = v;
-      program(true, kind, DiffuseSource::Pattern, material, 0);
-      program(true, kind, DiffuseSource::Pattern, material, 1);
     }
   }
 }
@@ -139,7 +145,7 @@ void PostPass::run(const PostInputs& in, const Scene& scene, const PostView& vie
     glBindTextureUnit(shader::UNIT_POST_SURFACE_REFLECTED, surfaceReflectedTexture());
   }
   const int envKind = environmentKind(settings, view.environment);
-  const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid, reuse);
+  const gl::Program& p = program(marble, envKind, source, scene.material, view.turbulenceGrid, view.light.directional, reuse);
   p.set("u_output_linear", linearOutput ? 1 : 0);
   p.set("u_luma_alpha", output == Output::DisplayWithLuma ? 1 : 0);
   p.set("u_tone_map", marble ? 1 : 0);

@@ -88,8 +88,9 @@ public:
   void compileAll();
 
 private:
+  // directional: the light's kind, a constant of the program (LIGHT_DIRECTIONAL, shaders/light_geometry.glsl).
   const gl::Program& program(bool marble, int envKind, DiffuseSource source, const Material& material,
-                            GLuint turbulenceGrid, SurfaceReuse reuse = SurfaceReuse::None);
+                            GLuint turbulenceGrid, bool directional, SurfaceReuse reuse = SurfaceReuse::None);
   gl::ProgramVariants programs_;
   gl::VertexArray emptyVao_;
   gl::Texture diffuse_;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "gl_support.h"
+#include "light_along_z.h"
 #include "marble/gl/checked_calls.h"
 #include "marble/gl/handles.h"
 #include "marble/gl/shader_library.h"
@@ -39,15 +40,9 @@ constexpr float kShadowEntry = 0.1f;   // left of x = 0: the caster's entry, nea
 constexpr float kRimEntry = 0.55f;     // right of it: the rim's lit top
 constexpr float kExitZ = 1.0f;         // the exits' distance along the light
 
-// The light travels along +z: its distance is z, its map's ndc the point's x and y, L = -z.
-const char* kPreamble = R"(
-layout(binding = 0) uniform sampler2D u_light_distance;
-uniform mat4 u_light_view_proj;
-uniform float u_light_texel_world;
-uniform vec2 u_light_near_far;
-float light_distance_of(vec3 p) { return p.z; }
-vec3 light_vector(vec3 p) { return vec3(0.0, 0.0, -1.0); }
-)";
+// The light travels along +z (light_along_z.h), so L = -z.
+const std::string kPreamble =
+    std::string(test::kLightAlongZ) + "vec3 light_vector(vec3 p) { return vec3(0.0, 0.0, -1.0); }\n";
 
 // Per exit (P, N): .x the chord read at chord_read_point, .y after chord_footprint, .z the chord
 // read at P_in itself (main's read before the change), .w chord_own_ray_share of the two.

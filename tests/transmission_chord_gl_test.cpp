@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gl_support.h"
+#include "light_along_z.h"
 #include "marble/gl/checked_calls.h"
 #include "marble/gl/handles.h"
 #include "marble/gl/shader_library.h"
@@ -32,24 +33,8 @@ constexpr float kTexel = 2.0f / kMap;  // 0.25 scene units
 constexpr float kDecay = 8.0f;        // sigma_tr per scene unit
 constexpr float kExitZ = 1.0f;        // the points read, at distance 1 along the light
 
-// The light travels along +z; its distance is z, its map's ndc the point's x and y.
-const char* kPreamble = R"(
-layout(binding = 0) uniform sampler2D u_light_distance;
-uniform mat4 u_light_view_proj;
-uniform float u_light_texel_world;
-uniform vec2 u_light_near_far;
-float light_distance_of(vec3 p) { return p.z; }
-)";
-
-const char* kComputeMain = R"(
-layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer Points { vec4 points[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  results[i] = vec4(transmission_chord(points[i].xyz, points[i].xyz), 0.0, 0.0);
-}
-)";
+// The light travels along +z (light_along_z.h); each query point's (chord, cosine).
+const std::string kComputeMain = test::perVec4Main("  results[i] = vec4(transmission_chord(q.xyz, q.xyz), 0.0, 0.0);");
 
 // A map whose column x holds entry(x) and cosine(x) (every row the same).
 struct Column {
@@ -58,7 +43,7 @@ struct Column {
 
 class TransmissionChordGlTest : public test::ComputeProgramTest {
 protected:
-  void SetUp() override { compileProgram(kPreamble + embeddedShaders().at("transmission_chord.glsl") + kComputeMain); }
+  void SetUp() override { compileProgram(test::kLightAlongZ + embeddedShaders().at("transmission_chord.glsl") + kComputeMain); }
 
   // (chord, cosine) at each x (y = 0, z = kExitZ) over the map of columns.
   std::vector<std::array<float, 2>> chords(const std::array<Column, kMap>& columns, const std::vector<float>& xs) {

@@ -46,13 +46,13 @@ BouncePass::BouncePass(const ShaderLibrary& shaders)
 
 const gl::Program& BouncePass::gatherProgram(bool directional) {
   return gatherPrograms_.get(directional ? 1u : 0u, [&] {
-    return std::vector<std::string>{std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+    return std::vector<std::string>{lightKindDefine(directional)};
   });
 }
 
 const gl::Program& BouncePass::refineProgram(bool directional) {
   return refinePrograms_.get(directional ? 1u : 0u, [&] {
-    return std::vector<std::string>{std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+    return std::vector<std::string>{lightKindDefine(directional)};
   });
 }
 

@@ -23,4 +23,6 @@ void setFrameUniforms(const gl::Program& p, const CameraMatrices& camera, const 
   p.set("u_light_ref_distance", glm::length(light.position));
 }
 
+std::string lightKindDefine(bool directional) { return directional ? "LIGHT_DIRECTIONAL 1" : "LIGHT_DIRECTIONAL 0"; }
+
 }  // namespace marble

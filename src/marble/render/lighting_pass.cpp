@@ -22,7 +22,7 @@ LightingPass::LightingPass(const ShaderLibrary& shaders)
 
 std::vector<std::string> LightingPass::variantFor(RenderMode mode, const std::string& environment, bool directional) {
   return {"LIGHTING_MODE " + std::to_string(static_cast<int>(mode)), environment,
-          std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+          lightKindDefine(directional)};
 }
 
 void LightingPass::compileAll() {

@@ -26,7 +26,7 @@ std::vector<std::string> variantDefines(bool marble, int envKind, DiffuseSource 
                                         GLuint turbulenceGrid, SurfaceReuse reuse, bool directional) {
   std::vector<std::string> d = {marble ? "COMPOSE_MARBLE 1" : "COMPOSE_MARBLE 0", "ENV_KIND " + std::to_string(envKind),
                                 "DIFFUSE_SOURCE " + std::to_string(marble ? static_cast<int>(source) : 2),
-                                std::string("LIGHT_DIRECTIONAL ") + (directional ? "1" : "0")};
+                                lightKindDefine(directional)};
   if (marble && source == DiffuseSource::Pattern) {
     for (std::string& p : patternDefines(material, turbulenceGrid)) d.push_back(std::move(p));
     d.push_back("SURFACE_REUSE " + std::to_string(static_cast<int>(reuse)));
